@@ -1,0 +1,14 @@
+# Installs fair from FAIR_BINARY_DIR into SCRATCH/prefix, then builds and runs the consumer.
+file(REMOVE_RECURSE ${SCRATCH})
+macro(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "command failed (${rc}): ${ARGN}\n${out}\n${err}")
+  endif()
+endmacro()
+run(${CMAKE_COMMAND} --install ${FAIR_BINARY_DIR} --prefix ${SCRATCH}/prefix)
+run(${CMAKE_COMMAND} -S ${FAIR_SOURCE_DIR}/test/consumer -B ${SCRATCH}/build
+    -DCMAKE_PREFIX_PATH=${SCRATCH}/prefix -DCMAKE_BUILD_TYPE=Release)
+run(${CMAKE_COMMAND} --build ${SCRATCH}/build)
+run(${SCRATCH}/build/consumer)
+message(STATUS "consumer output: ${out}")

@@ -1,0 +1,29 @@
+#include <fair/Errors.h>
+#include <gtest/gtest.h>
+
+TEST(Errors, ParseErrorNamesFileAndLine) {
+  fair::Parse_error e("points.csv", 7, "expected two numbers, got 'abc'");
+  EXPECT_STREQ(e.what(), "points.csv:7: expected two numbers, got 'abc'");
+  EXPECT_EQ(e.line(), 7u);
+  EXPECT_EQ(e.file(), "points.csv");
+  fair::Parse_error whole("missing.csv", 0, "cannot open file");
+  EXPECT_STREQ(whole.what(), "missing.csv: cannot open file");
+}
+
+TEST(Errors, RequireThrowsPreconditionErrorWithValues) {
+  EXPECT_NO_THROW(fair::internal::require(true, "never"));
+  try {
+    fair::internal::require(false, "weight must be > 0, got w = ", -0.5);
+    FAIL() << "require(false) did not throw";
+  } catch (const fair::Precondition_error& e) {
+    EXPECT_STREQ(e.what(), "weight must be > 0, got w = -0.5");
+  }
+}
+
+TEST(Errors, HierarchyIsCatchableAsFairError) {
+  EXPECT_THROW(throw fair::Parse_error("f", 1, "x"), fair::Invalid_input_error);
+  EXPECT_THROW(throw fair::Non_convergence_error("no", 10, 1e-3), fair::Error);
+  fair::Non_convergence_error n("no", 10, 1e-3);
+  EXPECT_EQ(n.iterations(), 10u);
+  EXPECT_DOUBLE_EQ(n.residual(), 1e-3);
+}

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# One entry point for a fresh Debian 12 machine: installs what is missing, builds, runs.
+#   bash tools/bootstrap.sh demo      set up, build fair-curves, write the demo gallery to demo-out/
+#   bash tools/bootstrap.sh test      set up, build everything, run every test (ctest)
+#   bash tools/bootstrap.sh sanitize  the same tests built with -fsanitize=address,undefined
+#   bash tools/bootstrap.sh bench     build and run the Google Benchmark programs
+#   bash tools/bootstrap.sh setup     only install the Debian packages that are missing
+set -euo pipefail
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$here"
+jobs=${FAIR_JOBS:-$(nproc)}
+
+packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev libboost-dev
+          libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev)
+
+setup() {
+  local missing=()
+  for p in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+      missing+=("$p")
+    fi
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    return 0
+  fi
+  echo "bootstrap: installing ${missing[*]}" >&2
+  local sudo=()
+  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+configure() { # build-dir extra-cmake-args...
+  local dir=$1; shift
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+}
+
+case "${1:-}" in
+  setup)
+    setup ;;
+  demo)
+    setup
+    configure build -DFAIR_BUILD_TESTS=OFF -DFAIR_BUILD_EXAMPLES=OFF
+    cmake --build build --target fair-curves -j "$jobs"
+    ./build/tools/fair-curves/fair-curves demo --out demo-out
+    echo "bootstrap: open demo-out/index.html" ;;
+  test)
+    setup
+    configure build -DFAIR_BUILD_TESTS=ON -DFAIR_BUILD_EXAMPLES=ON
+    cmake --build build -j "$jobs"
+    ctest --test-dir build --output-on-failure -j "$jobs" ;;
+  sanitize)
+    setup
+    configure build-sanitize -DFAIR_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g"
+    cmake --build build-sanitize -j "$jobs"
+    ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+      ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -E install_and_consume ;;
+  bench)
+    setup
+    configure build-bench -DFAIR_BUILD_BENCHMARKS=ON -DFAIR_BUILD_TESTS=OFF -DFAIR_BUILD_EXAMPLES=OFF
+    cmake --build build-bench -j "$jobs"
+    for b in build-bench/benchmark/bench_*; do
+      [ -x "$b" ] && "$b" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+    done ;;
+  *)
+    sed -n '2,8p' "$0" >&2
+    exit 2 ;;
+esac
