@@ -1,0 +1,277 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// Certified isolation of the real roots in [0,1] of a polynomial in Bernstein form.
+//
+// What is certified. The input coefficients are converted EXACTLY to rationals (a double, a
+// CGAL::Gmpfr and a point CGAL::Interval_nt are dyadic rationals; CGAL::Gmpq and EPECK's FT are
+// exact), and the statements below are about the polynomial with exactly those coefficients:
+//  - every distinct root in [0,1] lies in exactly one returned interval and every interval holds
+//    exactly one distinct root;
+//  - an interval with lower == upper is the exact root (roots at 0, 1 and at dyadic subdivision
+//    points are found exactly); otherwise the root is in the OPEN interval (lower, upper);
+//  - intervals are sorted and pairwise disjoint; end points are exact CGAL::Gmpq (dyadic);
+//  - multiplicity is exact.
+// For a non-point CGAL::Interval_nt coefficient the root set is not one polynomial's, and the
+// constructor throws Precondition_error.
+//
+// Method. Descartes / Vincent-Collins-Akritas bisection on Bernstein coefficients (see
+// internal/bernstein_vca.h): interval-filtered subdivision with exact Gmpq fallback on the
+// subintervals whose sign pattern is uncertain; a sign-variation count of 0 or 1 proves the
+// count of roots in a subinterval. If the bisection reaches depth 30 (roots closer than about
+// 1e-9, or a multiple root inside a subinterval), Yun's square-free factorisation over Q is
+// computed; a square-free polynomial is then bisected further, otherwise its square-free part
+// is isolated and each root's multiplicity is read off the factor that vanishes there.
+// Fallback. The bisection of a square-free polynomial always terminates; a hard cap of 4000
+// levels (roots closer than 2^-4000) throws Non_convergence_error rather than loop.
+//
+// Refinement. refine() bisects an interval with exact sign evaluation (an interval de Casteljau
+// filter first, exact Gmpq Horner when the filter is inconclusive) until the requested width;
+// root_approximation() refines until both end points truncate to the same double, so the
+// returned double is within one ulp of the root.
+
+#ifndef FAIR_BERNSTEIN_ROOT_ISOLATION_H
+#define FAIR_BERNSTEIN_ROOT_ISOLATION_H
+
+#include <fair/Bernstein_polynomial.h>
+#include <fair/Errors.h>
+#include <fair/internal/bernstein_exact.h>
+#include <fair/internal/bernstein_unique_root.h>
+#include <fair/internal/bernstein_vca.h>
+
+#include <CGAL/FPU.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Interval_nt.h>
+
+#include <cstddef>
+#include <ostream>
+#include <utility>
+#include <vector>
+
+namespace fair {
+
+/// An isolating interval of one distinct root. If `lower == upper` the root is exactly
+/// `lower`; otherwise it lies in the open interval (lower, upper).
+struct Isolating_interval {
+  CGAL::Gmpq lower, upper;
+  int multiplicity = 1;
+
+  bool is_point() const { return lower == upper; }
+  /// Whether the root could be x: x == lower for a point, lower < x < upper otherwise.
+  bool may_contain(const CGAL::Gmpq& x) const { return is_point() ? x == lower : (lower < x && x < upper); }
+  CGAL::Gmpq width() const { return upper - lower; }
+  /// The midpoint, rounded to double (accurate to the interval width plus one ulp).
+  double approximation() const { return CGAL::to_double((lower + upper) / 2); }
+
+  friend std::ostream& operator<<(std::ostream& out, const Isolating_interval& I) {
+    out << "[" << CGAL::to_double(I.lower) << ", " << CGAL::to_double(I.upper) << "]";
+    if (I.multiplicity != 1) out << " x" << I.multiplicity;
+    return out;
+  }
+};
+
+/// The certified real roots in [0,1] of one Bernstein polynomial (see the file comment).
+class Bernstein_root_isolation {
+public:
+  /// Isolates the roots of p in [0,1].
+  /// \throws Precondition_error if p is the zero polynomial, has a non-finite coefficient or a
+  /// non-point interval coefficient; Non_convergence_error if the depth cap is hit.
+  template <class NT>
+  explicit Bernstein_root_isolation(const Bernstein_polynomial<NT>& p)
+    : p_(internal::to_exact_rationals(p.coefficients(), "Bernstein_root_isolation")) {
+    const std::vector<CGAL::Gmpq>& E = p_.coefficients();
+    bool zero = true;
+    for (const CGAL::Gmpq& c : E) zero = zero && CGAL::is_zero(c);
+    internal::require(!zero, "Bernstein_root_isolation: the zero polynomial (", p,
+                      ") vanishes on all of [0,1]; it has no isolated roots");
+    isolate();
+  }
+
+  /// Number of distinct roots in [0,1].
+  std::size_t number_of_roots() const { return intervals_.size(); }
+  /// Number of roots in [0,1] counted with multiplicity.
+  std::size_t number_of_roots_with_multiplicity() const {
+    std::size_t k = 0;
+    for (const Isolating_interval& I : intervals_) k += static_cast<std::size_t>(I.multiplicity);
+    return k;
+  }
+  const std::vector<Isolating_interval>& intervals() const { return intervals_; }
+  const Isolating_interval& operator[](std::size_t i) const { return intervals_[i]; }
+  /// The polynomial with the exact rational coefficients the certificates are about.
+  const Bernstein_polynomial<CGAL::Gmpq>& polynomial() const { return p_; }
+  /// Whether multiple roots forced the square-free factorisation.
+  bool used_square_free_factorization() const { return used_square_free_; }
+
+  /// Shrinks interval i by bisection until its width is <= width (width > 0). The root stays
+  /// inside; if a bisection point is the root the interval becomes the point [root, root].
+  void refine(std::size_t i, const CGAL::Gmpq& width) {
+    internal::require(i < intervals_.size(), "Bernstein_root_isolation::refine: index ", i, " out of range (",
+                      intervals_.size(), " roots)");
+    internal::require(width > 0, "Bernstein_root_isolation::refine: width ", width, " must be positive");
+    for (int step = 0; intervals_[i].upper - intervals_[i].lower > width; ++step) {
+      if (step > 100000) throw Non_convergence_error("Bernstein_root_isolation::refine: bisection cap", 100000, 0.0);
+      bisect(i);
+    }
+  }
+
+  /// A double within one ulp of root i: refines interval i until both ends truncate to the same
+  /// double (an exact root is converted by CGAL::to_double, also within one ulp).
+  double root_approximation(std::size_t i) {
+    internal::require(i < intervals_.size(), "Bernstein_root_isolation::root_approximation: index ", i,
+                      " out of range (", intervals_.size(), " roots)");
+    for (int step = 0; !intervals_[i].is_point() &&
+                       CGAL::to_double(intervals_[i].lower) != CGAL::to_double(intervals_[i].upper);
+         ++step) {
+      if (step > 5000) throw Non_convergence_error("Bernstein_root_isolation::root_approximation: bisection cap", 5000, 0.0);
+      bisect(i);
+    }
+    return intervals_[i].approximation();
+  }
+  std::vector<double> root_approximations() {
+    std::vector<double> out;
+    for (std::size_t i = 0; i < intervals_.size(); ++i) out.push_back(root_approximation(i));
+    return out;
+  }
+
+private:
+  void isolate() {
+    const std::vector<CGAL::Gmpq>& E = p_.coefficients();
+    {
+      internal::Vca_isolator vca(E);
+      if (vca.run(30)) return accept(E, vca.leaves());
+    }
+    used_square_free_ = true;
+    const std::vector<internal::Q_polynomial> factors =
+        internal::q_square_free_factorization(p_.to_power_basis());
+    bool square_free = true;
+    for (std::size_t k = 1; k < factors.size(); ++k) square_free = square_free && factors[k].size() <= 1;
+    if (square_free) {
+      internal::Vca_isolator vca(E);
+      if (!vca.run(hard_cap)) throw_cap();
+      return accept(E, vca.leaves());
+    }
+    // Square-free part: the product of the factors (monic, so the product is exact).
+    internal::Q_polynomial sqf(1, CGAL::Gmpq(1));
+    for (const internal::Q_polynomial& f : factors) sqf = multiply(sqf, f);
+    const std::vector<CGAL::Gmpq> S = Bernstein_polynomial<CGAL::Gmpq>::from_power_basis(sqf).coefficients();
+    internal::Vca_isolator vca(S);
+    if (!vca.run(hard_cap)) throw_cap();
+    std::vector<internal::Isolation_leaf>& leaves = vca.leaves();
+    for (internal::Isolation_leaf& leaf : leaves) {
+      leaf.multiplicity = 0;
+      for (std::size_t k = 0; k < factors.size() && leaf.multiplicity == 0; ++k) {
+        if (factors[k].size() <= 1) continue;
+        if (vanishes_in(factors[k], leaf)) leaf.multiplicity = static_cast<int>(k + 1);
+      }
+      if (leaf.multiplicity == 0)
+        throw Error(internal::message("Bernstein_root_isolation: internal error, no square-free factor of ", p_,
+                                      " vanishes in [", leaf.lower, ", ", leaf.upper, "]"));
+    }
+    accept(S, leaves);
+  }
+
+  static internal::Q_polynomial multiply(const internal::Q_polynomial& a, const internal::Q_polynomial& b) {
+    internal::Q_polynomial c(a.size() + b.size() - 1, CGAL::Gmpq(0));
+    for (std::size_t i = 0; i < a.size(); ++i)
+      for (std::size_t j = 0; j < b.size(); ++j) c[i + j] += a[i] * b[j];
+    return c;
+  }
+
+  static CGAL::Gmpq horner(const internal::Q_polynomial& a, const CGAL::Gmpq& x) {
+    CGAL::Gmpq v(0);
+    for (std::size_t k = a.size(); k-- > 0;) v = v * x + a[k];
+    return v;
+  }
+
+  // A square-free factor f has at most one root, a simple one, in an isolating leaf (it divides
+  // the square-free part); in the open case it has one iff the signs of f just inside the two
+  // ends differ, read off the first and last nonzero Bernstein coefficients on [lower, upper].
+  static bool vanishes_in(const internal::Q_polynomial& f, const internal::Isolation_leaf& leaf) {
+    if (leaf.lower == leaf.upper) return CGAL::is_zero(horner(f, leaf.lower));
+    const std::vector<CGAL::Gmpq> c =
+        Bernstein_polynomial<CGAL::Gmpq>::from_power_basis(f).restricted(leaf.lower, leaf.upper).coefficients();
+    int first = 0, last = 0;
+    for (const CGAL::Gmpq& x : c)
+      if (!CGAL::is_zero(x)) { first = CGAL::sign(x); break; }
+    for (std::size_t k = c.size(); k-- > 0;)
+      if (!CGAL::is_zero(c[k])) { last = CGAL::sign(c[k]); break; }
+    return first != last;
+  }
+
+  void accept(const std::vector<CGAL::Gmpq>& witness, const std::vector<internal::Isolation_leaf>& leaves) {
+    witness_ = witness;
+    witness_intervals_ = internal::to_intervals(witness);
+    witness_power_ = Bernstein_polynomial<CGAL::Gmpq>(witness).to_power_basis();
+    intervals_.clear();
+    sign_after_lower_.clear();
+    for (const internal::Isolation_leaf& leaf : leaves) {
+      Isolating_interval I;
+      I.lower = leaf.lower;
+      I.upper = leaf.upper;
+      I.multiplicity = leaf.multiplicity;
+      intervals_.push_back(I);
+      sign_after_lower_.push_back(leaf.sign_after_lower);
+    }
+  }
+
+  void throw_cap() const {
+    throw Non_convergence_error(internal::message("Bernstein_root_isolation: subdivision depth cap ", hard_cap,
+                                                  " reached for ", p_, " (roots closer than 2^-", hard_cap, ")"),
+                                static_cast<std::size_t>(hard_cap), 0.0);
+  }
+
+  // Sign of the witness at x in [0,1]: interval de Casteljau first, exact Horner if uncertain.
+  int witness_sign(const CGAL::Gmpq& x) const {
+    {
+      CGAL::Protect_FPU_rounding<true> protect;
+      const internal::Unprotected_interval t(CGAL::to_interval(x));
+      const internal::Unprotected_interval s = internal::Unprotected_interval(1) - t;
+      std::vector<internal::Unprotected_interval> w(witness_intervals_);
+      for (std::size_t r = 1; r < w.size(); ++r)
+        for (std::size_t k = 0; k + r < w.size(); ++k) w[k] = s * w[k] + t * w[k + 1];
+      if (w[0].inf() > 0) return 1;
+      if (w[0].sup() < 0) return -1;
+    }
+    return CGAL::sign(horner(witness_power_, x));
+  }
+
+  void bisect(std::size_t i) {
+    Isolating_interval& I = intervals_[i];
+    if (I.is_point()) return;
+    const CGAL::Gmpq m = (I.lower + I.upper) / 2;
+    const int s = witness_sign(m);
+    if (s == 0) {
+      I.lower = m;
+      I.upper = m;
+    } else if (s == sign_after_lower_[i]) {
+      I.lower = m;
+    } else {
+      I.upper = m;
+    }
+  }
+
+  static constexpr int hard_cap = 4000;
+
+  Bernstein_polynomial<CGAL::Gmpq> p_;
+  std::vector<Isolating_interval> intervals_;
+  std::vector<int> sign_after_lower_;
+  std::vector<CGAL::Gmpq> witness_;
+  std::vector<internal::Unprotected_interval> witness_intervals_;
+  internal::Q_polynomial witness_power_;
+  bool used_square_free_ = false;
+};
+
+/// The isolating intervals of the roots of p in [0,1] (see Bernstein_root_isolation).
+template <class NT>
+std::vector<Isolating_interval> isolate_roots(const Bernstein_polynomial<NT>& p) {
+  return Bernstein_root_isolation(p).intervals();
+}
+
+/// Fast certified path for the common case of exactly one sign change (see
+/// internal/bernstein_unique_root.h for the method and accuracy).
+inline Unique_root certified_unique_root(const Bernstein_polynomial<double>& p) {
+  return internal::certified_unique_root(p.coefficients().data(), p.coefficients().size());
+}
+
+} // namespace fair
+
+#endif // FAIR_BERNSTEIN_ROOT_ISOLATION_H

@@ -1,0 +1,204 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// Descartes / Vincent-Collins-Akritas bisection on Bernstein coefficients with an interval
+// filter. The polynomial is given by exact rational Bernstein coefficients E on [0,1].
+//
+// Certificate. For a node [l,r] the Bernstein coefficients of p restricted to [l,r] bound the
+// number of roots of p in the open interval (l,r): by Descartes' rule in Bernstein form the
+// number of roots counted with multiplicity is at most the sign variation count V and has its
+// parity. V = 0 proves no root, V = 1 proves exactly one simple root. Roots at the end points
+// are found exactly: p(l) is the first coefficient of the node, and every subdivision point is
+// checked exactly, so such a root is reported as a point interval [m,m] whose multiplicity is
+// the number of leading zero coefficients of the node starting at m (t^k divides a Bernstein
+// polynomial iff its first k coefficients vanish).
+//
+// Interval filter. Nodes are first subdivided in CGAL::Interval_nt<false> (under
+// CGAL::Protect_FPU_rounding<true>); each interval coefficient encloses the exact coefficient,
+// so a variation count that is the same for every choice inside the intervals is the exact
+// count. Only when the count is uncertain and may be 0 or 1 does a node switch to exact Gmpq
+// coefficients (computed from E by blossoming on [l,r]); its subtree then stays exact.
+//
+// Termination. For a square-free polynomial the bisection terminates (two-circle theorem)
+// after about log2(1 / root separation) levels. A multiple root inside an open node never gets
+// V < 2, hence the depth cap: when it is hit, run() returns false and the caller removes
+// multiple roots first.
+
+#ifndef FAIR_INTERNAL_BERNSTEIN_VCA_H
+#define FAIR_INTERNAL_BERNSTEIN_VCA_H
+
+#include <fair/Bernstein_polynomial.h>
+#include <fair/Errors.h>
+#include <fair/internal/bernstein_sign.h>
+
+#include <CGAL/FPU.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Interval_nt.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace fair {
+namespace internal {
+
+/// One root found by the bisection: the closed interval [lower, upper] (a point when
+/// lower == upper, else the root is in the open interval), its multiplicity when known (0 when
+/// not yet determined), and the sign of p just to the right of `lower` (for refinement).
+struct Isolation_leaf {
+  CGAL::Gmpq lower, upper;
+  int multiplicity;
+  int sign_after_lower;
+};
+
+typedef CGAL::Interval_nt<false> Unprotected_interval;
+
+/// Splits at 1/2 in place: `w` becomes the left half, `right` the right half.
+template <class T>
+void split_half(std::vector<T>& w, std::vector<T>& right) {
+  const std::size_t n = w.size() - 1;
+  right.resize(n + 1);
+  right[n] = w[n];
+  for (std::size_t r = 1; r <= n; ++r) {
+    for (std::size_t i = n; i >= r; --i) w[i] = (w[i - 1] + w[i]) / 2; // exact halving for dyadics
+    right[n - r] = w[n];
+  }
+  // w[i] now holds level i at position i: the left half's coefficients.
+}
+
+inline void split_half_interval(std::vector<Unprotected_interval>& w, std::vector<Unprotected_interval>& right) {
+  CGAL::Protect_FPU_rounding<true> protect;
+  const std::size_t n = w.size() - 1;
+  right.resize(n + 1);
+  right[n] = w[n];
+  for (std::size_t r = 1; r <= n; ++r) {
+    for (std::size_t i = n; i >= r; --i) w[i] = (w[i - 1] + w[i]) * 0.5;
+    right[n - r] = w[n];
+  }
+}
+
+inline std::vector<Unprotected_interval> to_intervals(const std::vector<CGAL::Gmpq>& x) {
+  std::vector<Unprotected_interval> out;
+  out.reserve(x.size());
+  for (const CGAL::Gmpq& q : x) out.push_back(Unprotected_interval(CGAL::to_interval(q)));
+  return out;
+}
+
+/// Sign of the first coefficient whose sign is certainly nonzero (0 if none).
+template <class T>
+int first_certain_sign(const std::vector<T>& c) {
+  for (const T& x : c) {
+    const std::pair<int, int> r = sign_range_of(x);
+    if (r.first == r.second && r.first != 0) return r.first;
+  }
+  return 0;
+}
+
+inline int leading_zero_count(const std::vector<CGAL::Gmpq>& c) {
+  int k = 0;
+  while (k < static_cast<int>(c.size()) && CGAL::is_zero(c[static_cast<std::size_t>(k)])) ++k;
+  return k;
+}
+
+class Vca_isolator {
+public:
+  explicit Vca_isolator(const std::vector<CGAL::Gmpq>& exact) : E_(exact) {}
+
+  /// Isolates the roots of E in [0,1]. Returns false when a node deeper than `depth_cap` would
+  /// be needed (leaves() is then incomplete). `point_multiplicity`: compute the multiplicity of
+  /// roots found at subdivision points from leading zeros (true), else leave 0.
+  bool run(int depth_cap) {
+    leaves_.clear();
+    const std::size_t n = E_.size() - 1;
+    // Roots at 0 and 1, with multiplicity from the leading / trailing zeros.
+    if (CGAL::is_zero(E_[0])) leaves_.push_back({CGAL::Gmpq(0), CGAL::Gmpq(0), leading_zero_count(E_), 0});
+    if (n > 0 && CGAL::is_zero(E_[n])) {
+      std::vector<CGAL::Gmpq> rev(E_.rbegin(), E_.rend());
+      leaves_.push_back({CGAL::Gmpq(1), CGAL::Gmpq(1), leading_zero_count(rev), 0});
+    }
+    if (n == 0) return true;
+    std::vector<Node> stack;
+    Node root;
+    root.lo = CGAL::Gmpq(0);
+    root.hi = CGAL::Gmpq(1);
+    root.depth = 0;
+    root.exact = false;
+    root.I = to_intervals(E_);
+    stack.push_back(std::move(root));
+    while (!stack.empty()) {
+      Node node = std::move(stack.back());
+      stack.pop_back();
+      if (!node.exact) {
+        const Sign_variation_count v = sign_variation_bounds(node.I.begin(), node.I.end());
+        if (v.upper == 0) continue;
+        if (v.certain() && v.lower == 1) {
+          leaves_.push_back({node.lo, node.hi, 1, first_certain_sign(node.I)});
+          continue;
+        }
+        if (v.lower >= 2) {
+          if (node.depth + 1 > depth_cap) return false;
+          Node right;
+          split_half_interval(node.I, right.I);
+          const std::pair<int, int> mid_sign = sign_range_of(right.I[0]);
+          if (mid_sign.first > 0 || mid_sign.second < 0) { // p(mid) certainly nonzero
+            const CGAL::Gmpq mid = (node.lo + node.hi) / 2;
+            right.lo = mid;
+            right.hi = node.hi;
+            right.depth = node.depth + 1;
+            right.exact = false;
+            node.hi = mid;
+            node.depth += 1;
+            stack.push_back(std::move(right));
+            stack.push_back(std::move(node));
+            continue;
+          }
+        }
+        // Uncertain count that may be 0 or 1, or p(mid) possibly zero: go exact.
+        node.X = Bernstein_polynomial<CGAL::Gmpq>(E_).restricted(node.lo, node.hi).coefficients();
+        node.exact = true;
+        node.I.clear();
+      }
+      const Sign_variation_count v = sign_variation_bounds(node.X.begin(), node.X.end());
+      if (v.lower == 0) continue;
+      if (v.lower == 1) {
+        leaves_.push_back({node.lo, node.hi, 1, first_certain_sign(node.X)});
+        continue;
+      }
+      if (node.depth + 1 > depth_cap) return false;
+      Node right;
+      split_half(node.X, right.X);
+      const CGAL::Gmpq mid = (node.lo + node.hi) / 2;
+      if (CGAL::is_zero(right.X[0])) leaves_.push_back({mid, mid, leading_zero_count(right.X), 0});
+      right.lo = mid;
+      right.hi = node.hi;
+      right.depth = node.depth + 1;
+      right.exact = true;
+      node.hi = mid;
+      node.depth += 1;
+      stack.push_back(std::move(right));
+      stack.push_back(std::move(node));
+    }
+    std::sort(leaves_.begin(), leaves_.end(),
+              [](const Isolation_leaf& a, const Isolation_leaf& b) { return a.lower < b.lower; });
+    return true;
+  }
+
+  std::vector<Isolation_leaf>& leaves() { return leaves_; }
+
+private:
+  struct Node {
+    CGAL::Gmpq lo, hi;
+    int depth = 0;
+    bool exact = false;
+    std::vector<Unprotected_interval> I;
+    std::vector<CGAL::Gmpq> X;
+  };
+
+  const std::vector<CGAL::Gmpq>& E_;
+  std::vector<Isolation_leaf> leaves_;
+};
+
+} // namespace internal
+} // namespace fair
+
+#endif // FAIR_INTERNAL_BERNSTEIN_VCA_H
