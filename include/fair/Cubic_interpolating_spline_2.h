@@ -1,0 +1,186 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// fair::Cubic_interpolating_spline_2<Kernel>: the classic C2 cubic interpolating spline
+// through points p_0..p_n, as a std::vector of cubic fair::Bezier_2 pieces (one per interval).
+// It is the baseline of Fig. 2c and Fig. 18d of Karciauskas & Peters, "Curvature-sensitive
+// splines" (the "classic C^2 cubic spline interpolant" that oscillates where the curvature
+// of the data changes abruptly).
+//
+// Formulation (first-derivative, "tangent" form; de Boor, A Practical Guide to Splines, ch. IV).
+// Knots u_i with intervals h_i = u_{i+1} - u_i (Knot_spacing). On [u_i, u_{i+1}] the spline is
+// the cubic Hermite interpolant of p_i, p_{i+1} with derivatives m_i, m_{i+1} (d/du). C2 at an
+// interior knot i (equate the one-sided second derivatives and multiply by h_{i-1} h_i / 2):
+//   h_i m_{i-1} + 2 (h_{i-1} + h_i) m_i + h_{i-1} m_{i+1}
+//       = 3 ( h_i (p_i - p_{i-1}) / h_{i-1} + h_{i-1} (p_{i+1} - p_i) / h_i ).        (C2)
+// End conditions:
+//   natural   c''(u_0) = c''(u_n) = 0:   2 m_0 + m_1 = 3 (p_1 - p_0) / h_0,
+//                                        m_{n-1} + 2 m_n = 3 (p_n - p_{n-1}) / h_{n-1};
+//   clamped   m_0 and m_n given (d/du in the chosen spacing: for uniform knots the derivative
+//             with respect to the point index, for chordal knots with respect to chord length);
+//   periodic  the points are a closed polygon, n+1 intervals with h_n from p_n back to p_0, and
+//             (C2) holds at every knot, indices mod n+1.
+// The system is strictly diagonally dominant; it is solved per coordinate by the Thomas
+// algorithm (open) or by Sherman-Morrison on the cyclic system (periodic): O(n) time and memory.
+//
+// Exactness: with Knot_spacing::uniform every number is rational in the data, so in an exact
+// kernel (EPECK, Simple_cartesian<Gmpq>) the pieces interpolate exactly, and C1, C2 and the end
+// conditions hold exactly. Centripetal/chordal knots are computed in double and converted
+// exactly to FT (see Knot_spacing); the solve is then exact for those knots.
+// Accuracy in double: the solve is backward stable (diagonal dominance, no pivoting needed);
+// relative errors of a few ulps times the condition number, which is at most 3 for uniform
+// knots and grows like max(h)/min(h) for strongly non-uniform chordal knots.
+
+#ifndef FAIR_CUBIC_INTERPOLATING_SPLINE_2_H
+#define FAIR_CUBIC_INTERPOLATING_SPLINE_2_H
+
+#include <fair/Bezier_2.h>
+#include <fair/Errors.h>
+#include <fair/internal/classic_common.h>
+#include <fair/internal/classic_tridiagonal.h>
+#include <fair/internal/input_checks.h>
+
+#include <CGAL/number_utils.h>
+
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace fair {
+
+/// End conditions of the C2 cubic interpolating spline.
+enum class Spline_end_condition { natural, clamped, periodic };
+
+template <class K>
+class Cubic_interpolating_spline_2 {
+public:
+  typedef K Kernel;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 Point_2;
+  typedef typename K::Vector_2 Vector_2;
+  typedef Bezier_2<K> Piece;
+
+  /// The natural (end = natural, needs >= 2 points) or periodic (end = periodic, needs >= 3
+  /// points; the curve closes from the last point back to the first, which must differ) spline.
+  /// Throws Invalid_input_error for too few points, non-finite coordinates or coincident
+  /// consecutive points, and Precondition_error for end = clamped (use the other constructor).
+  explicit Cubic_interpolating_spline_2(std::vector<Point_2> points,
+                                        Spline_end_condition end = Spline_end_condition::natural,
+                                        Knot_spacing spacing = Knot_spacing::uniform)
+    : points_(std::move(points)), end_(end), spacing_(spacing) {
+    internal::require(end != Spline_end_condition::clamped,
+                      "Cubic_interpolating_spline_2: a clamped spline needs its two end derivatives; "
+                      "use the constructor taking start_derivative and end_derivative");
+    build(Vector_2(FT(0), FT(0)), Vector_2(FT(0), FT(0)));
+  }
+
+  /// The clamped spline (>= 2 points) with c'(u_0) = start_derivative and c'(u_n) =
+  /// end_derivative, derivatives with respect to the knot parameter u of `spacing`.
+  /// Throws Invalid_input_error as above, and for a non-finite derivative.
+  Cubic_interpolating_spline_2(std::vector<Point_2> points, const Vector_2& start_derivative,
+                               const Vector_2& end_derivative,
+                               Knot_spacing spacing = Knot_spacing::uniform)
+    : points_(std::move(points)), end_(Spline_end_condition::clamped), spacing_(spacing) {
+    check_vector(start_derivative, "start_derivative");
+    check_vector(end_derivative, "end_derivative");
+    build(start_derivative, end_derivative);
+  }
+
+  /// The cubic Bezier pieces; piece i runs from point i to point i+1 (mod the point count when
+  /// periodic), with local parameter t = (u - u_i) / h_i.
+  const std::vector<Piece>& pieces() const { return pieces_; }
+  /// The interpolated points.
+  const std::vector<Point_2>& points() const { return points_; }
+  /// The knots u_0 = 0 < u_1 < ... (one more than the number of pieces).
+  const std::vector<FT>& knots() const { return knots_; }
+  /// The derivatives m_i = c'(u_i) with respect to u (one per point).
+  const std::vector<Vector_2>& derivatives() const { return derivatives_; }
+  Spline_end_condition end_condition() const { return end_; }
+  Knot_spacing knot_spacing() const { return spacing_; }
+  bool is_closed() const { return end_ == Spline_end_condition::periodic; }
+
+private:
+  static void check_vector(const Vector_2& v, const char* name) {
+    const double x = CGAL::to_double(v.x()), y = CGAL::to_double(v.y());
+    if (!std::isfinite(x) || !std::isfinite(y))
+      throw Invalid_input_error(internal::message("Cubic_interpolating_spline_2: ", name, " = (", x, ", ", y,
+                                                  ") is not finite"));
+  }
+
+  void build(const Vector_2& start_derivative, const Vector_2& end_derivative) {
+    const char* method = "Cubic_interpolating_spline_2";
+    const bool closed = is_closed();
+    internal::check_interpolation_input(points_, closed ? 3 : 2, closed, method);
+    const std::vector<Point_2>& p = points_;
+    const std::size_t n = p.size();
+    const std::vector<FT> h = internal::classic_knot_intervals<K>(p, closed, spacing_, method);
+    knots_ = internal::classic_cumulative_knots(h);
+
+    // Rows of the (cyclic) tridiagonal system, one per point; a = sub, b = diagonal, c = super.
+    std::vector<FT> a(n, FT(0)), b(n, FT(0)), c(n, FT(0)), dx(n, FT(0)), dy(n, FT(0));
+    const FT two(2), three(3);
+    auto interior_row = [&](std::size_t i, std::size_t im, std::size_t ip, const FT& hm, const FT& hp) {
+      // (C2) at knot i with left interval hm = h_{i-1} and right interval hp = h_i.
+      a[i] = hp;
+      b[i] = two * (hm + hp);
+      c[i] = hm;
+      const FT l = hp / hm, r = hm / hp;
+      dx[i] = three * (l * (p[i].x() - p[im].x()) + r * (p[ip].x() - p[i].x()));
+      dy[i] = three * (l * (p[i].y() - p[im].y()) + r * (p[ip].y() - p[i].y()));
+    };
+    if (closed) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t im = (i + n - 1) % n, ip = (i + 1) % n;
+        interior_row(i, im, ip, h[im], h[i]);
+      }
+    } else {
+      for (std::size_t i = 1; i + 1 < n; ++i) interior_row(i, i - 1, i + 1, h[i - 1], h[i]);
+      if (end_ == Spline_end_condition::natural) {
+        b[0] = two;
+        c[0] = FT(1);
+        dx[0] = three * (p[1].x() - p[0].x()) / h[0];
+        dy[0] = three * (p[1].y() - p[0].y()) / h[0];
+        a[n - 1] = FT(1);
+        b[n - 1] = two;
+        dx[n - 1] = three * (p[n - 1].x() - p[n - 2].x()) / h[n - 2];
+        dy[n - 1] = three * (p[n - 1].y() - p[n - 2].y()) / h[n - 2];
+      } else {  // clamped: identity rows
+        b[0] = FT(1);
+        dx[0] = start_derivative.x();
+        dy[0] = start_derivative.y();
+        b[n - 1] = FT(1);
+        dx[n - 1] = end_derivative.x();
+        dy[n - 1] = end_derivative.y();
+      }
+    }
+    std::vector<FT> mx, my;
+    if (closed) {
+      mx = internal::solve_cyclic_tridiagonal(a, b, c, dx);
+      my = internal::solve_cyclic_tridiagonal(a, b, c, dy);
+    } else {
+      mx = internal::solve_tridiagonal(a, b, c, dx);
+      my = internal::solve_tridiagonal(a, b, c, dy);
+    }
+    derivatives_.clear();
+    derivatives_.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) derivatives_.push_back(Vector_2(mx[i], my[i]));
+    pieces_.clear();
+    pieces_.reserve(h.size());
+    for (std::size_t i = 0; i < h.size(); ++i) {
+      const std::size_t j = (i + 1) % n;
+      pieces_.push_back(internal::classic_hermite_piece<K>(p[i], mx[i], my[i], p[j], mx[j], my[j], h[i]));
+    }
+    internal::classic_check_finite_pieces(pieces_, method);
+  }
+
+  std::vector<Point_2> points_;
+  Spline_end_condition end_;
+  Knot_spacing spacing_;
+  std::vector<FT> knots_;
+  std::vector<Vector_2> derivatives_;
+  std::vector<Piece> pieces_;
+};
+
+} // namespace fair
+
+#endif // FAIR_CUBIC_INTERPOLATING_SPLINE_2_H

@@ -1,0 +1,164 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// Pieces shared by the classic interpolants (Cubic_interpolating_spline_2, Catmull_rom_2,
+// Cubic_quasi_interpolant_2, Cubic_bspline_2, Four_point_subdivision_2): the knot spacing
+// enum, the knot intervals, the cubic Hermite -> Bezier conversion and the uniform cubic
+// B-spline segment -> Bezier conversion.
+
+#ifndef FAIR_INTERNAL_CLASSIC_COMMON_H
+#define FAIR_INTERNAL_CLASSIC_COMMON_H
+
+#include <fair/Bezier_2.h>
+#include <fair/Errors.h>
+#include <fair/internal/input_checks.h>
+
+#include <CGAL/number_utils.h>
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace fair {
+
+/// How the parameter values (knots) u_0 < u_1 < ... of interpolation points are spaced.
+/// With h_i = u_{i+1} - u_i:
+///  - uniform:     h_i = 1 (rational: every construction stays exact in an exact kernel);
+///  - centripetal: h_i = |p_{i+1} - p_i|^(1/2);
+///  - chordal:     h_i = |p_{i+1} - p_i|.
+/// The two non-uniform spacings need square roots: h_i is computed in double (std::hypot, then
+/// std::sqrt) and converted exactly to FT. Everything after that is carried out in FT, so in an
+/// exact kernel the curve interpolates exactly and is exactly C1/C2 *for those rounded knots*;
+/// only the knots themselves carry a relative error of about 1e-16.
+enum class Knot_spacing { uniform, centripetal, chordal };
+
+inline const char* to_string(Knot_spacing s) {
+  switch (s) {
+    case Knot_spacing::uniform: return "uniform";
+    case Knot_spacing::centripetal: return "centripetal";
+    case Knot_spacing::chordal: return "chordal";
+  }
+  return "?";
+}
+
+namespace internal {
+
+/// The knot intervals h_i between consecutive points (n - 1 of them, or n for a closed curve
+/// where h_{n-1} runs from p_{n-1} back to p_0). Throws Invalid_input_error when a non-uniform
+/// interval is zero or not finite in double (coincident points, or a distance that under- or
+/// overflows double even with std::hypot).
+template <class K>
+std::vector<typename K::FT> classic_knot_intervals(const std::vector<typename K::Point_2>& p,
+                                                   bool closed, Knot_spacing spacing,
+                                                   const char* method) {
+  typedef typename K::FT FT;
+  const std::size_t n = p.size();
+  const std::size_t m = closed ? n : n - 1;
+  std::vector<FT> h;
+  h.reserve(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    if (spacing == Knot_spacing::uniform) {
+      h.push_back(FT(1));
+      continue;
+    }
+    const std::size_t j = (i + 1) % n;
+    // Differences in FT first (exact in an exact kernel), then to double.
+    const double dx = CGAL::to_double(p[j].x() - p[i].x());
+    const double dy = CGAL::to_double(p[j].y() - p[i].y());
+    const double d = std::hypot(dx, dy);
+    const double hi = (spacing == Knot_spacing::chordal) ? d : std::sqrt(d);
+    if (!(hi > 0) || !std::isfinite(hi))
+      throw Invalid_input_error(message(method, ": ", to_string(spacing), " knot interval between points ", i,
+                                        " and ", j, " is ", hi, " (distance ", d,
+                                        " in double); points must be distinct and their distance "
+                                        "representable"));
+    h.push_back(FT(hi));
+  }
+  return h;
+}
+
+/// The cumulative knots u_0 = 0, u_{i+1} = u_i + h_i.
+template <class FT>
+std::vector<FT> classic_cumulative_knots(const std::vector<FT>& h) {
+  std::vector<FT> u(1, FT(0));
+  u.reserve(h.size() + 1);
+  for (const FT& hi : h) u.push_back(u.back() + hi);
+  return u;
+}
+
+/// The cubic Bezier piece of the Hermite interpolant on [u_i, u_i + h]:
+/// c(u_i) = p, c'(u_i) = m0, c(u_i + h) = q, c'(u_i + h) = m1 (derivatives d/du).
+/// In the local parameter t = (u - u_i)/h the end derivatives are h m0 and h m1, so
+/// P1 = p + h m0 / 3 and P2 = q - h m1 / 3.
+template <class K>
+Bezier_2<K> classic_hermite_piece(const typename K::Point_2& p, const typename K::FT& mx0,
+                                  const typename K::FT& my0, const typename K::Point_2& q,
+                                  const typename K::FT& mx1, const typename K::FT& my1,
+                                  const typename K::FT& h) {
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 Point_2;
+  const FT s = h / FT(3);
+  return Bezier_2<K>(p, Point_2(p.x() + s * mx0, p.y() + s * my0),
+                     Point_2(q.x() - s * mx1, q.y() - s * my1), q);
+}
+
+/// The Bezier form of the uniform cubic B-spline segment with control points d0..d3:
+/// B0 = (d0 + 4 d1 + d2)/6, B1 = (2 d1 + d2)/3, B2 = (d1 + 2 d2)/3, B3 = (d1 + 4 d2 + d3)/6.
+template <class K>
+Bezier_2<K> classic_bspline_segment(const typename K::Point_2& d0, const typename K::Point_2& d1,
+                                    const typename K::Point_2& d2, const typename K::Point_2& d3) {
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 Point_2;
+  const FT six(6), three(3), four(4), two(2);
+  return Bezier_2<K>(
+      Point_2((d0.x() + four * d1.x() + d2.x()) / six, (d0.y() + four * d1.y() + d2.y()) / six),
+      Point_2((two * d1.x() + d2.x()) / three, (two * d1.y() + d2.y()) / three),
+      Point_2((d1.x() + two * d2.x()) / three, (d1.y() + two * d2.y()) / three),
+      Point_2((d1.x() + four * d2.x() + d3.x()) / six, (d1.y() + four * d2.y() + d3.y()) / six));
+}
+
+/// a p + b q + c r + d s for points (an affine combination when a + b + c + d = 1).
+template <class K>
+typename K::Point_2 classic_combine(const typename K::FT& a, const typename K::Point_2& p,
+                                    const typename K::FT& b, const typename K::Point_2& q,
+                                    const typename K::FT& c, const typename K::Point_2& r,
+                                    const typename K::FT& d, const typename K::Point_2& s) {
+  return typename K::Point_2(a * p.x() + b * q.x() + c * r.x() + d * s.x(),
+                             a * p.y() + b * q.y() + c * r.y() + d * s.y());
+}
+
+/// The point on the cubic through P0..P3 (at parameters 0,1,2,3) at parameter -1:
+/// 4 P0 - 6 P1 + 4 P2 - P3 (the fourth difference of a cubic vanishes). Used as phantom data
+/// so that cubic reproduction holds up to the ends of open curves.
+template <class K>
+typename K::Point_2 classic_cubic_extrapolation(const typename K::Point_2& p0, const typename K::Point_2& p1,
+                                                const typename K::Point_2& p2, const typename K::Point_2& p3) {
+  typedef typename K::FT FT;
+  return classic_combine<K>(FT(4), p0, FT(-6), p1, FT(4), p2, FT(-1), p3);
+}
+
+/// Throws Invalid_input_error if a constructed control point is not finite in double (finite
+/// data whose differences or combinations overflow double, e.g. coordinates near 1e308), so that
+/// no method hands out infinite or NaN pieces.
+template <class Point_range>
+void classic_check_finite_output(const Point_range& points, const char* method) {
+  std::size_t i = 0;
+  for (const auto& q : points) {
+    const double x = CGAL::to_double(q.x()), y = CGAL::to_double(q.y());
+    if (!std::isfinite(x) || !std::isfinite(y))
+      throw Invalid_input_error(message(method, ": constructed point ", i, " = (", x, ", ", y,
+                                        ") is not finite; the input coordinates are too large for "
+                                        "this number type"));
+    ++i;
+  }
+}
+
+/// classic_check_finite_output over the control points of every piece.
+template <class Piece>
+void classic_check_finite_pieces(const std::vector<Piece>& pieces, const char* method) {
+  for (const Piece& piece : pieces) classic_check_finite_output(piece.control_points(), method);
+}
+
+} // namespace internal
+} // namespace fair
+
+#endif // FAIR_INTERNAL_CLASSIC_COMMON_H

@@ -1,0 +1,406 @@
+// Tests of the classic interpolating splines: Cubic_interpolating_spline_2 (natural, clamped,
+// periodic; uniform, centripetal, chordal knots), Catmull_rom_2, and the O(n) tridiagonal solvers.
+
+#include <fair/Catmull_rom_2.h>
+#include <fair/Cubic_interpolating_spline_2.h>
+#include <fair/internal/classic_tridiagonal.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Simple_cartesian<double> SC_double;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel EPICK;
+typedef CGAL::Exact_predicates_exact_constructions_kernel EPECK;
+typedef CGAL::Simple_cartesian<CGAL::Gmpq> SC_gmpq;
+
+template <class K>
+constexpr bool is_exact() {
+  return CGAL::Algebraic_structure_traits<typename K::FT>::Is_exact::value;
+}
+
+// a == b exactly in an exact kernel, to a relative 1e-11 otherwise.
+template <class K>
+void expect_equal(const typename K::FT& a, const typename K::FT& b, const char* what) {
+  if (is_exact<K>()) {
+    EXPECT_TRUE(a == b) << what << ": " << CGAL::to_double(a) << " != " << CGAL::to_double(b);
+  } else {
+    const double x = CGAL::to_double(a), y = CGAL::to_double(b);
+    EXPECT_NEAR(x, y, 1e-11 * (1 + std::max(std::fabs(x), std::fabs(y)))) << what;
+  }
+}
+template <class K, class P>
+void expect_equal_xy(const P& a, const P& b, const char* what) {
+  expect_equal<K>(a.x(), b.x(), what);
+  expect_equal<K>(a.y(), b.y(), what);
+}
+
+// Random points with coordinates k/8, |k| <= 800: exactly representable in double, so every
+// kernel sees the same data. Consecutive points are distinct by construction.
+template <class K>
+std::vector<typename K::Point_2> random_points(std::mt19937& rng, std::size_t n) {
+  std::uniform_int_distribution<int> d(-800, 800);
+  std::vector<typename K::Point_2> p;
+  while (p.size() < n) {
+    typename K::Point_2 q(typename K::FT(d(rng)) / 8, typename K::FT(d(rng)) / 8);
+    if (!p.empty() && (q == p.back() || (p.size() + 1 == n && q == p.front()))) continue;
+    p.push_back(q);
+  }
+  return p;
+}
+
+// Interpolation, and C1/C2 continuity in the knot parameter u: piece i has local parameter
+// t = (u - u_i)/h_i, so d/du = (1/h_i) d/dt and d2/du2 = (1/h_i^2) d2/dt2.
+template <class K, class Curve>
+void check_interpolation_and_continuity(const Curve& c, int order) {
+  typedef typename K::FT FT;
+  const auto& p = c.points();
+  const auto& pieces = c.pieces();
+  const auto& u = c.knots();
+  const std::size_t n = p.size();
+  ASSERT_EQ(pieces.size(), c.is_closed() ? n : n - 1);
+  ASSERT_EQ(u.size(), pieces.size() + 1);
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    expect_equal_xy<K>(pieces[i].point(FT(0)), p[i], "interpolates start");
+    expect_equal_xy<K>(pieces[i].point(FT(1)), p[(i + 1) % n], "interpolates end");
+  }
+  const std::size_t joins = c.is_closed() ? pieces.size() : pieces.size() - 1;
+  for (std::size_t i = 0; i < joins; ++i) {
+    const std::size_t j = (i + 1) % pieces.size();
+    const FT hi = u[i + 1] - u[i], hj = u[j + 1] - u[j];
+    const auto d1 = pieces[i].derivative(FT(1)), d2 = pieces[j].derivative(FT(0));
+    expect_equal<K>(d1.x() / hi, d2.x() / hj, "C1 x");
+    expect_equal<K>(d1.y() / hi, d2.y() / hj, "C1 y");
+    // The derivative reported for the point agrees with the pieces.
+    expect_equal<K>(c.derivatives()[(i + 1) % n].x(), d2.x() / hj, "derivative() x");
+    if (order >= 2) {
+      const auto s1 = pieces[i].second_derivative(FT(1)), s2 = pieces[j].second_derivative(FT(0));
+      expect_equal<K>(s1.x() / (hi * hi), s2.x() / (hj * hj), "C2 x");
+      expect_equal<K>(s1.y() / (hi * hi), s2.y() / (hj * hj), "C2 y");
+    }
+  }
+}
+
+template <class K>
+class Classic_splines : public ::testing::Test {};
+typedef ::testing::Types<SC_double, EPICK, EPECK, SC_gmpq> Kernels;
+TYPED_TEST_SUITE(Classic_splines, Kernels);
+
+// ---------------------------------------------------------------------------------------------
+// Cubic_interpolating_spline_2
+
+// Hand solution. Natural uniform spline through p0 = (0,0), p1 = (1,1), p2 = (2,0).
+// Rows: 2 m0 + m1 = 3 (p1 - p0), m0 + 4 m1 + m2 = 3 (p2 - p0), m1 + 2 m2 = 3 (p2 - p1).
+// x: 2a + b = 3, a + 4b + c = 6, b + 2c = 3  ->  a = b = c = 1 (x(u) = u).
+// y: 2a + b = 3, a + 4b + c = 0, b + 2c = -3 ->  by antisymmetry c = -a, so b = 0, a = 3/2.
+// On [0,1]: y(u) = 3u/2 - u^3/2 (y(0) = 0, y(1) = 1, y'(1) = 0, y''(0) = 0), Bezier ordinates
+// 0, 1/2, 1, 1, and y(1/2) = 3/4 - 1/16 = 11/16.
+TYPED_TEST(Classic_splines, NaturalSplineThroughThreePointsByHand) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  fair::Cubic_interpolating_spline_2<K> s({P(0, 0), P(1, 1), P(2, 0)});
+  ASSERT_EQ(s.pieces().size(), 2u);
+  const auto& m = s.derivatives();
+  expect_equal_xy<K>(m[0], typename K::Vector_2(1, FT(3) / 2), "m0");
+  expect_equal_xy<K>(m[1], typename K::Vector_2(1, 0), "m1");
+  expect_equal_xy<K>(m[2], typename K::Vector_2(1, FT(-3) / 2), "m2");
+  const auto cp = s.pieces()[0].control_points();
+  expect_equal_xy<K>(cp[1], P(FT(1) / 3, FT(1) / 2), "P1");
+  expect_equal_xy<K>(cp[2], P(FT(2) / 3, 1), "P2");
+  expect_equal_xy<K>(s.pieces()[0].point(FT(1) / 2), P(FT(1) / 2, FT(11) / 16), "c(1/2)");
+  // Mirror symmetry: second piece is the first reflected in x = 1.
+  expect_equal_xy<K>(s.pieces()[1].point(FT(1) / 2), P(FT(3) / 2, FT(11) / 16), "c(3/2)");
+}
+
+// Periodic spline through the square (1,0), (0,1), (-1,0), (0,-1). The uniform periodic rows are
+// m_{i-1} + 4 m_i + m_{i+1} = 3 (p_{i+1} - p_{i-1}). With p_{i+1} = R p_i (R = rotation by 90
+// degrees) try m_i = lambda R p_i: then m_{i-1} + m_{i+1} = lambda R (p_{i-1} + p_{i+1}) = 0 and
+// p_{i+1} - p_{i-1} = 2 R p_i, so 4 lambda = 6, lambda = 3/2: m_0 = (0, 3/2), m_1 = (-3/2, 0).
+TYPED_TEST(Classic_splines, PeriodicSplineThroughSquareByHand) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  fair::Cubic_interpolating_spline_2<K> s({P(1, 0), P(0, 1), P(-1, 0), P(0, -1)},
+                                          fair::Spline_end_condition::periodic);
+  ASSERT_EQ(s.pieces().size(), 4u);
+  EXPECT_TRUE(s.is_closed());
+  expect_equal_xy<K>(s.derivatives()[0], typename K::Vector_2(0, FT(3) / 2), "m0");
+  expect_equal_xy<K>(s.derivatives()[1], typename K::Vector_2(FT(-3) / 2, 0), "m1");
+  check_interpolation_and_continuity<K>(s, 2);
+  // c(1/2) on the first piece: Bezier (1,0), (1,1/2), (1/2,1), (0,1) -> (11/16, 11/16).
+  expect_equal_xy<K>(s.pieces()[0].point(FT(1) / 2), P(FT(11) / 16, FT(11) / 16), "c(1/2)");
+}
+
+TYPED_TEST(Classic_splines, NaturalClampedPeriodicOnRandomData) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Vector_2 V;
+  std::mt19937 rng(20261126);
+  const int trials = is_exact<K>() ? 3 : 40;
+  for (int trial = 0; trial < trials; ++trial) {
+    const std::size_t n = 2 + static_cast<std::size_t>(trial % 9);
+    const auto p = random_points<K>(rng, n);
+    for (fair::Knot_spacing sp :
+         {fair::Knot_spacing::uniform, fair::Knot_spacing::centripetal, fair::Knot_spacing::chordal}) {
+      fair::Cubic_interpolating_spline_2<K> nat(p, fair::Spline_end_condition::natural, sp);
+      check_interpolation_and_continuity<K>(nat, 2);
+      // Natural ends: zero second derivative.
+      expect_equal_xy<K>(nat.pieces().front().second_derivative(FT(0)), V(0, 0), "natural start");
+      expect_equal_xy<K>(nat.pieces().back().second_derivative(FT(1)), V(0, 0), "natural end");
+
+      const V t0(FT(3) / 2, FT(-1) / 4), t1(FT(-2), FT(5) / 8);
+      fair::Cubic_interpolating_spline_2<K> cl(p, t0, t1, sp);
+      check_interpolation_and_continuity<K>(cl, 2);
+      const auto& u = cl.knots();
+      const FT h0 = u[1] - u[0], hn = u.back() - u[u.size() - 2];
+      // Clamped ends: c'(u_0) = t0, c'(u_n) = t1, i.e. piece derivatives h t.
+      expect_equal_xy<K>(cl.pieces().front().derivative(FT(0)), t0 * h0, "clamped start");
+      expect_equal_xy<K>(cl.pieces().back().derivative(FT(1)), t1 * hn, "clamped end");
+
+      if (n >= 3) {
+        fair::Cubic_interpolating_spline_2<K> per(p, fair::Spline_end_condition::periodic, sp);
+        check_interpolation_and_continuity<K>(per, 2);
+        EXPECT_TRUE(per.pieces().back().point(FT(1)) == p.front()) << "periodic closure";
+      }
+    }
+  }
+}
+
+// Clamped spline with the exact end derivatives reproduces a cubic polynomial (the cubic
+// satisfies every equation of the system, and the system is non-singular).
+TYPED_TEST(Classic_splines, ClampedSplineReproducesCubics) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  auto q = [](const FT& u) { return P(u * u * u - 2 * u * u + 3, FT(1) / 2 * u * u * u + u - 1); };
+  auto dq = [](const FT& u) { return typename K::Vector_2(3 * u * u - 4 * u, FT(3) / 2 * u * u + 1); };
+  std::vector<P> p;
+  for (int i = 0; i <= 6; ++i) p.push_back(q(FT(i)));
+  fair::Cubic_interpolating_spline_2<K> s(p, dq(FT(0)), dq(FT(6)));
+  for (std::size_t i = 0; i < s.pieces().size(); ++i)
+    for (int k = 0; k <= 4; ++k)
+      expect_equal_xy<K>(s.pieces()[i].point(FT(k) / 4), q(FT(static_cast<int>(i)) + FT(k) / 4), "cubic");
+  // The natural spline does not: q''(0) = (-4, 0) != 0, so it must differ somewhere.
+  fair::Cubic_interpolating_spline_2<K> nat(p);
+  EXPECT_FALSE(nat.pieces()[0].point(FT(1) / 2) == q(FT(1) / 2));
+  // ... but it reproduces straight lines, with any spacing (uniform knots: exactly).
+  std::vector<P> line;
+  for (int i = 0; i <= 5; ++i) line.push_back(P(FT(2 * i - 3), FT(-i) / 2));
+  fair::Cubic_interpolating_spline_2<K> ls(line);
+  for (std::size_t i = 0; i < ls.pieces().size(); ++i)
+    expect_equal_xy<K>(ls.pieces()[i].point(FT(1) / 3),
+                       P(FT(2) * (FT(static_cast<int>(i)) + FT(1) / 3) - 3, -(FT(static_cast<int>(i)) + FT(1) / 3) / 2),
+                       "line");
+}
+
+TYPED_TEST(Classic_splines, SplineRejectsBadInput) {
+  typedef TypeParam K;
+  typedef typename K::Point_2 P;
+  typedef typename K::Vector_2 V;
+  typedef fair::Cubic_interpolating_spline_2<K> S;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(S({P(0, 0)}), fair::Invalid_input_error);
+  EXPECT_THROW(S({P(0, 0), P(1, 0)}, fair::Spline_end_condition::periodic), fair::Invalid_input_error);
+  EXPECT_THROW(S({P(0, 0), P(1, 0), P(1, 0), P(2, 1)}), fair::Invalid_input_error);
+  EXPECT_THROW(S({P(0, 0), P(1, 0), P(1, 1), P(0, 0)}, fair::Spline_end_condition::periodic),
+               fair::Invalid_input_error);
+  EXPECT_THROW(S({P(0, 0), P(1, 0)}, fair::Spline_end_condition::clamped), fair::Precondition_error);
+  if (!is_exact<K>()) {  // NaN and infinity exist only in the double kernels
+    EXPECT_THROW(S({P(0, 0), P(nan, 1), P(2, 0)}), fair::Invalid_input_error);
+    EXPECT_THROW(S({P(0, 0), P(1, inf), P(2, 0)}), fair::Invalid_input_error);
+    EXPECT_THROW(S({P(0, 0), P(1, 1)}, V(nan, 0), V(1, 0)), fair::Invalid_input_error);
+    // Finite but too large: the chord length overflows double, and so does 3 (p1 - p0).
+    EXPECT_THROW(S({P(-1e308, 0), P(1e308, 0), P(1e308, 1)}, fair::Spline_end_condition::natural,
+                   fair::Knot_spacing::chordal),
+                 fair::Invalid_input_error);
+    EXPECT_THROW(S({P(-1e308, 0), P(1e308, 0), P(1e308, 1)}), fair::Invalid_input_error);
+  }
+  // The messages name the method and the offending index.
+  try {
+    S({P(0, 0), P(1, 0), P(1, 0)});
+    FAIL() << "no throw";
+  } catch (const fair::Invalid_input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("Cubic_interpolating_spline_2"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("1 and 2"), std::string::npos) << e.what();
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Catmull_rom_2
+
+// Hand values: uniform Catmull-Rom through (0,0), (1,1), (2,0), (3,1).
+// Piece 1: P1 = p1 + (p2 - p0)/6 = (4/3, 1), P2 = p2 - (p3 - p1)/6 = (5/3, 0).
+// Quadratic end: m0 = (-3 p0 + 4 p1 - p2)/2 = (1, 2), so piece 0 has P1 = p0 + m0/3 = (1/3, 2/3).
+TYPED_TEST(Classic_splines, CatmullRomByHand) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  fair::Catmull_rom_2<K> c({P(0, 0), P(1, 1), P(2, 0), P(3, 1)});
+  ASSERT_EQ(c.pieces().size(), 3u);
+  const auto cp1 = c.pieces()[1].control_points();
+  expect_equal_xy<K>(cp1[1], P(FT(4) / 3, 1), "piece 1 P1");
+  expect_equal_xy<K>(cp1[2], P(FT(5) / 3, 0), "piece 1 P2");
+  expect_equal_xy<K>(c.pieces()[0].control_points()[1], P(FT(1) / 3, FT(2) / 3), "piece 0 P1");
+  // C1 but not C2. Tangents m1 = (p2 - p0)/2 = (1,0), m2 = (p3 - p1)/2 = (1,0), and the quadratic
+  // end m3 = (p1 - 4 p2 + 3 p3)/2 = (1,2). A unit-interval Hermite cubic has c''(1) =
+  // 6 (p_a - p_b) + 2 m_a + 4 m_b and c''(0) = 6 (p_b - p_a) - 4 m_a - 2 m_b, so at p2:
+  // left  = 6 (p1 - p2) + 2 m1 + 4 m2 = (-6,6) + (2,0) + (4,0) = (0,6),
+  // right = 6 (p3 - p2) - 4 m2 - 2 m3 = (6,6) - (4,0) - (2,4) = (0,2).
+  expect_equal_xy<K>(c.pieces()[1].second_derivative(FT(1)), typename K::Vector_2(0, 6), "left c'' at p2");
+  expect_equal_xy<K>(c.pieces()[2].second_derivative(FT(0)), typename K::Vector_2(0, 2), "right c'' at p2");
+  check_interpolation_and_continuity<K>(c, 1);
+}
+
+// Samples of a quadratic at the (uniform) knots are reproduced, end pieces included.
+TYPED_TEST(Classic_splines, CatmullRomReproducesQuadraticsButNotCubics) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  auto q = [](const FT& u) { return P(u * u - u, 3 - FT(2) / 3 * u * u + u / 5); };
+  std::vector<P> p;
+  for (int i = 0; i <= 5; ++i) p.push_back(q(FT(i)));
+  fair::Catmull_rom_2<K> c(p);
+  for (std::size_t i = 0; i < c.pieces().size(); ++i)
+    for (int k = 0; k <= 3; ++k)
+      expect_equal_xy<K>(c.pieces()[i].point(FT(k) / 3), q(FT(static_cast<int>(i)) + FT(k) / 3), "quadratic");
+  // Cubic data: m_i = q'(i) + q'''/6 (see Catmull_rom_2.h), so interior derivatives are off by 1.
+  std::vector<P> cubic;
+  for (int i = 0; i <= 5; ++i) cubic.push_back(P(FT(i * i * i), FT(i)));
+  fair::Catmull_rom_2<K> cc(cubic);
+  expect_equal_xy<K>(cc.derivatives()[2], typename K::Vector_2(3 * 4 + 1, 1), "q'(2) + q'''/6");
+}
+
+// Chordal knots on collinear points with chord lengths 5, 10, 5 (3-4-5 triangles: exact in
+// double): the data are linear in the chord-length parameter, so the curve is the polyline
+// traversed at unit speed -- exactly, in an exact kernel.
+TYPED_TEST(Classic_splines, CatmullRomChordalOnCollinearData) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  const std::vector<P> p = {P(0, 0), P(3, 4), P(9, 12), P(12, 16)};
+  fair::Catmull_rom_2<K> c(p, false, fair::Knot_spacing::chordal);
+  expect_equal<K>(c.knots()[2], FT(15), "knot u_2");
+  for (std::size_t i = 0; i < 3; ++i) {
+    expect_equal_xy<K>(c.derivatives()[i], typename K::Vector_2(FT(3) / 5, FT(4) / 5), "unit tangent");
+    const P mid = c.pieces()[i].point(FT(1) / 4);
+    expect_equal_xy<K>(mid, p[i] + (p[i + 1] - p[i]) / 4, "unit speed");
+  }
+  // Centripetal knots are sqrt(5), sqrt(10), sqrt(5): not representable, but C1 in u holds.
+  fair::Catmull_rom_2<K> cc(p, false, fair::Knot_spacing::centripetal);
+  check_interpolation_and_continuity<K>(cc, 1);
+}
+
+TYPED_TEST(Classic_splines, CatmullRomRandomOpenClosedAndAuxiliaryPoints) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  std::mt19937 rng(7);
+  const int trials = is_exact<K>() ? 3 : 40;
+  for (int trial = 0; trial < trials; ++trial) {
+    const std::size_t n = 3 + static_cast<std::size_t>(trial % 8);
+    const auto p = random_points<K>(rng, n);
+    for (fair::Knot_spacing sp :
+         {fair::Knot_spacing::uniform, fair::Knot_spacing::centripetal, fair::Knot_spacing::chordal}) {
+      check_interpolation_and_continuity<K>(fair::Catmull_rom_2<K>(p, false, sp), 1);
+      check_interpolation_and_continuity<K>(fair::Catmull_rom_2<K>(p, true, sp), 1);
+    }
+  }
+  // Auxiliary points p_{-1} = p_0, p_{n+1} = p_n (Li et al., Fig. 1) with uniform knots:
+  // eq. (4) with alpha = 1/2 gives m_0 = (p_1 - p_0)/2 and m_n = (p_n - p_{n-1})/2.
+  const std::vector<P> p = {P(35, 47), P(16, 40), P(15, 15), P(25, 36), P(40, 15)};
+  fair::Catmull_rom_2<K> c(p, p.front(), p.back());
+  expect_equal_xy<K>(c.derivatives().front(), (p[1] - p[0]) / 2, "m0");
+  expect_equal_xy<K>(c.derivatives().back(), (p[4] - p[3]) / 2, "mn");
+  expect_equal_xy<K>(c.derivatives()[2], (p[3] - p[1]) / 2, "m2");
+  check_interpolation_and_continuity<K>(c, 1);
+  // Non-uniform knots need distinct auxiliary points.
+  EXPECT_THROW(fair::Catmull_rom_2<K>(p, p.front(), p.back(), fair::Knot_spacing::chordal),
+               fair::Invalid_input_error);
+  // Two points: the straight segment.
+  fair::Catmull_rom_2<K> seg({P(1, 2), P(4, 8)});
+  expect_equal_xy<K>(seg.pieces()[0].point(FT(1) / 3), P(2, 4), "segment");
+}
+
+TYPED_TEST(Classic_splines, CatmullRomRejectsBadInput) {
+  typedef TypeParam K;
+  typedef typename K::Point_2 P;
+  typedef fair::Catmull_rom_2<K> C;
+  EXPECT_THROW(C({P(0, 0)}), fair::Invalid_input_error);
+  EXPECT_THROW(C({P(0, 0), P(1, 0)}, true), fair::Invalid_input_error);
+  EXPECT_THROW(C({P(0, 0), P(1, 0), P(1, 0)}, false, fair::Knot_spacing::chordal), fair::Invalid_input_error);
+  EXPECT_THROW(C({P(0, 0), P(1, 0), P(1, 0)}), fair::Invalid_input_error);
+  if (!is_exact<K>()) {
+    EXPECT_THROW(C({P(0, 0), P(std::nan(""), 0), P(2, 0)}), fair::Invalid_input_error);
+    EXPECT_THROW(C({P(0, 0), P(1, 0), P(2, -std::numeric_limits<double>::infinity())}), fair::Invalid_input_error);
+    EXPECT_THROW(C({P(0, 0), P(1, 0)}, P(std::nan(""), 0), P(2, 0)), fair::Invalid_input_error);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The solvers, checked through the residual A x - d (exactly zero in Gmpq).
+
+TEST(Classic_tridiagonal, ThomasAndShermanMorrisonSolveExactlyInGmpq) {
+  typedef CGAL::Gmpq Q;
+  std::mt19937 rng(99);
+  std::uniform_int_distribution<int> d(-9, 9);
+  for (std::size_t n : {1u, 2u, 3u, 4u, 7u, 20u}) {
+    std::vector<Q> a(n), b(n), c(n), r(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      a[i] = Q(d(rng), 4);
+      c[i] = Q(d(rng), 3);
+      b[i] = Q(20 + d(rng), 1);  // strictly diagonally dominant
+      r[i] = Q(d(rng), 7);
+    }
+    const std::vector<Q> x = fair::internal::solve_tridiagonal(a, b, c, r);
+    for (std::size_t i = 0; i < n; ++i) {
+      Q lhs = b[i] * x[i];
+      if (i > 0) lhs += a[i] * x[i - 1];
+      if (i + 1 < n) lhs += c[i] * x[i + 1];
+      EXPECT_EQ(lhs, r[i]) << "tridiagonal row " << i << " of " << n;
+    }
+    if (n < 3) {
+      EXPECT_THROW(fair::internal::solve_cyclic_tridiagonal(a, b, c, r), fair::Precondition_error);
+      continue;
+    }
+    const std::vector<Q> y = fair::internal::solve_cyclic_tridiagonal(a, b, c, r);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Q lhs = a[i] * y[(i + n - 1) % n] + b[i] * y[i] + c[i] * y[(i + 1) % n];
+      EXPECT_EQ(lhs, r[i]) << "cyclic row " << i << " of " << n;
+    }
+  }
+}
+
+TEST(Classic_tridiagonal, LargeDoubleSystemHasSmallResidualAndZeroPivotThrows) {
+  const std::size_t n = 100000;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> d(-1, 1);
+  std::vector<double> a(n), b(n), c(n), r(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    a[i] = d(rng);
+    c[i] = d(rng);
+    b[i] = 2.5 + d(rng);
+    r[i] = d(rng);
+  }
+  const auto y = fair::internal::solve_cyclic_tridiagonal(a, b, c, r);
+  double worst = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    worst = std::max(worst, std::fabs(a[i] * y[(i + n - 1) % n] + b[i] * y[i] + c[i] * y[(i + 1) % n] - r[i]));
+  EXPECT_LT(worst, 1e-13);
+  EXPECT_THROW(fair::internal::solve_tridiagonal<double>({0, 1}, {1, 1}, {1, 0}, {1, 1}), fair::Precondition_error);
+  EXPECT_THROW(fair::internal::solve_tridiagonal<double>({0}, {1, 2}, {0}, {1}), fair::Precondition_error);
+}
+
+} // namespace
