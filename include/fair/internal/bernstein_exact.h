@@ -16,6 +16,10 @@
 #include <CGAL/Interval_nt.h>
 
 #include <boost/multiprecision/gmp.hpp>
+#if __has_include(<gmpxx.h>)
+#include <gmpxx.h>
+#define FAIR_HAS_GMPXX 1
+#endif
 
 #include <cmath>
 #include <cstddef>
@@ -45,13 +49,16 @@ CGAL::Gmpq to_exact_rational(const CGAL::Interval_nt<P>& x, const char* where) {
                                      "polynomial, so pass point intervals or exact coefficients"));
   return to_exact_rational(x.inf(), where);
 }
-/// The exact values behind CGAL::Lazy_exact_nt: CGAL::Gmpq, or boost::multiprecision's GMP
-/// rational (EPECK's exact type in CGAL 5.5 when Boost.Multiprecision is used).
+/// The exact values behind CGAL::Lazy_exact_nt: CGAL::Gmpq, boost::multiprecision's GMP
+/// rational or gmpxx's mpq_class (EPECK's exact type in CGAL 5.5 depends on the configuration).
 inline CGAL::Gmpq exact_value_to_gmpq(const CGAL::Gmpq& x) { return x; }
 template <boost::multiprecision::expression_template_option E>
 CGAL::Gmpq exact_value_to_gmpq(const boost::multiprecision::number<boost::multiprecision::gmp_rational, E>& x) {
   return CGAL::Gmpq(x.backend().data());
 }
+#ifdef FAIR_HAS_GMPXX
+inline CGAL::Gmpq exact_value_to_gmpq(const mpq_class& x) { return CGAL::Gmpq(x.get_mpq_t()); }
+#endif
 /// Lazy exact numbers (EPECK's FT): the exact value, computed on demand.
 template <class NT>
 CGAL::Gmpq to_exact_rational(const NT& x, const char*) {

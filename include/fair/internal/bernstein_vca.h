@@ -102,11 +102,13 @@ inline int leading_zero_count(const std::vector<CGAL::Gmpq>& c) {
 
 class Vca_isolator {
 public:
-  explicit Vca_isolator(const std::vector<CGAL::Gmpq>& exact) : E_(exact) {}
+  /// `use_interval_filter` = false runs the same bisection in exact arithmetic throughout (for
+  /// testing: both must give identical leaves, since a certain filtered count is the exact one).
+  explicit Vca_isolator(const std::vector<CGAL::Gmpq>& exact, bool use_interval_filter = true)
+    : E_(exact), filter_(use_interval_filter) {}
 
   /// Isolates the roots of E in [0,1]. Returns false when a node deeper than `depth_cap` would
-  /// be needed (leaves() is then incomplete). `point_multiplicity`: compute the multiplicity of
-  /// roots found at subdivision points from leading zeros (true), else leave 0.
+  /// be needed (leaves() is then incomplete).
   bool run(int depth_cap) {
     leaves_.clear();
     const std::size_t n = E_.size() - 1;
@@ -122,8 +124,9 @@ public:
     root.lo = CGAL::Gmpq(0);
     root.hi = CGAL::Gmpq(1);
     root.depth = 0;
-    root.exact = false;
-    root.I = to_intervals(E_);
+    root.exact = !filter_;
+    if (filter_) root.I = to_intervals(E_);
+    else root.X = E_;
     stack.push_back(std::move(root));
     while (!stack.empty()) {
       Node node = std::move(stack.back());
@@ -195,6 +198,7 @@ private:
   };
 
   const std::vector<CGAL::Gmpq>& E_;
+  bool filter_;
   std::vector<Isolation_leaf> leaves_;
 };
 
