@@ -1,0 +1,291 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// Reading planar point files (CSV or JSON, see doc/io.md) into the points of any CGAL kernel.
+//
+// Every problem -- a missing or unreadable file, an empty file, a malformed line, a wrong
+// number of fields, a bad number, NaN or an infinity, trailing garbage -- throws
+// fair::Parse_error naming the file and the 1-based line (line 0: the whole file).
+
+#ifndef FAIR_IO_READ_POINTS_H
+#define FAIR_IO_READ_POINTS_H
+
+#include <fair/Errors.h>
+#include <fair/internal/input_checks.h>
+#include <fair/io/internal/json_lines.h>
+#include <fair/io/internal/number_parsing.h>
+
+#include <cerrno>
+#include <cstddef>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <istream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fair {
+namespace io {
+
+/// The contents of a point file: the points, the line each point was read from and, for
+/// JSON files, whether the file asks for a closed curve.
+template <class Kernel_>
+struct Point_file {
+  typedef Kernel_ Kernel;
+  typedef typename Kernel::Point_2 Point_2;
+
+  std::string file;                 ///< the name used in error messages
+  std::vector<Point_2> points;
+  std::vector<std::size_t> lines;   ///< 1-based line of each point
+  bool closed = false;              ///< JSON "closed" member; false when absent
+  bool closed_given = false;        ///< whether the file has a "closed" member
+};
+
+namespace internal {
+
+inline std::string trim(const std::string& s) {
+  const char* space = " \t\r\f\v";
+  const std::size_t b = s.find_first_not_of(space);
+  if (b == std::string::npos) return std::string();
+  const std::size_t e = s.find_last_not_of(space);
+  return s.substr(b, e - b + 1);
+}
+
+/// A field that starts like a word (a header such as "x" or "lon"), but is not one of the
+/// spellings of NaN or infinity, which are bad numbers rather than column names.
+inline bool looks_like_column_name(const std::string& field) {
+  if (field.empty()) return false;
+  const unsigned char c = static_cast<unsigned char>(field[0]);
+  if (!(std::isalpha(c) || c == '_' || c == '"')) return false;
+  std::string lower;
+  for (char ch : field) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return lower.rfind("nan", 0) != 0 && lower.rfind("inf", 0) != 0;
+}
+
+inline std::vector<std::string> split_fields(const std::string& line) {
+  std::vector<std::string> fields;
+  if (line.find(',') != std::string::npos) {
+    std::size_t start = 0;
+    for (;;) {
+      const std::size_t comma = line.find(',', start);
+      fields.push_back(trim(line.substr(start, comma == std::string::npos ? std::string::npos
+                                                                           : comma - start)));
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+  } else {
+    // No comma: whitespace-separated columns ("x y"), as many tools write them.
+    std::istringstream in(line);
+    std::string f;
+    while (in >> f) fields.push_back(f);
+  }
+  return fields;
+}
+
+template <class Kernel>
+typename Kernel::Point_2 make_point(const Parsed_number& x, const Parsed_number& y) {
+  typedef typename Kernel::FT FT;
+  return typename Kernel::Point_2(to_ft<FT>(x), to_ft<FT>(y));
+}
+
+/// Reads the whole file into `text`; throws Parse_error(file, 0, ...) if it cannot.
+inline std::string read_text_file(const std::string& file) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec))
+    throw Parse_error(file, 0, "cannot read: it is a directory");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    const int e = errno;
+    throw Parse_error(file, 0, std::string("cannot open file: ") +
+                                   (e ? std::strerror(e) : "unknown error"));
+  }
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) throw Parse_error(file, 0, "read error");
+  return buffer.str();
+}
+
+/// Rejects bytes that cannot appear in a text point file (NUL and other control characters).
+inline void check_text_line(const std::string& line, const std::string& file, std::size_t number) {
+  for (std::size_t k = 0; k < line.size(); ++k) {
+    const unsigned char c = static_cast<unsigned char>(line[k]);
+    if (c < 0x20 && c != '\t' && c != '\r' && c != '\f' && c != '\v')
+    {
+      const char* digits = "0123456789abcdef";
+      const std::string hex = {'0', 'x', digits[c >> 4], digits[c & 15]};
+      throw Parse_error(file, number,
+                        fair::internal::message("unreadable line: control byte ", hex,
+                                                " at column ", k + 1, " (is this a text file?)"));
+    }
+  }
+}
+
+} // namespace internal
+
+/// Parses CSV text: one point "x,y" per line (or "x y"), '#' starts a comment, blank lines
+/// are skipped, an optional header line of column names may precede the first point, and
+/// whitespace around fields is ignored. `file` names the source in error messages.
+template <class Kernel>
+Point_file<Kernel> parse_points_csv(const std::string& text, const std::string& file) {
+  using namespace internal;
+  Point_file<Kernel> out;
+  out.file = file;
+  bool first_data_line = true;
+  std::size_t start = 0, number = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    start = end + 1;
+    ++number;
+    check_text_line(line, file, number);
+    const std::size_t hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    line = trim(line);
+    if (line.empty()) continue;
+    const std::vector<std::string> fields = split_fields(line);
+    if (first_data_line) {
+      first_data_line = false;
+      bool header = true;
+      for (const std::string& f : fields) header = header && looks_like_column_name(f);
+      if (header) {
+        if (fields.size() != 2)
+          throw Parse_error(file, number, fair::internal::message("header line has ", fields.size(),
+                                                  " columns, expected 2 (x,y)"));
+        continue;
+      }
+    }
+    if (fields.size() != 2)
+      throw Parse_error(file, number,
+                        fair::internal::message("expected 2 fields \"x,y\", got ", fields.size(), " in ",
+                                quoted(line)));
+    const Parsed_number x = parse_number(fields[0], file, number, "x coordinate");
+    const Parsed_number y = parse_number(fields[1], file, number, "y coordinate");
+    out.points.push_back(make_point<Kernel>(x, y));
+    out.lines.push_back(number);
+  }
+  if (out.points.empty()) throw Parse_error(file, 0, "no points in the file");
+  return out;
+}
+
+/// Parses JSON text: either {"points": [[x, y], ...], "closed": bool} (other members are
+/// ignored) or a bare array of pairs. A coordinate is a JSON number or a string holding a
+/// number or an exact rational "p/q".
+template <class Kernel>
+Point_file<Kernel> parse_points_json(const std::string& text, const std::string& file) {
+  using namespace internal;
+  Point_file<Kernel> out;
+  out.file = file;
+  const Json_value root = Json_line_parser(text, file).parse();
+  const Json_value* points = &root;
+  if (root.kind == Json_value::object) {
+    points = root.find("points");
+    if (!points) throw Parse_error(file, root.line, "the JSON object has no \"points\" member");
+    if (const Json_value* closed = root.find("closed")) {
+      if (closed->kind != Json_value::boolean)
+        throw Parse_error(file, closed->line,
+                          fair::internal::message("\"closed\" must be true or false, got ",
+                                  Json_value::kind_name(closed->kind)));
+      out.closed = closed->flag;
+      out.closed_given = true;
+    }
+  }
+  if (points->kind != Json_value::array)
+    throw Parse_error(file, points->line,
+                      fair::internal::message("expected an array of [x, y] pairs, got ",
+                              Json_value::kind_name(points->kind)));
+  for (std::size_t i = 0; i < points->items.size(); ++i) {
+    const Json_value& pair = points->items[i];
+    if (pair.kind != Json_value::array)
+      throw Parse_error(file, pair.line, fair::internal::message("point ", i, ": expected an [x, y] pair, got ",
+                                                 Json_value::kind_name(pair.kind)));
+    if (pair.items.size() != 2)
+      throw Parse_error(file, pair.line, fair::internal::message("point ", i, ": expected 2 coordinates, got ",
+                                                 pair.items.size()));
+    Parsed_number xy[2];
+    for (int k = 0; k < 2; ++k) {
+      const Json_value& c = pair.items[std::size_t(k)];
+      const char* what = k == 0 ? "x coordinate" : "y coordinate";
+      if (c.kind != Json_value::number && c.kind != Json_value::string)
+        throw Parse_error(file, c.line, fair::internal::message("point ", i, ": ", what, " must be a number, got ",
+                                                Json_value::kind_name(c.kind)));
+      xy[k] = parse_number(c.text, file, c.line, what);
+    }
+    out.points.push_back(make_point<Kernel>(xy[0], xy[1]));
+    out.lines.push_back(pair.line);
+  }
+  if (out.points.empty()) throw Parse_error(file, points->line, "no points in the file");
+  return out;
+}
+
+/// Whether a file is read as JSON: by its extension (.json), otherwise by its first
+/// non-blank character ('[' or '{').
+inline bool is_json_point_text(const std::string& file, const std::string& text) {
+  const std::string ext = std::filesystem::path(file).extension().string();
+  if (ext == ".json" || ext == ".JSON") return true;
+  if (ext == ".csv" || ext == ".CSV" || ext == ".txt" || ext == ".xy") return false;
+  const std::size_t k = text.find_first_not_of(" \t\r\n");
+  return k != std::string::npos && (text[k] == '[' || text[k] == '{');
+}
+
+/// Reads a point file (CSV or JSON, chosen by is_json_point_text) with its line numbers.
+template <class Kernel>
+Point_file<Kernel> read_point_file(const std::string& file) {
+  const std::string text = internal::read_text_file(file);
+  return is_json_point_text(file, text) ? parse_points_json<Kernel>(text, file)
+                                        : parse_points_csv<Kernel>(text, file);
+}
+
+/// Reads the points of a point file (CSV or JSON).
+template <class Kernel>
+std::vector<typename Kernel::Point_2> read_points(const std::string& file) {
+  return read_point_file<Kernel>(file).points;
+}
+
+/// Reads CSV points from a stream; `name` is used in error messages.
+template <class Kernel>
+Point_file<Kernel> read_points_csv(std::istream& in, const std::string& name) {
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return parse_points_csv<Kernel>(buffer.str(), name);
+}
+
+/// Reads JSON points from a stream; `name` is used in error messages.
+template <class Kernel>
+Point_file<Kernel> read_points_json(std::istream& in, const std::string& name) {
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return parse_points_json<Kernel>(buffer.str(), name);
+}
+
+/// The checks of fair::internal::check_interpolation_input, reported against the file: too
+/// few points names the file, coinciding consecutive points name the line of the second one
+/// (for a closed curve the last and the first point are neighbours too).
+template <class Kernel>
+void check_point_file(const Point_file<Kernel>& data, std::size_t minimum, bool closed,
+                      const char* method) {
+  const std::size_t n = data.points.size();
+  if (n < minimum)
+    throw Parse_error(data.file, 0, fair::internal::message(method, ": needs at least ", minimum,
+                                                      " points, the file has ", n));
+  const std::size_t pairs = closed ? n : n - 1;
+  for (std::size_t i = 0; i < pairs; ++i) {
+    const std::size_t j = (i + 1) % n;
+    if (data.points[i] == data.points[j]) {
+      const std::size_t line = j < data.lines.size() ? data.lines[j] : 0;
+      const std::size_t other = i < data.lines.size() ? data.lines[i] : 0;
+      throw Parse_error(data.file, line,
+                        fair::internal::message(method, ": point ", j, " repeats its neighbour ",
+                                          "(line ", other, ") at (",
+                                          CGAL::to_double(data.points[j].x()), ", ",
+                                          CGAL::to_double(data.points[j].y()), ")"));
+    }
+  }
+  // The shared checks (also finiteness, which the parser already guarantees).
+  fair::internal::check_interpolation_input(data.points, minimum, closed, method);
+}
+
+} // namespace io
+} // namespace fair
+
+#endif // FAIR_IO_READ_POINTS_H

@@ -1,0 +1,202 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// Writing points and curves as JSON (nlohmann-json) and points as CSV. See doc/io.md.
+//
+// A coordinate is written as the JSON number of its nearest double (shortest text that reads
+// back to the same double). In an exact kernel a coordinate that is not exactly a double is
+// written as the string "p/q" of its exact value instead, which fair::io::read_points reads
+// back exactly. Nothing non-finite is ever written: the writers throw
+// fair::Precondition_error instead of emitting NaN, inf, or nlohmann's "null" for them.
+
+#ifndef FAIR_IO_WRITE_JSON_H
+#define FAIR_IO_WRITE_JSON_H
+
+#include <fair/Errors.h>
+
+#include <CGAL/Algebraic_structure_traits.h>
+#include <CGAL/number_utils.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace fair {
+namespace io {
+namespace internal {
+
+template <class T, class = void>
+struct Has_exact_member : std::false_type {};
+template <class T>
+struct Has_exact_member<T, std::void_t<decltype(std::declval<const T&>().exact())>> : std::true_type {};
+
+template <class T, class = void>
+struct Has_weights_member : std::false_type {};
+template <class T>
+struct Has_weights_member<T, std::void_t<decltype(std::declval<const T&>().weights())>> : std::true_type {};
+
+template <class T, class = void>
+struct Has_weight_member : std::false_type {};
+template <class T>
+struct Has_weight_member<T, std::void_t<decltype(std::declval<const T&>().weight())>> : std::true_type {};
+
+/// The text "p/q" (or "p") of an exact number type whose stream output is a rational;
+/// empty if the output is anything else.
+template <class ET>
+std::string rational_text(const ET& x) {
+  std::ostringstream out;
+  out << x;
+  std::string s = out.str();
+  std::size_t i = (!s.empty() && s[0] == '-') ? 1 : 0;
+  bool slash = false, digits = false;
+  for (; i < s.size(); ++i) {
+    if (s[i] == '/' && !slash && digits) { slash = true; digits = false; continue; }
+    if (s[i] < '0' || s[i] > '9') return std::string();
+    digits = true;
+  }
+  if (!digits) return std::string();
+  if (slash && s.size() > 2 && s.compare(s.size() - 2, 2, "/1") == 0) s.erase(s.size() - 2);
+  return s;
+}
+
+} // namespace internal
+
+/// A coordinate as JSON: the nearest double, or "p/q" when FT is exact and the value is not
+/// a double. Throws Precondition_error if the value is not finite; `what` names it.
+template <class FT>
+nlohmann::json number_to_json(const FT& x, const std::string& what = "value") {
+  const double d = CGAL::to_double(x);
+  if (!std::isfinite(d))
+    throw Precondition_error(fair::internal::message("fair::io: refusing to write the non-finite ",
+                                                     what, " ", d));
+  typedef typename CGAL::Algebraic_structure_traits<FT>::Is_exact Is_exact;
+  if constexpr (Is_exact::value && !std::is_floating_point<FT>::value) {
+    if (!(FT(d) == x)) {
+      std::string text;
+      if constexpr (internal::Has_exact_member<FT>::value) text = internal::rational_text(x.exact());
+      else text = internal::rational_text(x);
+      if (!text.empty()) return text;
+    }
+  }
+  return d;
+}
+
+/// A point as the JSON pair [x, y].
+template <class Point_2>
+nlohmann::json point_to_json(const Point_2& p, const std::string& what = "point") {
+  return nlohmann::json::array({number_to_json(p.x(), what + " x"), number_to_json(p.y(), what + " y")});
+}
+
+/// {"points": [[x, y], ...], "closed": closed}: the format fair::io::read_points reads.
+template <class Point_2>
+nlohmann::json points_to_json(const std::vector<Point_2>& points, bool closed = false) {
+  nlohmann::json pts = nlohmann::json::array();
+  for (std::size_t i = 0; i < points.size(); ++i)
+    pts.push_back(point_to_json(points[i], fair::internal::message("point ", i)));
+  return nlohmann::json{{"points", std::move(pts)}, {"closed", closed}};
+}
+
+/// One piece: {"degree": n, "control_points": [[x, y], ...]} and, for a rational piece (a
+/// piece with weights() returning a range, or weight() returning the middle weight of a
+/// rational quadratic in standard form), "weights": [w_0, ..., w_n].
+template <class Piece>
+nlohmann::json piece_to_json(const Piece& piece, std::size_t index = 0) {
+  nlohmann::json out;
+  const auto cps = piece.control_points();
+  nlohmann::json cp = nlohmann::json::array();
+  std::size_t k = 0;
+  for (const auto& p : cps)
+    cp.push_back(point_to_json(p, fair::internal::message("piece ", index, " control point ", k++)));
+  out["degree"] = cp.empty() ? 0 : cp.size() - 1;
+  out["control_points"] = std::move(cp);
+  if constexpr (internal::Has_weights_member<Piece>::value) {
+    nlohmann::json w = nlohmann::json::array();
+    for (const auto& wi : piece.weights())
+      w.push_back(number_to_json(wi, fair::internal::message("piece ", index, " weight")));
+    out["weights"] = std::move(w);
+  } else if constexpr (internal::Has_weight_member<Piece>::value) {
+    out["weights"] = nlohmann::json::array(
+        {1, number_to_json(piece.weight(), fair::internal::message("piece ", index, " weight")), 1});
+  }
+  return out;
+}
+
+/// A curve: {"format": "fair-curve", "version": 1, "pieces": [...]} plus the members of
+/// `extra` (method-specific fields such as the input points or the method's parameters).
+/// Throws Precondition_error if `extra` is not an object, redefines one of the members above,
+/// or holds a non-finite number.
+template <class PieceRange>
+nlohmann::json curve_to_json(const PieceRange& pieces,
+                             const nlohmann::json& extra = nlohmann::json::object()) {
+  nlohmann::json out{{"format", "fair-curve"}, {"version", 1}};
+  nlohmann::json ps = nlohmann::json::array();
+  std::size_t i = 0;
+  for (const auto& piece : pieces) ps.push_back(piece_to_json(piece, i++));
+  out["pieces"] = std::move(ps);
+  fair::internal::require(extra.is_object(), "fair::io::curve_to_json: extra must be a JSON object, got ",
+                          extra.type_name());
+  for (auto it = extra.begin(); it != extra.end(); ++it) {
+    fair::internal::require(!out.contains(it.key()), "fair::io::curve_to_json: extra member \"",
+                            it.key(), "\" would overwrite a member of the curve");
+    out[it.key()] = it.value();
+  }
+  return out;
+}
+
+/// Throws Precondition_error if `j` holds a non-finite number anywhere (`path` names it).
+inline void check_json_finite(const nlohmann::json& j, const std::string& path = "$") {
+  if (j.is_number_float() && !std::isfinite(j.get<double>()))
+    throw Precondition_error("fair::io: refusing to write the non-finite number at " + path);
+  if (j.is_array())
+    for (std::size_t i = 0; i < j.size(); ++i)
+      check_json_finite(j[i], path + "[" + std::to_string(i) + "]");
+  if (j.is_object())
+    for (auto it = j.begin(); it != j.end(); ++it) check_json_finite(it.value(), path + "." + it.key());
+}
+
+/// Writes `j` (indented) to `out`, after check_json_finite.
+inline void write_json(std::ostream& out, const nlohmann::json& j) {
+  check_json_finite(j);
+  out << j.dump(2) << '\n';
+}
+
+/// Writes `j` to `file`; throws fair::Error if the file cannot be written.
+inline void write_json_file(const std::string& file, const nlohmann::json& j) {
+  check_json_finite(j);
+  std::ofstream out(file);
+  if (!out) throw Error("fair::io: cannot open " + file + " for writing");
+  out << j.dump(2) << '\n';
+  out.close();
+  if (!out) throw Error("fair::io: error while writing " + file);
+}
+
+/// Writes points as CSV, one "x,y" line each with 17 significant digits (reads back to the
+/// same doubles), after the header line "x,y". Throws Precondition_error on a non-finite value.
+template <class Point_2>
+void write_points_csv(std::ostream& out, const std::vector<Point_2>& points) {
+  std::ostringstream text;
+  text << std::setprecision(std::numeric_limits<double>::max_digits10);
+  text << "x,y\n";
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double x = CGAL::to_double(points[i].x()), y = CGAL::to_double(points[i].y());
+    if (!std::isfinite(x) || !std::isfinite(y))
+      throw Precondition_error(fair::internal::message("fair::io::write_points_csv: point ", i, " = (", x,
+                                                       ", ", y, ") is not finite"));
+    text << x << ',' << y << '\n';
+  }
+  out << text.str();
+}
+
+} // namespace io
+} // namespace fair
+
+#endif // FAIR_IO_WRITE_JSON_H

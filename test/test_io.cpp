@@ -1,0 +1,375 @@
+// Tests of fair/io: reading point files (CSV, JSON), the exact line of every parse error, and
+// the JSON/CSV writers (round trips, exact rationals, refusal to write non-finite numbers).
+
+#include <fair/Bezier_2.h>
+#include <fair/io/read_points.h>
+#include <fair/io/write_json.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Simple_cartesian<double> SC_double;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+typedef CGAL::Simple_cartesian<CGAL::Gmpq> SC_gmpq;
+
+const std::string data_dir = std::string(FAIR_TEST_DATA_DIR) + "/io/";
+
+template <class K>
+bool is_exact_kernel() {
+  return CGAL::Algebraic_structure_traits<typename K::FT>::Is_exact::value &&
+         !std::is_floating_point<typename K::FT>::value;
+}
+
+// Expects `f` to throw Parse_error at `line`, naming `file`; returns the message.
+template <class F>
+std::string expect_parse_error(F f, const std::string& file, std::size_t line) {
+  try {
+    f();
+  } catch (const fair::Parse_error& e) {
+    EXPECT_EQ(e.file(), file) << e.what();
+    EXPECT_EQ(e.line(), line) << e.what();
+    const std::string prefix = line ? file + ":" + std::to_string(line) + ": " : file + ": ";
+    EXPECT_EQ(std::string(e.what()).rfind(prefix, 0), 0u) << e.what();
+    return e.what();
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "expected Parse_error at " << file << ":" << line << ", got " << e.what();
+    return std::string();
+  }
+  ADD_FAILURE() << "expected Parse_error at " << file << ":" << line << ", nothing thrown";
+  return std::string();
+}
+
+// ------------------------------------------------------------------ number parsing
+
+TEST(IoNumbers, DecimalsRoundTripEveryDouble) {
+  // Seeded random doubles over the whole exponent range: the 17-digit text reads back to
+  // the same double (correct rounding), as does the shortest text nlohmann writes.
+  std::mt19937_64 rng(20260101);
+  std::uniform_real_distribution<double> mantissa(-1, 1);
+  std::uniform_int_distribution<int> exponent(-300, 300);
+  for (int i = 0; i < 2000; ++i) {
+    const double v = std::ldexp(mantissa(rng), exponent(rng));
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.17g", v);
+    EXPECT_EQ(fair::io::internal::parse_decimal(buffer, "f", 1, "x"), v) << buffer;
+    const std::string shortest = nlohmann::json(v).dump();
+    EXPECT_EQ(fair::io::internal::parse_decimal(shortest, "f", 1, "x"), v) << shortest;
+  }
+  // Halfway cases and subnormals are rounded correctly.
+  EXPECT_EQ(fair::io::internal::parse_decimal("0.1", "f", 1, "x"), 0.1);
+  EXPECT_EQ(fair::io::internal::parse_decimal("9007199254740993", "f", 1, "x"), 9007199254740992.0);
+  EXPECT_EQ(fair::io::internal::parse_decimal("4.9406564584124654e-324", "f", 1, "x"),
+            std::numeric_limits<double>::denorm_min());
+  EXPECT_EQ(fair::io::internal::parse_decimal("+.5", "f", 1, "x"), 0.5);
+  EXPECT_EQ(fair::io::internal::parse_decimal("-7.", "f", 1, "x"), -7.0);
+  EXPECT_EQ(fair::io::internal::parse_decimal("1.7976931348623157e308", "f", 1, "x"),
+            std::numeric_limits<double>::max());
+}
+
+TEST(IoNumbers, RejectsEveryMalformedNumberWithItsReason) {
+  struct Case {
+    const char* text;
+    const char* reason;
+  };
+  const Case cases[] = {{"nan", "NaN"},           {"-NaN", "NaN"},
+                        {"inf", "infinite"},      {"+Infinity", "infinite"},
+                        {"0x1p3", "hexadecimal"}, {"1e999", "overflows"},
+                        {"-1e400", "overflows"},  {"1e-999", "underflows"},
+                        {"", "empty"},            {"abc", "not a number"},
+                        {"1.2.3", "trailing"},    {"--1", "not a number"},
+                        {"1e", "trailing"},       {"e5", "not a number"},
+                        {".", "not a number"},    {"1 2", "trailing"},
+                        {"1,5", "trailing"},      {"12abc", "trailing"}};
+  for (const Case& c : cases) {
+    const std::string msg = expect_parse_error(
+        [&] { fair::io::internal::parse_decimal(c.text, "n.csv", 9, "x coordinate"); }, "n.csv", 9);
+    EXPECT_NE(msg.find(c.reason), std::string::npos) << c.text << " -> " << msg;
+  }
+}
+
+TEST(IoNumbers, Rationals) {
+  const auto r = fair::io::internal::parse_number("-9192/12241", "f", 1, "x");
+  EXPECT_TRUE(r.rational);
+  EXPECT_EQ(r.value, -9192.0 / 12241.0);
+  const CGAL::Gmpq q = fair::io::internal::to_ft<CGAL::Gmpq>(r);
+  EXPECT_EQ(q, CGAL::Gmpq(-9192, 12241));
+  // An exact FT gets the exact value even for digits beyond double precision.
+  const auto big = fair::io::internal::parse_number("123456789012345678901234567891/7", "f", 1, "x");
+  const Epeck::FT e = fair::io::internal::to_ft<Epeck::FT>(big);
+  std::ostringstream exact;
+  exact << e.exact();
+  EXPECT_EQ(exact.str(), "123456789012345678901234567891/7");
+  EXPECT_EQ(fair::io::internal::to_ft<double>(big), 123456789012345678901234567891.0 / 7.0);
+  for (const char* bad : {"1/0", "1/-3", "1/", "/3", "1.5/2", "1/2/3", "a/b", "1/00"})
+    expect_parse_error([&] { fair::io::internal::parse_number(bad, "r", 4, "x"); }, "r", 4);
+}
+
+// ------------------------------------------------------------------ point files, per kernel
+
+template <class K>
+class IoKernels : public ::testing::Test {};
+typedef ::testing::Types<SC_double, Epick, Epeck, SC_gmpq> Kernels;
+TYPED_TEST_SUITE(IoKernels, Kernels);
+
+TYPED_TEST(IoKernels, ReadsCsvWithHeaderCommentsBlankLinesCrlfAndRationals) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  const std::string file = data_dir + "good.csv";
+  const fair::io::Point_file<K> f = fair::io::read_point_file<K>(file);
+  ASSERT_EQ(f.points.size(), 5u);
+  EXPECT_EQ(f.lines, (std::vector<std::size_t>{3, 5, 6, 7, 8}));
+  EXPECT_FALSE(f.closed_given);
+  EXPECT_EQ(f.points[0], typename K::Point_2(0, 0));
+  EXPECT_EQ(f.points[1], typename K::Point_2(1.5, 0.25));
+  EXPECT_EQ(f.points[2], typename K::Point_2(3, 1));
+  EXPECT_EQ(f.points[3], typename K::Point_2(-0.25, 4));
+  // "9192/12241": exact in an exact kernel, the correctly rounded quotient otherwise.
+  if (is_exact_kernel<K>())
+    EXPECT_TRUE(f.points[4].x() * FT(12241) == FT(9192));
+  else
+    EXPECT_EQ(CGAL::to_double(f.points[4].x()), 9192.0 / 12241.0);
+  EXPECT_EQ(fair::io::read_points<K>(file), f.points);
+}
+
+TYPED_TEST(IoKernels, ReadsJsonObjectAndBareArray) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  const fair::io::Point_file<K> sq = fair::io::read_point_file<K>(data_dir + "good_closed.json");
+  ASSERT_EQ(sq.points.size(), 4u);
+  EXPECT_TRUE(sq.closed_given);
+  EXPECT_TRUE(sq.closed);
+  EXPECT_EQ(sq.points[2], typename K::Point_2(1, 1));
+  EXPECT_EQ(sq.lines, (std::vector<std::size_t>{3, 3, 3, 3}));
+  EXPECT_NO_THROW(fair::io::check_point_file(sq, 3, true, "test"));
+
+  const fair::io::Point_file<K> bare = fair::io::read_point_file<K>(data_dir + "good_bare.json");
+  ASSERT_EQ(bare.points.size(), 3u);
+  EXPECT_FALSE(bare.closed_given);
+  EXPECT_EQ(bare.points[0], typename K::Point_2(0.1, 0.2));  // through the nearest double
+  if (is_exact_kernel<K>()) {
+    EXPECT_TRUE(bare.points[1].x() * FT(3) == FT(1));
+    EXPECT_TRUE(bare.points[1].y() * FT(7) == FT(-2));
+  } else {
+    EXPECT_EQ(CGAL::to_double(bare.points[1].x()), 1.0 / 3.0);
+  }
+  const fair::io::Point_file<K> spaces = fair::io::read_point_file<K>(data_dir + "good_spaces.txt");
+  EXPECT_EQ(spaces.points.size(), 3u);
+  EXPECT_EQ(spaces.points[2], typename K::Point_2(3, 5));
+}
+
+TYPED_TEST(IoKernels, EveryBadFileGivesParseErrorAtItsLine) {
+  typedef TypeParam K;
+  std::ifstream manifest(data_dir + "bad_inputs.txt");
+  ASSERT_TRUE(manifest.good());
+  std::string line;
+  int cases = 0;
+  while (std::getline(manifest, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream in(line);
+    std::string name;
+    std::size_t expected = 0;
+    ASSERT_TRUE(static_cast<bool>(in >> name >> expected)) << line;
+    const std::string file = data_dir + name;
+    expect_parse_error(
+        [&] {
+          const fair::io::Point_file<K> f = fair::io::read_point_file<K>(file);
+          fair::io::check_point_file(f, 2, false, "points");
+        },
+        file, expected);
+    ++cases;
+  }
+  EXPECT_GE(cases, 25);
+}
+
+TYPED_TEST(IoKernels, JsonRoundTripIsExact) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 Point_2;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1e6, 1e6);
+  std::vector<Point_2> points;
+  for (int i = 0; i < 50; ++i) points.push_back(Point_2(u(rng), std::ldexp(u(rng), -40)));
+  if (is_exact_kernel<K>()) {
+    // Values that are not doubles travel as exact "p/q" strings.
+    points.push_back(Point_2(FT(1) / FT(3), FT(-22) / FT(7)));
+  }
+  const nlohmann::json j = fair::io::points_to_json(points, true);
+  std::ostringstream text;
+  fair::io::write_json(text, j);
+  const fair::io::Point_file<K> back = fair::io::parse_points_json<K>(text.str(), "mem.json");
+  EXPECT_TRUE(back.closed);
+  ASSERT_EQ(back.points.size(), points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) EXPECT_TRUE(back.points[i] == points[i]) << i;
+
+  std::ostringstream csv;
+  std::vector<Point_2> doubles(points.begin(), points.begin() + 50);
+  fair::io::write_points_csv(csv, doubles);
+  const fair::io::Point_file<K> back_csv = fair::io::parse_points_csv<K>(csv.str(), "mem.csv");
+  EXPECT_EQ(back_csv.points, doubles);
+}
+
+// ------------------------------------------------------------------ malformed text in memory
+
+TEST(IoCsv, MalformedLinesInMemory) {
+  typedef SC_double K;
+  struct Case {
+    const char* text;
+    std::size_t line;
+  };
+  const Case cases[] = {
+      {"", 0},                          // empty
+      {"\n\n  \n", 0},                  // blank only
+      {"x,y\n", 0},                     // header only
+      {"x,y,z\n1,2\n", 1},              // header with three columns
+      {"1,2\n3\n", 2},                  // one field
+      {"1,2\n3,4,\n", 2},               // trailing comma: an empty third field
+      {"1,2\n,4\n", 2},                 // empty field
+      {"1,2\n3;4\n", 2},                // wrong separator
+      {"1,2\n3,4\n5,6 7\n", 3},         // trailing garbage
+      {"1,2\n3 4 5\n", 2},              // three whitespace-separated fields
+      {"1,2\nNaN,1\n", 2},              // NaN
+      {"1,2\n1,-INF\n", 2},             // infinity
+      {"1,2 # ok\n\n# c\n1e309,0\n", 4},// overflow after comments
+      {"1,2\n\x01,3\n", 2},             // control byte
+      {"x,1\n", 1},                     // not a header: one numeric field
+      {"nan,inf\n", 1},                 // NaN spellings are not column names
+  };
+  for (const Case& c : cases)
+    expect_parse_error([&] { fair::io::parse_points_csv<K>(c.text, "m.csv"); }, "m.csv", c.line);
+}
+
+TEST(IoJson, MalformedJsonInMemory) {
+  typedef SC_double K;
+  struct Case {
+    const char* text;
+    std::size_t line;
+  };
+  const Case cases[] = {
+      {"", 0},
+      {"  \n ", 0},
+      {"{\n\"points\": [[0, 0]\n", 2},            // unterminated array (end of file on line 2)
+      {"[[0,0],\n[1,1],\n]", 3},                  // trailing comma
+      {"[[0,0],\n[1]]", 2},                       // one coordinate
+      {"[[0,0],\n{\"x\": 1}]", 2},                // not a pair
+      {"[[0,0],\n[1, true]]", 2},                 // boolean coordinate
+      {"[[0,0],\n[1, null]]", 2},                 // null coordinate
+      {"[[0,0],\n[1, \"1/0\"]]", 2},              // zero denominator
+      {"[[0,0],\n[1, Infinity]]", 2},             // infinity
+      {"[[0,0],\n[1, -0x10]]", 2},                // hexadecimal
+      {"[[0,0],\n[1, 2]] x", 2},                  // trailing garbage
+      {"{\"points\": 3}", 1},                     // points not an array
+      {"3", 1},                                   // neither object nor array
+      {"{\"points\": [[0,0]],\n\"closed\": 1}", 2},  // closed not a boolean
+      {"{\"points\"\n [[0,0]]}", 2},              // missing ':'
+      {"{\"a\": \"\x01\"}", 1},                   // control character in a string
+      {"{\"a\": \"\\q\"}", 1},                    // bad escape
+      {"[\"unterminated]", 1},
+  };
+  for (const Case& c : cases)
+    expect_parse_error([&] { fair::io::parse_points_json<K>(c.text, "m.json"); }, "m.json", c.line);
+  // Deep nesting is refused, not a stack overflow.
+  std::string deep(100000, '[');
+  expect_parse_error([&] { fair::io::parse_points_json<K>(deep, "d.json"); }, "d.json", 1);
+  // Escapes and unknown members are fine.
+  const auto ok = fair::io::parse_points_json<K>(
+      "{\"name\": \"a\\\"b\\u00e9\", \"points\": [[1, 2], [\"3\", \"4.5\"]], \"extra\": {\"k\": [null]}}", "ok");
+  EXPECT_EQ(ok.points.size(), 2u);
+  EXPECT_EQ(ok.points[1], K::Point_2(3, 4.5));
+}
+
+TEST(IoFiles, MissingFileAndDirectory) {
+  const std::string missing = data_dir + "does_not_exist.csv";
+  const std::string msg = expect_parse_error([&] { fair::io::read_points<SC_double>(missing); }, missing, 0);
+  EXPECT_NE(msg.find("cannot open"), std::string::npos) << msg;
+  expect_parse_error([&] { fair::io::read_points<SC_double>(data_dir); }, data_dir, 0);
+}
+
+TEST(IoFiles, CheckPointFileNamesTheLineOfARepeatedPoint) {
+  typedef SC_double K;
+  const auto f = fair::io::parse_points_csv<K>("# c\n0,0\n\n1,0\n1,1\n0,0\n", "c.csv");
+  EXPECT_NO_THROW(fair::io::check_point_file(f, 4, false, "m"));
+  // Closed: the last point (line 6) and the first (line 2) coincide; the error names line 2.
+  const std::string msg = expect_parse_error([&] { fair::io::check_point_file(f, 3, true, "m"); }, "c.csv", 2);
+  EXPECT_NE(msg.find("line 6"), std::string::npos) << msg;
+  expect_parse_error([&] { fair::io::check_point_file(f, 5, false, "m"); }, "c.csv", 0);
+}
+
+// ------------------------------------------------------------------ writers
+
+// A rational quadratic piece in standard form, only for the writer test (the library's
+// Rational_quadratic_bezier_2 has its own tests).
+struct Weighted_piece {
+  typedef SC_double Kernel;
+  typedef double FT;
+  typedef Kernel::Point_2 Point_2;
+  std::vector<Point_2> cps;
+  double w;
+  std::vector<Point_2> control_points() const { return cps; }
+  double weight() const { return w; }
+};
+
+TEST(IoWriters, CurveJsonHasControlPointsWeightsAndExtras) {
+  typedef SC_double K;
+  typedef K::Point_2 P;
+  std::vector<fair::Bezier_2<K>> curve = {fair::Bezier_2<K>(std::vector<P>{P(0, 0), P(1, 2), P(3, 2), P(4, 0)}),
+                                          fair::Bezier_2<K>(std::vector<P>{P(4, 0), P(5, -2), P(7, 1)})};
+  nlohmann::json extra = {{"method", "test"}, {"parameters", {{"alpha", 0.5}}}};
+  const nlohmann::json j = fair::io::curve_to_json(curve, extra);
+  EXPECT_EQ(j["format"], "fair-curve");
+  ASSERT_EQ(j["pieces"].size(), 2u);
+  EXPECT_EQ(j["pieces"][0]["degree"], 3);
+  EXPECT_EQ(j["pieces"][1]["degree"], 2);
+  EXPECT_EQ(j["pieces"][1]["control_points"][2], nlohmann::json::array({7.0, 1.0}));
+  EXPECT_FALSE(j["pieces"][0].contains("weights"));
+  EXPECT_EQ(j["method"], "test");
+  EXPECT_EQ(j["parameters"]["alpha"], 0.5);
+  EXPECT_THROW(fair::io::curve_to_json(curve, nlohmann::json{{"pieces", 1}}), fair::Precondition_error);
+  EXPECT_THROW(fair::io::curve_to_json(curve, nlohmann::json::array()), fair::Precondition_error);
+
+  std::vector<Weighted_piece> conic = {Weighted_piece{{P(1, 0), P(1, 1), P(0, 1)}, std::sqrt(0.5)}};
+  const nlohmann::json c = fair::io::curve_to_json(conic);
+  EXPECT_EQ(c["pieces"][0]["weights"], nlohmann::json::array({1, std::sqrt(0.5), 1}));
+  // The written text reads back to the same double weight.
+  const nlohmann::json again = nlohmann::json::parse(c.dump());
+  EXPECT_EQ(again["pieces"][0]["weights"][1].get<double>(), std::sqrt(0.5));
+}
+
+TEST(IoWriters, NeverWriteNonFiniteNumbers) {
+  typedef SC_double K;
+  typedef K::Point_2 P;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(fair::io::points_to_json(std::vector<P>{P(0, 0), P(nan, 1)}), fair::Precondition_error);
+  std::ostringstream out;
+  EXPECT_THROW(fair::io::write_points_csv(out, std::vector<P>{P(inf, 0)}), fair::Precondition_error);
+  EXPECT_TRUE(out.str().empty());
+  std::vector<Weighted_piece> bad = {Weighted_piece{{P(1, 0), P(1, 1), P(0, 1)}, nan}};
+  EXPECT_THROW(fair::io::curve_to_json(bad), fair::Precondition_error);
+  nlohmann::json j = {{"a", {1.0, 2.0}}, {"b", {{"c", -inf}}}};
+  try {
+    fair::io::write_json(out, j);
+    FAIL() << "wrote a non-finite number";
+  } catch (const fair::Precondition_error& e) {
+    EXPECT_NE(std::string(e.what()).find("$.b.c"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(out.str().empty());
+  EXPECT_THROW(fair::io::write_json_file("/nonexistent-dir/x.json", nlohmann::json::object()), fair::Error);
+}
+
+} // namespace
