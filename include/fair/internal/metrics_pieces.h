@@ -1,0 +1,242 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// How the fairness metrics look inside a curve piece:
+//  - Piece_traits classifies a piece as polynomial Bezier (fair::Bezier_2), rational Bezier (any
+//    piece with control_points() and weights(): c = sum B_i w_i P_i / sum B_i w_i) or generic
+//    (only the CurvePiece_2 concept);
+//  - Piece_jet evaluates position and the first three derivatives in double, fast;
+//  - homogeneous_exact() gives the exact homogeneous form (X, Y, W) as Bernstein polynomials over
+//    an exact rational type, for certified root isolation.
+
+#ifndef FAIR_INTERNAL_METRICS_PIECES_H
+#define FAIR_INTERNAL_METRICS_PIECES_H
+
+#include <fair/Bernstein_polynomial.h>
+#include <fair/Bezier_2.h>
+#include <fair/Errors.h>
+
+#include <CGAL/Gmpq.h>
+#include <CGAL/Lazy_exact_nt.h>
+#include <CGAL/number_utils.h>
+
+#include <cmath>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace fair {
+namespace internal {
+
+// ---------------------------------------------------------------- exact rational conversion
+/// The exact rational type used to certify features of pieces with number type FT, and whether
+/// the conversion FT -> that type is exact (it is for double, Gmpq and Lazy_exact_nt).
+template <class FT>
+struct Exact_rational_of {
+  typedef CGAL::Gmpq Type;
+  static const bool exact = false;
+  static Type convert(const FT& x) { return Type(CGAL::to_double(x)); }
+};
+template <>
+struct Exact_rational_of<double> {
+  typedef CGAL::Gmpq Type;
+  static const bool exact = true; // every finite double is a dyadic rational
+  static Type convert(double x) { return Type(x); }
+};
+template <>
+struct Exact_rational_of<CGAL::Gmpq> {
+  typedef CGAL::Gmpq Type;
+  static const bool exact = true;
+  static const Type& convert(const CGAL::Gmpq& x) { return x; }
+};
+template <class ET>
+struct Exact_rational_of<CGAL::Lazy_exact_nt<ET>> {
+  typedef CGAL::Gmpq Type;
+  static const bool exact = true;
+  static Type convert(const CGAL::Lazy_exact_nt<ET>& x) { return Type(CGAL::exact(x)); }
+};
+
+// ---------------------------------------------------------------- classification
+template <class P, class = void>
+struct Has_weights : std::false_type {};
+template <class P>
+struct Has_weights<P, std::void_t<decltype(std::declval<const P&>().weights()),
+                                  decltype(std::declval<const P&>().control_points())>> : std::true_type {};
+
+template <class P>
+struct Is_bezier : std::false_type {};
+template <class K>
+struct Is_bezier<Bezier_2<K>> : std::true_type {};
+
+/// 0 = generic (concept only), 1 = polynomial Bezier, 2 = rational Bezier.
+template <class P>
+struct Piece_kind : std::integral_constant<int, Is_bezier<P>::value ? 1 : (Has_weights<P>::value ? 2 : 0)> {};
+
+/// Control points and weights of a Bernstein-form piece (weights all 1 for polynomial pieces).
+template <class P>
+void bernstein_form(const P& piece, std::vector<typename P::Point_2>& cp, std::vector<typename P::FT>& w) {
+  const auto& c = piece.control_points();
+  cp.assign(c.begin(), c.end());
+  if constexpr (Piece_kind<P>::value == 2) {
+    const auto& ws = piece.weights();
+    w.assign(ws.begin(), ws.end());
+    require(w.size() == cp.size(), "fairness metrics: a rational piece has ", cp.size(), " control points but ",
+            w.size(), " weights");
+  } else {
+    w.assign(cp.size(), typename P::FT(1));
+  }
+}
+
+// ---------------------------------------------------------------- double jets
+/// Position and derivatives 1..3 at one parameter, in double.
+struct Jet {
+  double x = 0, y = 0, x1 = 0, y1 = 0, x2 = 0, y2 = 0, x3 = 0, y3 = 0;
+  double speed() const { return std::sqrt(x1 * x1 + y1 * y1); }
+  /// Signed curvature (c' x c'') / |c'|^3.
+  double curvature() const {
+    const double s2 = x1 * x1 + y1 * y1;
+    return (x1 * y2 - y1 * x2) / (s2 * std::sqrt(s2));
+  }
+  /// d kappa / dt = (c' x c''') / |c'|^3 - 3 (c' x c'')(c'.c'') / |c'|^5.
+  double curvature_derivative() const {
+    const double s2 = x1 * x1 + y1 * y1, s = std::sqrt(s2);
+    return (x1 * y3 - y1 * x3) / (s2 * s) - 3 * (x1 * y2 - y1 * x2) * (x1 * x2 + y1 * y2) / (s2 * s2 * s);
+  }
+};
+
+/// A Bernstein polynomial in double with its derivative coefficient arrays, evaluated up to the
+/// third derivative by de Casteljau (backward stable).
+class Double_bernstein {
+public:
+  Double_bernstein() = default;
+  explicit Double_bernstein(std::vector<double> b) {
+    d_[0] = std::move(b);
+    for (int k = 1; k <= 3; ++k) {
+      const std::vector<double>& p = d_[k - 1];
+      const double n = double(p.size()) - 1;
+      if (p.size() <= 1) {
+        d_[k].assign(1, 0.0);
+        continue;
+      }
+      d_[k].resize(p.size() - 1);
+      for (std::size_t i = 0; i + 1 < p.size(); ++i) d_[k][i] = n * (p[i + 1] - p[i]);
+    }
+  }
+  void evaluate(double t, double* v, std::vector<double>& scratch) const {
+    for (int k = 0; k <= 3; ++k) v[k] = de_casteljau(d_[k], t, scratch);
+  }
+
+private:
+  static double de_casteljau(const std::vector<double>& b, double t, std::vector<double>& s) {
+    s.assign(b.begin(), b.end());
+    const double u = 1 - t;
+    for (std::size_t r = s.size() - 1; r > 0; --r)
+      for (std::size_t i = 0; i < r; ++i) s[i] = u * s[i] + t * s[i + 1];
+    return s[0];
+  }
+  std::vector<double> d_[4];
+};
+
+/// Evaluates Jets of one piece. Bernstein-form pieces are converted to double once; a generic piece
+/// is evaluated through its concept functions, with the third derivative by a central difference
+/// of second derivatives (step 1e-4: relative error about 1e-8 for smooth pieces).
+template <class P>
+class Piece_jet {
+public:
+  typedef typename P::FT FT;
+  explicit Piece_jet(const P& piece) : piece_(&piece) {
+    if constexpr (Piece_kind<P>::value != 0) {
+      std::vector<typename P::Point_2> cp;
+      std::vector<FT> w;
+      bernstein_form(piece, cp, w);
+      std::vector<double> X(cp.size()), Y(cp.size()), W(cp.size());
+      for (std::size_t i = 0; i < cp.size(); ++i) {
+        const double wi = CGAL::to_double(w[i]);
+        X[i] = wi * CGAL::to_double(cp[i].x());
+        Y[i] = wi * CGAL::to_double(cp[i].y());
+        W[i] = wi;
+      }
+      X_ = Double_bernstein(std::move(X));
+      Y_ = Double_bernstein(std::move(Y));
+      W_ = Double_bernstein(std::move(W));
+    }
+  }
+
+  Jet operator()(double t) const {
+    Jet j;
+    if constexpr (Piece_kind<P>::value != 0) {
+      double X[4], Y[4], W[4];
+      X_.evaluate(t, X, scratch_);
+      Y_.evaluate(t, Y, scratch_);
+      if constexpr (Piece_kind<P>::value == 1) {
+        j.x = X[0]; j.y = Y[0]; j.x1 = X[1]; j.y1 = Y[1]; j.x2 = X[2]; j.y2 = Y[2]; j.x3 = X[3]; j.y3 = Y[3];
+      } else {
+        W_.evaluate(t, W, scratch_);
+        // Quotient rule on c = (X, Y) / W:  W c^(k) = X^(k) - sum_{j<k} C(k,j) W^(k-j) c^(j).
+        const double iw = 1 / W[0];
+        j.x = X[0] * iw;
+        j.y = Y[0] * iw;
+        j.x1 = (X[1] - W[1] * j.x) * iw;
+        j.y1 = (Y[1] - W[1] * j.y) * iw;
+        j.x2 = (X[2] - 2 * W[1] * j.x1 - W[2] * j.x) * iw;
+        j.y2 = (Y[2] - 2 * W[1] * j.y1 - W[2] * j.y) * iw;
+        j.x3 = (X[3] - 3 * W[1] * j.x2 - 3 * W[2] * j.x1 - W[3] * j.x) * iw;
+        j.y3 = (Y[3] - 3 * W[1] * j.y2 - 3 * W[2] * j.y1 - W[3] * j.y) * iw;
+      }
+    } else {
+      const auto p = piece_->point(FT(t));
+      const auto d1 = piece_->derivative(FT(t));
+      const auto d2 = piece_->second_derivative(FT(t));
+      j.x = CGAL::to_double(p.x()); j.y = CGAL::to_double(p.y());
+      j.x1 = CGAL::to_double(d1.x()); j.y1 = CGAL::to_double(d1.y());
+      j.x2 = CGAL::to_double(d2.x()); j.y2 = CGAL::to_double(d2.y());
+      const double h = 1e-4;
+      const auto a = piece_->second_derivative(FT(t - h));
+      const auto b = piece_->second_derivative(FT(t + h));
+      j.x3 = (CGAL::to_double(b.x()) - CGAL::to_double(a.x())) / (2 * h);
+      j.y3 = (CGAL::to_double(b.y()) - CGAL::to_double(a.y())) / (2 * h);
+    }
+    return j;
+  }
+
+private:
+  const P* piece_;
+  Double_bernstein X_, Y_, W_;
+  mutable std::vector<double> scratch_;
+};
+
+// ---------------------------------------------------------------- exact homogeneous form
+/// The homogeneous form (X, Y, W) = (sum B_i w_i x_i, sum B_i w_i y_i, sum B_i w_i) of a
+/// Bernstein-form piece over the exact rational type ET (W = 1 of degree 0 for polynomial pieces).
+template <class ET>
+struct Homogeneous_form {
+  Bernstein_polynomial<ET> X, Y, W;
+  bool exact = true; // false if the conversion of some coordinate to ET was not exact
+};
+
+template <class P>
+Homogeneous_form<typename Exact_rational_of<typename P::FT>::Type> homogeneous_exact(const P& piece) {
+  typedef Exact_rational_of<typename P::FT> Conv;
+  typedef typename Conv::Type ET;
+  std::vector<typename P::Point_2> cp;
+  std::vector<typename P::FT> w;
+  bernstein_form(piece, cp, w);
+  std::vector<ET> X, Y, W;
+  for (std::size_t i = 0; i < cp.size(); ++i) {
+    const ET wi = Conv::convert(w[i]);
+    X.push_back(wi * ET(Conv::convert(cp[i].x())));
+    Y.push_back(wi * ET(Conv::convert(cp[i].y())));
+    W.push_back(wi);
+  }
+  Homogeneous_form<ET> h;
+  h.X = Bernstein_polynomial<ET>(X);
+  h.Y = Bernstein_polynomial<ET>(Y);
+  h.W = (Piece_kind<P>::value == 1) ? Bernstein_polynomial<ET>(std::vector<ET>(1, ET(1))) : Bernstein_polynomial<ET>(W);
+  h.exact = Conv::exact;
+  return h;
+}
+
+} // namespace internal
+} // namespace fair
+
+#endif // FAIR_INTERNAL_METRICS_PIECES_H
