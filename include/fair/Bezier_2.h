@@ -89,10 +89,12 @@ public:
   double curvature(double t) const {
     double d1x, d1y, d2x, d2y;
     derivatives_double(t, d1x, d1y, d2x, d2y);
-    const double speed2 = d1x * d1x + d1y * d1y;
-    internal::require(speed2 > 0 && std::isfinite(speed2), "Bezier_2::curvature: singular point at t = ", t,
+    const double speed = std::hypot(d1x, d1y);
+    internal::require(speed > 0 && std::isfinite(speed), "Bezier_2::curvature: singular point at t = ", t,
                       " (c'(t) = (", d1x, ", ", d1y, "))");
-    return (d1x * d2y - d1y * d2x) / (speed2 * std::sqrt(speed2));
+    // Normalise by the speed first so that huge or tiny coordinates neither overflow nor underflow.
+    const double ux = d1x / speed, uy = d1y / speed;
+    return (ux * (d2y / speed) - uy * (d2x / speed)) / speed;
   }
 
   /// c'(t) and c''(t) in double (fast path for sampling and quadrature).

@@ -91,16 +91,20 @@ void bernstein_form(const P& piece, std::vector<typename P::Point_2>& cp, std::v
 /// Position and derivatives 1..3 at one parameter, in double.
 struct Jet {
   double x = 0, y = 0, x1 = 0, y1 = 0, x2 = 0, y2 = 0, x3 = 0, y3 = 0;
-  double speed() const { return std::sqrt(x1 * x1 + y1 * y1); }
+  double speed() const { return std::hypot(x1, y1); }
+  // Both formulas divide by the speed s before multiplying, so that huge or tiny coordinates
+  // neither overflow nor underflow (u = c'/s is a unit vector).
   /// Signed curvature (c' x c'') / |c'|^3.
   double curvature() const {
-    const double s2 = x1 * x1 + y1 * y1;
-    return (x1 * y2 - y1 * x2) / (s2 * std::sqrt(s2));
+    const double s = speed(), ux = x1 / s, uy = y1 / s;
+    return (ux * (y2 / s) - uy * (x2 / s)) / s;
   }
   /// d kappa / dt = (c' x c''') / |c'|^3 - 3 (c' x c'')(c'.c'') / |c'|^5.
   double curvature_derivative() const {
-    const double s2 = x1 * x1 + y1 * y1, s = std::sqrt(s2);
-    return (x1 * y3 - y1 * x3) / (s2 * s) - 3 * (x1 * y2 - y1 * x2) * (x1 * x2 + y1 * y2) / (s2 * s2 * s);
+    const double s = speed(), ux = x1 / s, uy = y1 / s;
+    const double a = (ux * (y3 / s) - uy * (x3 / s)) / s;
+    const double b = (ux * (y2 / s) - uy * (x2 / s)), c = (ux * (x2 / s) + uy * (y2 / s));
+    return a - 3 * b * c / s;
   }
 };
 
