@@ -5,7 +5,10 @@
 // per sample the point, the unit normal, the signed curvature, the arc length from the start
 // of the curve, the piece index and the piece parameter.
 //
-// Accuracy. Points, normals and curvatures are the piece's own values rounded to double. Arc
+// Accuracy. Points, normals and curvatures are the piece's own values rounded to double (where
+// a piece's curvature() throws or overflows -- e.g. |c'|^2 beyond the double range for
+// coordinates near 1e300 -- the curvature is recomputed from c' and c'' with a scaling that
+// avoids overflow and underflow). Arc
 // length is integrated, not accumulated from chords: on each sampling interval the speed
 // |c'(t)| is integrated by adaptive 7-point Gauss-Legendre quadrature (exact for polynomial
 // integrands up to degree 13; the interval is bisected until the one-level and two-level
@@ -23,7 +26,9 @@
 
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstddef>
 #include <iterator>
 #include <vector>
@@ -111,7 +116,26 @@ double control_polygon_length(const Piece& piece) {
   return len;
 }
 
-/// Unit normal and curvature at t, with the one-sided limit at a singular parameter.
+/// Signed curvature from c' and c'' in double, scaled so that neither |c'|^3 nor the cross
+/// product overflows or underflows: with m = max(|x'|, |y'|), u = c'/m, v = c''/m,
+/// kappa = (u x v) / (m |u|^3). NaN when c' = 0 or a value is not finite.
+template <class Piece>
+double scaled_curvature(const Piece& piece, double t) {
+  typedef typename Piece::FT FT;
+  const auto d1 = piece.derivative(FT(t));
+  const auto d2 = piece.second_derivative(FT(t));
+  const double x1 = CGAL::to_double(d1.x()), y1 = CGAL::to_double(d1.y());
+  const double x2 = CGAL::to_double(d2.x()), y2 = CGAL::to_double(d2.y());
+  const double m = std::max(std::abs(x1), std::abs(y1));
+  if (!(m > 0) || !std::isfinite(m)) return std::numeric_limits<double>::quiet_NaN();
+  const double ux = x1 / m, uy = y1 / m, vx = x2 / m, vy = y2 / m;
+  const double u = std::hypot(ux, uy);
+  return (ux * vy - uy * vx) / (u * u * u) / m;
+}
+
+/// Unit normal and curvature at t, with the one-sided limit at a singular parameter. The
+/// piece's own curvature() is used; where it fails (it may overflow for coordinates near the
+/// ends of the double range), scaled_curvature() from the piece's derivatives.
 template <class Piece>
 void normal_and_curvature(const Piece& piece, std::size_t index, double t, double& nx, double& ny,
                           double& kappa) {
@@ -122,12 +146,12 @@ void normal_and_curvature(const Piece& piece, std::size_t index, double t, doubl
     speed_vector(piece, s, dx, dy);
     const double v = std::hypot(dx, dy);
     if (!(v > 0) || !std::isfinite(v)) continue;
-    double k;
+    double k = std::numeric_limits<double>::quiet_NaN();
     try {
       k = piece.curvature(s);
     } catch (const Precondition_error&) {
-      continue;
     }
+    if (!std::isfinite(k)) k = scaled_curvature(piece, s);
     if (!std::isfinite(k)) continue;
     nx = -dy / v;
     ny = dx / v;
