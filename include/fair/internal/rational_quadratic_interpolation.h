@@ -1,0 +1,318 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// Fast certified solver for the parameter of a curvature extremum of a rational quadratic
+// (Yan, Schiller, Schaefer, "Circle reproduction with interpolatory curves at local maximal
+// curvature points", eq. 7 and Appendix A). Given the end points P0, P2, the interpolated
+// point Q and the weight w > 0, the parameter t in (0,1) at which the standard-form rational
+// quadratic through P0, Q (at t), P2 has a curvature extremum at Q is the unique root in (0,1)
+// of the quartic
+//
+//   f(t) = -w A (1-t)^4 - (A+B) (1-t)^3 t + (B+C) (1-t) t^3 + w C t^4            (eq. 7)
+//
+//   A = |P0-Q|^2,  B = (P0-Q).(P2-Q),  C = |P2-Q|^2,
+//
+// whose Bernstein coefficients are (eq. A.1 with w0 = w2 = 1, w1 = w)
+//
+//   ( -w A,  -(A+B)/4,  0,  (B+C)/4,  w C ).
+//
+// Certificate (Appendix A carried out in code): A > 0 and C > 0 (P0 != Q != P2) and w > 0 give
+// b0 < 0 < b4; (A+B) + (B+C) = |v0+v2|^2 >= 0 (eq. A.2) forbids A+B < 0 and B+C < 0 together,
+// i.e. b1 > 0 > b3, so the coefficient signs have exactly one variation and,
+// by Descartes' rule of signs in the Bernstein basis, f has exactly one root in (0,1), simple.
+// The code does not trust the proof: it determines the four signs (by interval arithmetic, or
+// exactly with CGAL::Gmpq when the intervals cannot decide) and counts the variations.
+//
+// Root refinement: safeguarded Newton in double on the bracket [0,1], then certification of a
+// bracket [t_lower, t_upper] a few ulps wide by evaluating f in interval arithmetic
+// (CGAL::Interval_nt, outward rounding) on enclosures of the exact coefficients; when the
+// intervals cannot decide the sign, f is evaluated exactly (CGAL::Gmpq) at double points and the
+// bracket is bisected on the binary representation of doubles (at most 64 exact evaluations).
+//
+// Guarantee: for the exact values of the double inputs, f(t_lower) < 0 < f(t_upper), or
+// t_lower == t_upper is the exact root (f(t) == 0 exactly). Hence the exact root lies in
+// [t_lower, t_upper]; t is a double inside it. In the filtered path the bracket is usually
+// 2 to 8 ulps wide (relative accuracy ~1e-15 for well-conditioned inputs).
+
+#ifndef FAIR_INTERNAL_RATIONAL_QUADRATIC_INTERPOLATION_H
+#define FAIR_INTERNAL_RATIONAL_QUADRATIC_INTERPOLATION_H
+
+#include <fair/Errors.h>
+#include <fair/internal/rational_quadratic_exact.h>
+
+#include <CGAL/FPU.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Interval_nt.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+namespace fair {
+namespace internal {
+
+typedef CGAL::Interval_nt<false> Rq_interval;
+
+/// Result of the certified unique-root solver of eq. 7.
+struct Rational_quadratic_extremum_parameter {
+  double t = 0.5;       ///< double estimate of the root, t_lower <= t <= t_upper
+  double t_lower = 0;   ///< f(t_lower) < 0 exactly, or t_lower == t_upper == exact root
+  double t_upper = 1;   ///< f(t_upper) > 0 exactly, or t_lower == t_upper == exact root
+  int exact_evaluations = 0; ///< number of exact (Gmpq) sign evaluations the filter needed
+  int sign_variations = 1;   ///< the certified variation count of eq. A.1 (always 1)
+};
+
+/// Number of sign variations (zeros skipped) of the eq.-A.1 sign pattern
+/// (-sign(w A), -sign(A+B), 0, sign(B+C), sign(w C)), given the exact signs of its parts.
+inline int eq7_sign_variations(int sign_A, int sign_AB, int sign_BC, int sign_C, int sign_w) {
+  const int s[5] = {-sign_w * sign_A, -sign_AB, 0, sign_BC, sign_w * sign_C};
+  int last = 0, count = 0;
+  for (int x : s) {
+    if (x == 0) continue;
+    if (last != 0 && x != last) ++count;
+    last = x;
+  }
+  return count;
+}
+
+/// Exact Bernstein coefficients of eq. 7 (eq. A.1) from exact coordinates.
+inline std::array<CGAL::Gmpq, 5> eq7_coefficients_exact(const CGAL::Gmpq& p0x, const CGAL::Gmpq& p0y,
+                                                        const CGAL::Gmpq& qx, const CGAL::Gmpq& qy,
+                                                        const CGAL::Gmpq& p2x, const CGAL::Gmpq& p2y,
+                                                        const CGAL::Gmpq& w) {
+  const CGAL::Gmpq v0x = p0x - qx, v0y = p0y - qy, v2x = p2x - qx, v2y = p2y - qy;
+  const CGAL::Gmpq sx = v0x + v2x, sy = v0y + v2y;
+  const CGAL::Gmpq A = v0x * v0x + v0y * v0y, C = v2x * v2x + v2y * v2y;
+  const CGAL::Gmpq AB = v0x * sx + v0y * sy, BC = v2x * sx + v2y * sy; // A+B, B+C
+  const CGAL::Gmpq quarter(1, 4);
+  return {{-(w * A), -(AB * quarter), CGAL::Gmpq(0), BC * quarter, w * C}};
+}
+
+/// f(t) exactly, de Casteljau on Gmpq coefficients.
+inline CGAL::Sign quartic_sign_exact(const std::array<CGAL::Gmpq, 5>& b, double t) {
+  const CGAL::Gmpq tt(t), s = CGAL::Gmpq(1) - tt;
+  std::array<CGAL::Gmpq, 5> v = b;
+  for (int r = 1; r <= 4; ++r)
+    for (int i = 0; i + r <= 4; ++i) v[i] = s * v[i] + tt * v[i + 1];
+  return CGAL::sign(v[0]);
+}
+
+/// f(t) in interval arithmetic. The caller must hold a CGAL::Protect_FPU_rounding<true>.
+inline Rq_interval quartic_interval(const Rq_interval* b, double t) {
+  const Rq_interval tt(t), s = Rq_interval(1) - tt;
+  Rq_interval v[5] = {b[0], b[1], b[2], b[3], b[4]};
+  for (int r = 1; r <= 4; ++r)
+    for (int i = 0; i + r <= 4; ++i) v[i] = s * v[i] + tt * v[i + 1];
+  return v[0];
+}
+
+/// f(t) and f'(t) in double by de Casteljau (backward stable).
+inline void quartic_value_and_derivative(const double* c, double t, double& f, double& df) {
+  const double s = 1.0 - t;
+  double v[5] = {c[0], c[1], c[2], c[3], c[4]};
+  for (int r = 1; r <= 3; ++r)
+    for (int i = 0; i + r <= 4; ++i) v[i] = s * v[i] + t * v[i + 1];
+  df = 4.0 * (v[1] - v[0]);
+  f = s * v[0] + t * v[1];
+}
+
+/// Neighbouring doubles for t in [0,1] by stepping the bit pattern (monotone for t >= 0).
+inline double step_ulps(double t, std::int64_t k) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &t, sizeof bits);
+  std::int64_t b = static_cast<std::int64_t>(bits) + k;
+  if (b < 0) b = 0;
+  const std::uint64_t one_bits = 0x3FF0000000000000ULL; // 1.0
+  if (static_cast<std::uint64_t>(b) > one_bits) b = static_cast<std::int64_t>(one_bits);
+  bits = static_cast<std::uint64_t>(b);
+  double out;
+  std::memcpy(&out, &bits, sizeof out);
+  return out;
+}
+
+inline std::uint64_t double_bits(double t) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &t, sizeof bits);
+  return bits;
+}
+
+/// Certified root of a quartic in Bernstein form on [0,1] that is known to have a unique simple
+/// root in (0,1) with f(0) < 0 < f(1) (exactly one sign variation, b0 < 0 < b4).
+/// `b` encloses the exact coefficients; `exact_sign(t)` returns the exact sign of f at a double t.
+/// See the file comment for the guarantee.
+template <class Exact_sign>
+Rational_quadratic_extremum_parameter certified_unique_root_quartic(const Rq_interval* b,
+                                                                     Exact_sign exact_sign) {
+  Rational_quadratic_extremum_parameter out;
+  double c[5];
+  for (int i = 0; i < 5; ++i) c[i] = 0.5 * (b[i].inf() + b[i].sup());
+
+  // Safeguarded Newton on the bracket [lo, hi] with f(lo) < 0 < f(hi) (in double).
+  double lo = 0.0, hi = 1.0;
+  // Start from the root of the chord between the end values (regula falsi start).
+  double t = c[0] / (c[0] - c[4]);
+  if (!(t > 0.0 && t < 1.0)) t = 0.5;
+  for (int it = 0; it < 100; ++it) {
+    double f, df;
+    quartic_value_and_derivative(c, t, f, df);
+    if (f == 0.0) break;
+    if (f < 0.0) lo = t; else hi = t;
+    double next = t - f / df;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi); // Newton left the bracket: bisect
+    const double step = std::fabs(next - t);
+    t = next;
+    if (step <= 4.0 * std::numeric_limits<double>::epsilon() * t || hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi)
+      break;
+  }
+  out.t = t;
+
+  // Certify a bracket around t with interval evaluation, widening geometrically.
+  double cert_lo = 0.0, cert_hi = 1.0; // certified so far: f(0) < 0 < f(1)
+  bool lo_ok = false, hi_ok = false;
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    for (std::int64_t k = 2; k <= (std::int64_t(1) << 12) && !(lo_ok && hi_ok); k *= 8) {
+      if (!lo_ok) {
+        const double a = step_ulps(t, -k);
+        if (a <= 0.0) lo_ok = true;
+        else if (quartic_interval(b, a).sup() < 0.0) { cert_lo = a; lo_ok = true; }
+      }
+      if (!hi_ok) {
+        const double z = step_ulps(t, k);
+        if (z >= 1.0) hi_ok = true;
+        else if (quartic_interval(b, z).inf() > 0.0) { cert_hi = z; hi_ok = true; }
+      }
+    }
+  }
+  if (lo_ok && hi_ok) {
+    out.t_lower = cert_lo;
+    out.t_upper = cert_hi;
+    if (out.t < cert_lo || out.t > cert_hi) out.t = 0.5 * (cert_lo + cert_hi);
+    return out;
+  }
+
+  // Exact fallback: try the ulp neighbours of t, then bisect on the bit pattern.
+  for (std::int64_t k = 1; k <= 1024; k *= 32) {
+    const double a = step_ulps(t, -k), z = step_ulps(t, k);
+    if (a > cert_lo) {
+      ++out.exact_evaluations;
+      const CGAL::Sign s = exact_sign(a);
+      if (s == CGAL::ZERO) { out.t = out.t_lower = out.t_upper = a; return out; }
+      if (s == CGAL::NEGATIVE) cert_lo = a; else if (a < cert_hi) cert_hi = a;
+    }
+    if (z < cert_hi) {
+      ++out.exact_evaluations;
+      const CGAL::Sign s = exact_sign(z);
+      if (s == CGAL::ZERO) { out.t = out.t_lower = out.t_upper = z; return out; }
+      if (s == CGAL::POSITIVE) cert_hi = z; else if (z > cert_lo) cert_lo = z;
+    }
+    if (double_bits(cert_hi) - double_bits(cert_lo) <= 2 * static_cast<std::uint64_t>(k)) break;
+  }
+  for (int it = 0; it < 70 && double_bits(cert_hi) - double_bits(cert_lo) > 1; ++it) {
+    const std::uint64_t mb = double_bits(cert_lo) + (double_bits(cert_hi) - double_bits(cert_lo)) / 2;
+    double m;
+    std::memcpy(&m, &mb, sizeof m);
+    ++out.exact_evaluations;
+    const CGAL::Sign s = exact_sign(m);
+    if (s == CGAL::ZERO) { out.t = out.t_lower = out.t_upper = m; return out; }
+    if (s == CGAL::NEGATIVE) cert_lo = m; else cert_hi = m;
+  }
+  out.t_lower = cert_lo;
+  out.t_upper = cert_hi;
+  if (out.t < cert_lo || out.t > cert_hi) out.t = 0.5 * (cert_lo + cert_hi);
+  return out;
+}
+
+/// eq. 7 / Appendix A in double with interval filter and exact fallback; see the file comment.
+/// Inputs: P0 = (p0x, p0y), Q = (qx, qy), P2 = (p2x, p2y), weight w of P1.
+/// \throws Precondition_error if a value is not finite, w <= 0, P0 == Q or P2 == Q.
+inline Rational_quadratic_extremum_parameter
+rational_quadratic_extremum_parameter(double p0x, double p0y, double qx, double qy, double p2x,
+                                      double p2y, double w) {
+  const char* fn = "rational_quadratic_extremum_parameter (eq. 7)";
+  require(std::isfinite(p0x) && std::isfinite(p0y) && std::isfinite(qx) && std::isfinite(qy) &&
+              std::isfinite(p2x) && std::isfinite(p2y),
+          fn, ": non-finite input P0 = (", p0x, ", ", p0y, "), Q = (", qx, ", ", qy, "), P2 = (",
+          p2x, ", ", p2y, ")");
+  require(std::isfinite(w) && w > 0, fn, ": the weight must be finite and > 0, got w = ", w);
+  require(!(p0x == qx && p0y == qy), fn, ": P0 == Q = (", qx, ", ", qy, ")");
+  require(!(p2x == qx && p2y == qy), fn, ": P2 == Q = (", qx, ", ", qy, ")");
+
+  Rq_interval b[5];
+  int sA, sAB, sBC, sC;
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    const Rq_interval v0x = Rq_interval(p0x) - Rq_interval(qx), v0y = Rq_interval(p0y) - Rq_interval(qy);
+    const Rq_interval v2x = Rq_interval(p2x) - Rq_interval(qx), v2y = Rq_interval(p2y) - Rq_interval(qy);
+    const Rq_interval sx = v0x + v2x, sy = v0y + v2y;
+    const Rq_interval A = CGAL::square(v0x) + CGAL::square(v0y);
+    const Rq_interval C = CGAL::square(v2x) + CGAL::square(v2y);
+    const Rq_interval AB = v0x * sx + v0y * sy, BC = v2x * sx + v2y * sy;
+    const Rq_interval W(w);
+    b[0] = -(W * A);
+    b[1] = -(AB * 0.25);
+    b[2] = Rq_interval(0);
+    b[3] = BC * 0.25;
+    b[4] = W * C;
+    const CGAL::Uncertain<CGAL::Sign> uA = CGAL::sign(A), uAB = CGAL::sign(AB), uBC = CGAL::sign(BC),
+                                      uC = CGAL::sign(C);
+    sA = uA.is_certain() ? int(uA.make_certain()) : 2;
+    sAB = uAB.is_certain() ? int(uAB.make_certain()) : 2;
+    sBC = uBC.is_certain() ? int(uBC.make_certain()) : 2;
+    sC = uC.is_certain() ? int(uC.make_certain()) : 2;
+  }
+  // Exact coefficients, computed only when a sign is uncertain or the filter fails.
+  bool have_exact = false;
+  std::array<CGAL::Gmpq, 5> exact;
+  auto exact_coefficients = [&]() -> const std::array<CGAL::Gmpq, 5>& {
+    if (!have_exact) {
+      exact = eq7_coefficients_exact(CGAL::Gmpq(p0x), CGAL::Gmpq(p0y), CGAL::Gmpq(qx), CGAL::Gmpq(qy),
+                                     CGAL::Gmpq(p2x), CGAL::Gmpq(p2y), CGAL::Gmpq(w));
+      have_exact = true;
+    }
+    return exact;
+  };
+  int extra = 0;
+  if (sA == 2 || sAB == 2 || sBC == 2 || sC == 2) {
+    const std::array<CGAL::Gmpq, 5>& e = exact_coefficients();
+    // b0 = -wA, b1 = -(A+B)/4, b3 = (B+C)/4, b4 = wC with w > 0.
+    sA = -int(CGAL::sign(e[0]));
+    sAB = -int(CGAL::sign(e[1]));
+    sBC = int(CGAL::sign(e[3]));
+    sC = int(CGAL::sign(e[4]));
+    extra = 1;
+  }
+  const int variations = eq7_sign_variations(sA, sAB, sBC, sC, 1);
+  // Appendix A: exactly one variation. Anything else is a bug, never a property of the input.
+  require(variations == 1 && sA > 0 && sC > 0, fn,
+          ": internal error: eq. A.1 has ", variations, " sign variations (signs A ", sA, ", A+B ", sAB,
+          ", B+C ", sBC, ", C ", sC, ") for P0 = (", p0x, ", ", p0y, "), Q = (", qx, ", ", qy,
+          "), P2 = (", p2x, ", ", p2y, "), w = ", w);
+  // The enclosures of b0, b4 may straddle 0 (underflow) although the exact signs are certain;
+  // the root finder only needs valid enclosures and exact end signs, which hold.
+  Rational_quadratic_extremum_parameter out =
+    certified_unique_root_quartic(b, [&](double t) { return quartic_sign_exact(exact_coefficients(), t); });
+  out.exact_evaluations += extra;
+  out.sign_variations = variations;
+  return out;
+}
+
+/// eq. 6 in double, written relative to Q for accuracy: with s = 1 - t,
+///   P1 = Q - (s^2 (P0 - Q) + t^2 (P2 - Q)) / (2 s t w),
+/// which is eq. 6 rearranged with (1-t)^2 + 2(1-t)t w + t^2 - 2(1-t)t w = s^2 + t^2 (eq. 8).
+/// \throws Precondition_error unless 0 < t < 1 and w > 0 (finite).
+inline void rational_quadratic_middle_control_point(double p0x, double p0y, double qx, double qy,
+                                                    double p2x, double p2y, double w, double t,
+                                                    double& p1x, double& p1y) {
+  require(t > 0 && t < 1, "rational_quadratic_middle_control_point (eq. 6): t must be in (0,1), got ", t);
+  require(std::isfinite(w) && w > 0, "rational_quadratic_middle_control_point (eq. 6): w must be finite and > 0, got ", w);
+  const double s = 1.0 - t, d = 2.0 * s * t * w;
+  p1x = qx - (s * s * (p0x - qx) + t * t * (p2x - qx)) / d;
+  p1y = qy - (s * s * (p0y - qy) + t * t * (p2y - qy)) / d;
+}
+
+} // namespace internal
+} // namespace fair
+
+#endif // FAIR_INTERNAL_RATIONAL_QUADRATIC_INTERPOLATION_H
