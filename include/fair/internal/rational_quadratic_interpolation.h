@@ -48,6 +48,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <optional>
 
 namespace fair {
 namespace internal {
@@ -98,13 +99,13 @@ inline CGAL::Sign quartic_sign_exact(const std::array<CGAL::Gmpq, 5>& b, double 
   return CGAL::sign(v[0]);
 }
 
-/// f(t) in interval arithmetic. The caller must hold a CGAL::Protect_FPU_rounding<true>.
-inline Rq_interval quartic_interval(const Rq_interval* b, double t) {
+/// f(t) in interval arithmetic from the scaled coefficients bs = (b0, 4 b1, 6 b2, 4 b3, b4):
+/// f = b0 s^4 + 4 b1 s^3 t + 6 b2 s^2 t^2 + 4 b3 s t^3 + b4 t^4, s = 1 - t (14 interval products,
+/// fewer than de Casteljau's 20). The caller must hold a CGAL::Protect_FPU_rounding<true>.
+inline Rq_interval quartic_interval(const Rq_interval* bs, double t) {
   const Rq_interval tt(t), s = Rq_interval(1) - tt;
-  Rq_interval v[5] = {b[0], b[1], b[2], b[3], b[4]};
-  for (int r = 1; r <= 4; ++r)
-    for (int i = 0; i + r <= 4; ++i) v[i] = s * v[i] + tt * v[i + 1];
-  return v[0];
+  const Rq_interval s2 = s * s, t2 = tt * tt;
+  return bs[0] * (s2 * s2) + bs[1] * (s2 * s * tt) + bs[2] * (s2 * t2) + bs[3] * (s * t2 * tt) + bs[4] * (t2 * t2);
 }
 
 /// f(t) and f'(t) in double by de Casteljau (backward stable).
@@ -137,20 +138,22 @@ inline std::uint64_t double_bits(double t) {
   return bits;
 }
 
-/// Certified root of a quartic in Bernstein form on [0,1] that is known to have a unique simple
-/// root in (0,1) with f(0) < 0 < f(1) (exactly one sign variation, b0 < 0 < b4).
-/// `b` encloses the exact coefficients; `exact_sign(t)` returns the exact sign of f at a double t.
-/// See the file comment for the guarantee.
-template <class Exact_sign>
-Rational_quadratic_extremum_parameter certified_unique_root_quartic(const Rq_interval* b,
-                                                                     Exact_sign exact_sign) {
-  Rational_quadratic_extremum_parameter out;
+/// Filtered stage of the certified unique root of a quartic in Bernstein form on [0,1] known to
+/// have a unique simple root in (0,1) with f(0) < 0 < f(1) (one sign variation, b0 < 0 < b4).
+/// `b` encloses the exact coefficients. Safeguarded Newton in double, then a bracket of a few
+/// ulps certified by interval evaluation. Returns true when both ends are certified; otherwise
+/// [cert_lo, cert_hi] is the part certified so far and out.t the Newton estimate.
+/// The caller must hold a CGAL::Protect_FPU_rounding<true> (Newton then runs rounding upward,
+/// which only perturbs the estimate, never the certificate).
+inline bool filtered_unique_root_quartic(const Rq_interval* b, Rational_quadratic_extremum_parameter& out,
+                                         double& cert_lo, double& cert_hi) {
   double c[5];
   for (int i = 0; i < 5; ++i) c[i] = 0.5 * (b[i].inf() + b[i].sup());
+  const Rq_interval bs[5] = {b[0], b[1] * 4.0, b[2] * 6.0, b[3] * 4.0, b[4]};
 
-  // Safeguarded Newton on the bracket [lo, hi] with f(lo) < 0 < f(hi) (in double).
+  // Safeguarded Newton on the bracket [lo, hi] with f(lo) < 0 < f(hi) (in double), started at
+  // the crossing of the chord between the end values (regula falsi start).
   double lo = 0.0, hi = 1.0;
-  // Start from the root of the chord between the end values (regula falsi start).
   double t = c[0] / (c[0] - c[4]);
   if (!(t > 0.0 && t < 1.0)) t = 0.5;
   for (int it = 0; it < 100; ++it) {
@@ -159,53 +162,59 @@ Rational_quadratic_extremum_parameter certified_unique_root_quartic(const Rq_int
     if (f == 0.0) break;
     if (f < 0.0) lo = t; else hi = t;
     double next = t - f / df;
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi); // Newton left the bracket: bisect
+    if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi); // Newton left the bracket: bisect
     const double step = std::fabs(next - t);
     t = next;
-    if (step <= 4.0 * std::numeric_limits<double>::epsilon() * t || hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi)
+    if (step <= 2.0 * std::numeric_limits<double>::epsilon() * t || hi - lo <= 2.0 * std::numeric_limits<double>::epsilon() * hi)
       break;
   }
   out.t = t;
 
   // Certify a bracket around t with interval evaluation, widening geometrically.
-  double cert_lo = 0.0, cert_hi = 1.0; // certified so far: f(0) < 0 < f(1)
+  cert_lo = 0.0;
+  cert_hi = 1.0; // certified so far: f(0) < 0 < f(1)
   bool lo_ok = false, hi_ok = false;
-  {
-    CGAL::Protect_FPU_rounding<true> guard;
-    for (std::int64_t k = 2; k <= (std::int64_t(1) << 12) && !(lo_ok && hi_ok); k *= 8) {
-      if (!lo_ok) {
-        const double a = step_ulps(t, -k);
-        if (a <= 0.0) lo_ok = true;
-        else if (quartic_interval(b, a).sup() < 0.0) { cert_lo = a; lo_ok = true; }
-      }
-      if (!hi_ok) {
-        const double z = step_ulps(t, k);
-        if (z >= 1.0) hi_ok = true;
-        else if (quartic_interval(b, z).inf() > 0.0) { cert_hi = z; hi_ok = true; }
-      }
+  for (std::int64_t k = 2; k <= (std::int64_t(1) << 12) && !(lo_ok && hi_ok); k *= 8) {
+    if (!lo_ok) {
+      const double a = step_ulps(t, -k);
+      if (a <= 0.0) lo_ok = true;
+      else if (quartic_interval(bs, a).sup() < 0.0) { cert_lo = a; lo_ok = true; }
+    }
+    if (!hi_ok) {
+      const double z = step_ulps(t, k);
+      if (z >= 1.0) hi_ok = true;
+      else if (quartic_interval(bs, z).inf() > 0.0) { cert_hi = z; hi_ok = true; }
     }
   }
   if (lo_ok && hi_ok) {
     out.t_lower = cert_lo;
     out.t_upper = cert_hi;
     if (out.t < cert_lo || out.t > cert_hi) out.t = 0.5 * (cert_lo + cert_hi);
-    return out;
+    return true;
   }
+  return false;
+}
 
-  // Exact fallback: try the ulp neighbours of t, then bisect on the bit pattern.
+/// Exact stage: shrinks [cert_lo, cert_hi] (f(cert_lo) < 0 < f(cert_hi) exactly) around the
+/// estimate out.t with exact signs `exact_sign(t)`, first at ulp neighbours of the estimate,
+/// then by bisection of the binary representation (at most ~64 evaluations).
+template <class Exact_sign>
+void exact_unique_root_quartic(Exact_sign exact_sign, Rational_quadratic_extremum_parameter& out, double cert_lo,
+                               double cert_hi) {
+  const double t = out.t;
   for (std::int64_t k = 1; k <= 1024; k *= 32) {
     const double a = step_ulps(t, -k), z = step_ulps(t, k);
-    if (a > cert_lo) {
+    if (a > cert_lo && a < cert_hi) {
       ++out.exact_evaluations;
       const CGAL::Sign s = exact_sign(a);
-      if (s == CGAL::ZERO) { out.t = out.t_lower = out.t_upper = a; return out; }
-      if (s == CGAL::NEGATIVE) cert_lo = a; else if (a < cert_hi) cert_hi = a;
+      if (s == CGAL::ZERO) { out.t = out.t_lower = out.t_upper = a; return; }
+      if (s == CGAL::NEGATIVE) cert_lo = a; else cert_hi = a;
     }
-    if (z < cert_hi) {
+    if (z > cert_lo && z < cert_hi) {
       ++out.exact_evaluations;
       const CGAL::Sign s = exact_sign(z);
-      if (s == CGAL::ZERO) { out.t = out.t_lower = out.t_upper = z; return out; }
-      if (s == CGAL::POSITIVE) cert_hi = z; else if (z > cert_lo) cert_lo = z;
+      if (s == CGAL::ZERO) { out.t = out.t_lower = out.t_upper = z; return; }
+      if (s == CGAL::POSITIVE) cert_hi = z; else cert_lo = z;
     }
     if (double_bits(cert_hi) - double_bits(cert_lo) <= 2 * static_cast<std::uint64_t>(k)) break;
   }
@@ -215,12 +224,28 @@ Rational_quadratic_extremum_parameter certified_unique_root_quartic(const Rq_int
     std::memcpy(&m, &mb, sizeof m);
     ++out.exact_evaluations;
     const CGAL::Sign s = exact_sign(m);
-    if (s == CGAL::ZERO) { out.t = out.t_lower = out.t_upper = m; return out; }
+    if (s == CGAL::ZERO) { out.t = out.t_lower = out.t_upper = m; return; }
     if (s == CGAL::NEGATIVE) cert_lo = m; else cert_hi = m;
   }
   out.t_lower = cert_lo;
   out.t_upper = cert_hi;
   if (out.t < cert_lo || out.t > cert_hi) out.t = 0.5 * (cert_lo + cert_hi);
+}
+
+/// Certified root of a quartic in Bernstein form on [0,1] that is known to have a unique simple
+/// root in (0,1) with f(0) < 0 < f(1): the filtered stage, then the exact stage if needed.
+/// `b` encloses the exact coefficients; `exact_sign(t)` returns the exact sign of f at a double t.
+/// See the file comment for the guarantee.
+template <class Exact_sign>
+Rational_quadratic_extremum_parameter certified_unique_root_quartic(const Rq_interval* b, Exact_sign exact_sign) {
+  Rational_quadratic_extremum_parameter out;
+  double lo, hi;
+  bool done;
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    done = filtered_unique_root_quartic(b, out, lo, hi);
+  }
+  if (!done) exact_unique_root_quartic(exact_sign, out, lo, hi);
   return out;
 }
 
@@ -241,6 +266,9 @@ rational_quadratic_extremum_parameter(double p0x, double p0y, double qx, double 
 
   Rq_interval b[5];
   int sA, sAB, sBC, sC;
+  Rational_quadratic_extremum_parameter out;
+  double lo = 0, hi = 1;
+  bool done = false;
   {
     CGAL::Protect_FPU_rounding<true> guard;
     const Rq_interval v0x = Rq_interval(p0x) - Rq_interval(qx), v0y = Rq_interval(p0y) - Rq_interval(qy);
@@ -261,17 +289,17 @@ rational_quadratic_extremum_parameter(double p0x, double p0y, double qx, double 
     sAB = uAB.is_certain() ? int(uAB.make_certain()) : 2;
     sBC = uBC.is_certain() ? int(uBC.make_certain()) : 2;
     sC = uC.is_certain() ? int(uC.make_certain()) : 2;
+    // Root filter, valid as soon as the end signs b0 < 0 < b4 are certain (the variation count
+    // is certified below, exactly if need be, before the result is returned).
+    if (sA == 1 && sC == 1) done = filtered_unique_root_quartic(b, out, lo, hi);
   }
   // Exact coefficients, computed only when a sign is uncertain or the filter fails.
-  bool have_exact = false;
-  std::array<CGAL::Gmpq, 5> exact;
+  std::optional<std::array<CGAL::Gmpq, 5>> exact; // Gmpq construction allocates: only on demand
   auto exact_coefficients = [&]() -> const std::array<CGAL::Gmpq, 5>& {
-    if (!have_exact) {
-      exact = eq7_coefficients_exact(CGAL::Gmpq(p0x), CGAL::Gmpq(p0y), CGAL::Gmpq(qx), CGAL::Gmpq(qy),
-                                     CGAL::Gmpq(p2x), CGAL::Gmpq(p2y), CGAL::Gmpq(w));
-      have_exact = true;
-    }
-    return exact;
+    if (!exact)
+      exact.emplace(eq7_coefficients_exact(CGAL::Gmpq(p0x), CGAL::Gmpq(p0y), CGAL::Gmpq(qx), CGAL::Gmpq(qy),
+                                           CGAL::Gmpq(p2x), CGAL::Gmpq(p2y), CGAL::Gmpq(w)));
+    return *exact;
   };
   int extra = 0;
   if (sA == 2 || sAB == 2 || sBC == 2 || sC == 2) {
@@ -289,10 +317,11 @@ rational_quadratic_extremum_parameter(double p0x, double p0y, double qx, double 
           ": internal error: eq. A.1 has ", variations, " sign variations (signs A ", sA, ", A+B ", sAB,
           ", B+C ", sBC, ", C ", sC, ") for P0 = (", p0x, ", ", p0y, "), Q = (", qx, ", ", qy,
           "), P2 = (", p2x, ", ", p2y, "), w = ", w);
-  // The enclosures of b0, b4 may straddle 0 (underflow) although the exact signs are certain;
-  // the root finder only needs valid enclosures and exact end signs, which hold.
-  Rational_quadratic_extremum_parameter out =
-    certified_unique_root_quartic(b, [&](double t) { return quartic_sign_exact(exact_coefficients(), t); });
+  if (!done) {
+    // The enclosures of b0, b4 may straddle 0 (underflow) although the exact signs are certain.
+    if (lo == 0 && hi == 1 && !(out.t > 0 && out.t < 1)) out.t = 0.5;
+    exact_unique_root_quartic([&](double t) { return quartic_sign_exact(exact_coefficients(), t); }, out, lo, hi);
+  }
   out.exact_evaluations += extra;
   out.sign_variations = variations;
   return out;

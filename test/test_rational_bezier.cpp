@@ -1,0 +1,196 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// Tests of fair::Rational_bezier_2 (any degree, homogeneous Bernstein evaluation), typed over
+// the four kernels: consistency with the closed forms of Rational_quadratic_bezier_2 and with
+// the polynomial fair::Bezier_2, exact homogeneous subdivision, curvature, degenerate input.
+
+#include <fair/Bezier_2.h>
+#include <fair/Rational_bezier_2.h>
+#include <fair/Rational_quadratic_bezier_2.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <type_traits>
+#include <vector>
+
+namespace {
+
+template <class K>
+constexpr bool is_exact() {
+  return !std::is_floating_point<typename K::FT>::value;
+}
+
+template <class K>
+typename K::FT q(int n, int d = 1) {
+  return typename K::FT(n) / typename K::FT(d);
+}
+
+template <class K>
+::testing::AssertionResult same(const typename K::FT& a, const typename K::FT& b, double rel = 1e-13) {
+  const double x = CGAL::to_double(a), y = CGAL::to_double(b);
+  if (is_exact<K>()) {
+    if (a == b) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << x << " != " << y << " (exact)";
+  }
+  if (std::fabs(x - y) <= rel * (1.0 + std::fabs(y))) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << x << " vs " << y;
+}
+
+template <class K>
+::testing::AssertionResult same_vector(const typename K::Vector_2& a, const typename K::Vector_2& b, double rel = 1e-13) {
+  ::testing::AssertionResult x = same<K>(a.x(), b.x(), rel);
+  if (!x) return x;
+  return same<K>(a.y(), b.y(), rel);
+}
+
+template <class K>
+class Rational_bezier_test : public ::testing::Test {};
+
+typedef ::testing::Types<CGAL::Simple_cartesian<double>, CGAL::Epick, CGAL::Epeck, CGAL::Simple_cartesian<CGAL::Gmpq>>
+  Kernels;
+TYPED_TEST_SUITE(Rational_bezier_test, Kernels);
+
+// The general homogeneous evaluation (quotient rule on Bernstein polynomials) and the closed
+// forms of the conic class are independent derivations: they agree EXACTLY in exact kernels.
+TYPED_TEST(Rational_bezier_test, MatchesRationalQuadraticClosedForms) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<int> c(-30, 30), wn(1, 40);
+  int tested = 0;
+  while (tested < 20) {
+    const P p0(q<K>(c(rng), 7), q<K>(c(rng), 3)), p1(q<K>(c(rng), 5), q<K>(c(rng), 2)), p2(q<K>(c(rng), 9), q<K>(c(rng), 4));
+    if (CGAL::orientation(p0, p1, p2) == CGAL::COLLINEAR || p0 == p2) continue;
+    ++tested;
+    const fair::Rational_quadratic_bezier_2<K> rq(p0, p1, p2, q<K>(wn(rng), 16));
+    const fair::Rational_bezier_2<K> rb(rq);
+    EXPECT_EQ(rb.degree(), 2u);
+    EXPECT_FALSE(rb.is_polynomial() && rq.weight() != FT(1));
+    for (int i = 0; i <= 8; ++i) {
+      const FT t = q<K>(i, 8);
+      EXPECT_TRUE(same<K>(rb.point(t).x(), rq.point(t).x()));
+      EXPECT_TRUE(same<K>(rb.point(t).y(), rq.point(t).y()));
+      EXPECT_TRUE(same_vector<K>(rb.derivative(t), rq.derivative(t)));
+      EXPECT_TRUE(same_vector<K>(rb.second_derivative(t), rq.second_derivative(t), 1e-12));
+      EXPECT_TRUE(same<K>(rb.squared_curvature(t), rq.squared_curvature(t), 1e-12));
+      EXPECT_NEAR(rb.curvature(i / 8.0), rq.curvature(i / 8.0), 1e-12 * (1 + std::fabs(rq.curvature(i / 8.0))));
+    }
+  }
+}
+
+// Unit weights: the polynomial Bezier curve (checked against fair::Bezier_2, any degree).
+TYPED_TEST(Rational_bezier_test, UnitWeightsArePolynomialBezier) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> c(-20, 20);
+  for (std::size_t n : {1u, 3u, 5u}) {
+    std::vector<P> cp;
+    for (std::size_t i = 0; i <= n; ++i) cp.push_back(P(q<K>(c(rng), 3), q<K>(c(rng), 5)));
+    const fair::Rational_bezier_2<K> rb(cp);
+    const fair::Bezier_2<K> b(cp);
+    EXPECT_TRUE(rb.is_polynomial());
+    // Equal (non-unit) weights give the same curve.
+    const fair::Rational_bezier_2<K> rb3(cp, std::vector<FT>(n + 1, q<K>(3, 7)));
+    for (int i = 0; i <= 6; ++i) {
+      const FT t = q<K>(i, 6);
+      EXPECT_TRUE(same<K>(rb.point(t).x(), b.point(t).x()));
+      EXPECT_TRUE(same<K>(rb.point(t).y(), b.point(t).y()));
+      EXPECT_TRUE(same_vector<K>(rb.derivative(t), b.derivative(t)));
+      EXPECT_TRUE(same_vector<K>(rb.second_derivative(t), b.second_derivative(t)));
+      EXPECT_TRUE(same<K>(rb3.point(t).x(), b.point(t).x()));
+      EXPECT_TRUE(same_vector<K>(rb3.second_derivative(t), b.second_derivative(t)));
+    }
+  }
+}
+
+// Homogeneous de Casteljau split: exact, parametrisation-preserving, weights stay positive.
+TYPED_TEST(Rational_bezier_test, SplitIsExact) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  const std::vector<P> cp = {P(0, 0), P(1, 3), P(4, 4), P(6, -1), P(8, 2)};
+  const std::vector<FT> w = {q<K>(1), q<K>(3, 2), q<K>(1, 4), q<K>(5), q<K>(2, 3)};
+  const fair::Rational_bezier_2<K> c(cp, w);
+  for (const FT& s : {q<K>(1, 3), q<K>(5, 8)}) {
+    const auto parts = c.split(s);
+    for (const FT& x : parts.first.weights()) EXPECT_GT(CGAL::to_double(x), 0.0);
+    for (int i = 0; i <= 5; ++i) {
+      const FT u = q<K>(i, 5);
+      const P a = parts.first.point(u), b = c.point(s * u);
+      const P d = parts.second.point(u), e = c.point(s + (FT(1) - s) * u);
+      EXPECT_TRUE(same<K>(a.x(), b.x()) && same<K>(a.y(), b.y()));
+      EXPECT_TRUE(same<K>(d.x(), e.x()) && same<K>(d.y(), e.y()));
+      // Chain rule: left'(u) = s c'(s u).
+      EXPECT_TRUE(same_vector<K>(parts.first.derivative(u), c.derivative(s * u) * s, 1e-12));
+    }
+  }
+  // Reversal.
+  const fair::Rational_bezier_2<K> r = c.reversed();
+  for (int i = 0; i <= 4; ++i) {
+    const FT t = q<K>(i, 4);
+    EXPECT_TRUE(same<K>(r.point(t).x(), c.point(FT(1) - t).x()));
+    EXPECT_TRUE(same_vector<K>(r.derivative(t), -c.derivative(FT(1) - t)));
+  }
+  EXPECT_THROW(c.split(FT(0)), fair::Precondition_error);
+  EXPECT_THROW(c.split(FT(1)), fair::Precondition_error);
+}
+
+// A full circle quadrant as a rational cubic (the degree-elevated quarter circle of weight
+// sqrt(2)/2 is irrational; the cubic below with weights 1, 1/3, 1/3, 1 is exact): its points
+// are on the unit circle, and the curvature is 1 in double.
+TYPED_TEST(Rational_bezier_test, RationalCubicCircle) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  // Semicircle through (1,0), (0,1), (-1,0): control points (1,0), (1,2), (-1,2), (-1,0),
+  // weights (1, 1/3, 1/3, 1).
+  const fair::Rational_bezier_2<K> c({P(1, 0), P(1, 2), P(-1, 2), P(-1, 0)}, {FT(1), q<K>(1, 3), q<K>(1, 3), FT(1)});
+  for (int i = 0; i <= 10; ++i) {
+    const P p = c.point(q<K>(i, 10));
+    EXPECT_TRUE(same<K>(p.x() * p.x() + p.y() * p.y(), FT(1)));
+    EXPECT_TRUE(same<K>(c.squared_curvature(q<K>(i, 10)), FT(1), 1e-12));
+    EXPECT_NEAR(c.curvature(i / 10.0), 1.0, 1e-13);
+  }
+  EXPECT_TRUE(same<K>(c.point(q<K>(1, 2)).y(), FT(1)));
+}
+
+TYPED_TEST(Rational_bezier_test, BadInputThrows) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  typedef fair::Rational_bezier_2<K> Rb;
+  EXPECT_THROW(Rb(std::vector<P>{}), fair::Precondition_error);
+  EXPECT_THROW(Rb({P(0, 0), P(1, 1)}, {FT(1)}), fair::Precondition_error);
+  EXPECT_THROW(Rb({P(0, 0), P(1, 1)}, {FT(1), FT(0)}), fair::Precondition_error);
+  EXPECT_THROW(Rb({P(0, 0), P(1, 1)}, {FT(-1), FT(1)}), fair::Precondition_error);
+  if (!is_exact<K>()) {
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    EXPECT_THROW(Rb({P(0, 0), P(1, 1)}, {FT(1), FT(nan)}), fair::Precondition_error);
+    EXPECT_THROW(Rb({P(0, 0), P(1, 1)}, {FT(inf), FT(1)}), fair::Precondition_error);
+    EXPECT_THROW(Rb({P(0, nan), P(1, 1)}), fair::Precondition_error);
+  }
+  const Rb c({P(0, 0), P(0, 0), P(1, 1), P(2, 0)}, {FT(1), FT(2), FT(1), FT(1)}); // c'(0) = 0: cusp
+  EXPECT_THROW(c.curvature(0.0), fair::Precondition_error);
+  EXPECT_THROW(c.squared_curvature(FT(0)), fair::Precondition_error);
+  EXPECT_NO_THROW(c.curvature(0.5));
+  EXPECT_THROW(c.point(FT(2)), fair::Precondition_error);
+  EXPECT_THROW(c.curvature(-0.1), fair::Precondition_error);
+  EXPECT_THROW(c.control_point(4), fair::Precondition_error);
+  EXPECT_THROW(c.weight(4), fair::Precondition_error);
+  const Rb point({P(3, 4)});
+  EXPECT_TRUE(point.point(q<K>(1, 2)) == P(3, 4));
+  EXPECT_THROW(point.curvature(0.5), fair::Precondition_error);
+}
+
+} // namespace
