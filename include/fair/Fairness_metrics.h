@@ -335,24 +335,31 @@ inline double directed_polyline_distance(const std::vector<std::pair<double, dou
     for (long i = i0; i <= i1; ++i)
       for (long j = j0; j <= j1; ++j) grid[std::size_t(j * nx + i)].push_back(s);
   }
+  // The nonempty cells; for each query they are visited in increasing order of their distance to
+  // the query point, stopping as soon as that lower bound exceeds the best distance found: exact
+  // (the true minimum over all segments) and O(C log C) per query for C nonempty cells.
+  std::vector<long> cells;
+  for (long c = 0; c < nx * ny; ++c)
+    if (!grid[std::size_t(c)].empty()) cells.push_back(c);
+  std::vector<std::pair<double, long>> order(cells.size());
   double result = 0;
   for (const auto& p : a) {
-    // Distance from p to the grid box, then rings of cells around p's (clamped) cell.
-    const long pi = cx(p.first), pj = cy(p.second);
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      const long i = cells[k] % nx, j = cells[k] / nx;
+      const double x0 = xmin + double(i) * cell, y0 = ymin + double(j) * cell;
+      const double dx = std::max({0.0, x0 - p.first, p.first - (x0 + cell)});
+      const double dy = std::max({0.0, y0 - p.second, p.second - (y0 + cell)});
+      order[k] = std::make_pair(std::hypot(dx, dy), cells[k]);
+    }
+    std::sort(order.begin(), order.end());
     double best = std::numeric_limits<double>::infinity();
-    for (long r = 0;; ++r) {
-      // Rings 0..r-1 are done; every other cell is at least (r-1) cells away from p (also when p
-      // lies outside the grid and its cell index was clamped).
-      if (r > 0 && best <= double(r - 1) * cell) break;
-      if (r > nx + ny + 2) break;
-      for (long i = pi - r; i <= pi + r; ++i)
-        for (long j = pj - r; j <= pj + r; ++j) {
-          if (std::max(std::labs(i - pi), std::labs(j - pj)) != r) continue;
-          if (i < 0 || j < 0 || i >= nx || j >= ny) continue;
-          for (std::size_t s : grid[std::size_t(j * nx + i)])
-            best = std::min(best, point_segment_distance(p.first, p.second, b[s].first, b[s].second, b[s + 1].first,
-                                                         b[s + 1].second));
-        }
+    for (const auto& o : order) {
+      // Segments are registered in every cell their bounding box meets (the last cells are clamped
+      // to include the box edges), so the cell's lower bound holds for the segment parts inside it.
+      if (o.first > best) break;
+      for (std::size_t s : grid[std::size_t(o.second)])
+        best = std::min(best, point_segment_distance(p.first, p.second, b[s].first, b[s].second, b[s + 1].first,
+                                                     b[s + 1].second));
     }
     result = std::max(result, best);
   }

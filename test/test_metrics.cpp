@@ -1,0 +1,329 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// Tests of the fairness metrics (include/fair/Fairness_metrics.h): closed forms (circle arc,
+// parabola, cubic y = x^3), certified feature counts in exact arithmetic, random property tests,
+// the rational and generic piece paths, quadrature caps and bad input.
+
+#include <fair/Bezier_2.h>
+#include <fair/Fairness_metrics.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Simple_cartesian<double> Kd;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+typedef CGAL::Simple_cartesian<CGAL::Gmpq> Kq;
+
+// A rational Bezier piece private to this test (control_points() + weights() is what the metrics
+// look for), so that the rational path is tested independently of the library's rational types.
+template <class K>
+struct Test_rational_piece {
+  typedef K Kernel;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 Point_2;
+  typedef typename K::Vector_2 Vector_2;
+  std::vector<Point_2> cp;
+  std::vector<FT> w;
+  const std::vector<Point_2>& control_points() const { return cp; }
+  const std::vector<FT>& weights() const { return w; }
+};
+
+// A circular arc of radius r about the origin, from angle -phi to phi with cos(phi) = 3/5:
+// the rational quadratic with middle weight cos(phi) (all data rational).
+template <class K>
+Test_rational_piece<K> circle_arc(int r) {
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  Test_rational_piece<K> a;
+  a.cp = {P(FT(3 * r) / FT(5), FT(-4 * r) / FT(5)), P(FT(5 * r) / FT(3), FT(0)), P(FT(3 * r) / FT(5), FT(4 * r) / FT(5))};
+  a.w = {FT(1), FT(3) / FT(5), FT(1)};
+  return a;
+}
+
+// A piece that only offers the CurvePiece_2 concept (no Bernstein form visible to the metrics).
+struct Generic_piece {
+  typedef Kd Kernel;
+  typedef double FT;
+  typedef Kd::Point_2 Point_2;
+  typedef Kd::Vector_2 Vector_2;
+  fair::Bezier_2<Kd> b;
+  Point_2 point(double t) const { return b.point(t); }
+  Vector_2 derivative(double t) const { return b.derivative(t); }
+  Vector_2 second_derivative(double t) const { return b.second_derivative(t); }
+  double curvature(double t) const { return b.curvature(t); }
+  std::vector<Point_2> control_points() const { return b.control_points(); }
+};
+
+template <class K>
+fair::Bezier_2<K> parabola() { // y = x^2, x = 2t - 1
+  typedef typename K::Point_2 P;
+  return fair::Bezier_2<K>(std::vector<P>{P(-1, 1), P(0, -1), P(1, 1)});
+}
+
+template <class K>
+fair::Bezier_2<K> cubic_x3() { // y = x^3, x = 2t - 1 (Bernstein coefficients of x: -1, -1/3, 1/3, 1)
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  return fair::Bezier_2<K>(P(-1, -1), P(FT(-1) / FT(3), FT(1)), P(FT(1) / FT(3), FT(-1)), P(1, 1));
+}
+
+template <class K>
+class Metrics_typed : public ::testing::Test {};
+typedef ::testing::Types<Kd, Epick, Epeck, Kq> Kernels;
+TYPED_TEST_SUITE(Metrics_typed, Kernels);
+
+TYPED_TEST(Metrics_typed, ParabolaVertexIsTheOnlyCurvatureExtremum) {
+  typedef TypeParam K;
+  const std::vector<fair::Bezier_2<K>> c{parabola<K>()};
+  const fair::Feature_report e = fair::curvature_extrema(c);
+  ASSERT_EQ(e.count(), 1u);
+  EXPECT_TRUE(e.certified);
+  // The vertex t = 1/2 is a dyadic subdivision point: found exactly.
+  EXPECT_TRUE(e.features[0].interval.is_point());
+  EXPECT_TRUE(e.features[0].interval.lower == CGAL::Gmpq(1, 2));
+  EXPECT_DOUBLE_EQ(e.features[0].curvature, 2.0);
+  EXPECT_EQ(fair::inflections(c).count(), 0u);
+  // Bending energy int kappa^2 ds = int_{-2}^{2} 2 (1+u^2)^(-5/2) du = 88 / (15 sqrt 5).
+  const auto b = fair::bending_energy(c);
+  EXPECT_NEAR(b.value, 88 / (15 * std::sqrt(5.0)), 1e-11);
+  EXPECT_LT(b.error_bound, 1e-9);
+}
+
+TYPED_TEST(Metrics_typed, CubicInflectionAndExtrema) {
+  typedef TypeParam K;
+  const std::vector<fair::Bezier_2<K>> c{cubic_x3<K>()};
+  const fair::Feature_report in = fair::inflections(c);
+  ASSERT_EQ(in.count(), 1u);
+  EXPECT_TRUE(in.features[0].interval.is_point());
+  EXPECT_TRUE(in.features[0].interval.lower == CGAL::Gmpq(1, 2)); // x = 0
+  EXPECT_FALSE(in.features[0].at_joint);
+  // kappa = 6x / (1 + 9x^4)^(3/2) has its extrema at x^4 = 1/45.
+  const fair::Feature_report ex = fair::curvature_extrema(c);
+  ASSERT_EQ(ex.count(), 2u);
+  const double x0 = std::pow(45.0, -0.25);
+  EXPECT_NEAR(ex.features[0].t, (1 - x0) / 2, 1e-15);
+  EXPECT_NEAR(ex.features[1].t, (1 + x0) / 2, 1e-15);
+  EXPECT_TRUE(ex.features[0].interval.may_contain(CGAL::Gmpq(ex.features[0].t)) ||
+              std::fabs(CGAL::to_double(ex.features[0].interval.lower) - ex.features[0].t) < 1e-15);
+  EXPECT_NEAR(ex.features[1].curvature, 6 * x0 / std::pow(1 + 9 * std::pow(x0, 4), 1.5), 1e-12);
+}
+
+TYPED_TEST(Metrics_typed, CircleArcClosedForms) {
+  typedef TypeParam K;
+  const double theta = 2 * std::acos(0.6);
+  for (int r : {1, 3}) {
+    const std::vector<Test_rational_piece<K>> arc{circle_arc<K>(r)};
+    // Bending energy of a circular arc: theta / r; length r theta; no curvature variation.
+    EXPECT_NEAR(fair::bending_energy(arc).value, theta / r, 1e-12);
+    EXPECT_NEAR(fair::arc_length(arc).value, r * theta, 1e-12);
+    EXPECT_NEAR(fair::curvature_variation_energy(arc).value, 0.0, 1e-20);
+    // Certified: N vanishes identically (constant curvature), D never does.
+    const fair::Feature_report ex = fair::curvature_extrema(arc);
+    if (std::is_same<typename K::FT, double>::value) {
+      // 3/5 and 5/3 are rounded: the double data are a slightly non-circular conic, whose (genuine)
+      // curvature extrema are certified for the rounded data.
+      for (const auto& f : ex.features) EXPECT_NEAR(f.curvature, 1.0 / r, 1e-14);
+    } else {
+      EXPECT_EQ(ex.count(), 0u);
+      ASSERT_EQ(ex.degenerate_pieces.size(), 1u);
+    }
+    EXPECT_EQ(fair::inflections(arc).count(), 0u);
+    EXPECT_TRUE(fair::inflections(arc).degenerate_pieces.empty());
+    const auto dev = fair::max_circle_deviation(arc, typename K::Point_2(0, 0), double(r));
+    EXPECT_LT(dev.max_deviation, 1e-14);
+    EXPECT_TRUE(dev.certified);
+    for (const auto& s : fair::curvature_profile(arc, 16)) EXPECT_NEAR(s.curvature, 1.0 / r, 1e-13);
+  }
+}
+
+TYPED_TEST(Metrics_typed, InflectionAcrossAJoin) {
+  typedef TypeParam K;
+  typedef typename K::Point_2 P;
+  // Two C1 quadratic pieces, the first turning left, the second right.
+  const std::vector<fair::Bezier_2<K>> s{fair::Bezier_2<K>(std::vector<P>{P(0, 0), P(1, 0), P(2, 1)}),
+                                         fair::Bezier_2<K>(std::vector<P>{P(2, 1), P(3, 2), P(4, 2)})};
+  const fair::Feature_report in = fair::inflections(s);
+  ASSERT_EQ(in.count(), 1u);
+  EXPECT_TRUE(in.features[0].at_joint);
+  EXPECT_EQ(in.features[0].piece, 1u);
+  EXPECT_EQ(in.features[0].t, 0.0);
+  // A straight piece in between keeps the count and is reported as degenerate.
+  const std::vector<fair::Bezier_2<K>> s3{s[0], fair::Bezier_2<K>(std::vector<P>{P(2, 1), P(3, 2)}),
+                                          fair::Bezier_2<K>(std::vector<P>{P(3, 2), P(4, 3), P(5, 3)})};
+  const fair::Feature_report in3 = fair::inflections(s3);
+  EXPECT_EQ(in3.count(), 1u);
+  ASSERT_EQ(in3.degenerate_pieces.size(), 1u);
+  EXPECT_EQ(in3.degenerate_pieces[0], 1u);
+  // Closing the S into a loop adds no sign change at the closure only if the signs agree: a closed
+  // "figure" made of a left and a right turn joined back has two inflections.
+  const std::vector<fair::Bezier_2<K>> loop{fair::Bezier_2<K>(std::vector<P>{P(0, 0), P(1, 1), P(2, 0)}),
+                                            fair::Bezier_2<K>(std::vector<P>{P(2, 0), P(3, -1), P(4, 0)}),
+                                            fair::Bezier_2<K>(std::vector<P>{P(4, 0), P(2, 4), P(0, 0)})};
+  // piece 0 turns right (kappa < 0), piece 1 left, piece 2 left: changes at the 0/1 join and at the closure.
+  EXPECT_EQ(fair::inflections(loop).count(), 2u);
+}
+
+// ------------------------------------------------------------------------ random properties
+TEST(Metrics, RandomCubicsCertifiedCountsAreConsistent) {
+  std::mt19937 rng(424242);
+  std::uniform_int_distribution<int> coord(-30, 30);
+  for (int trial = 0; trial < 60; ++trial) {
+    std::vector<Kq::Point_2> q;
+    std::vector<Kd::Point_2> p;
+    for (int i = 0; i < 4; ++i) {
+      const int x = coord(rng), y = coord(rng);
+      q.emplace_back(x, y);
+      p.emplace_back(x, y);
+    }
+    const std::vector<fair::Bezier_2<Kq>> cq{fair::Bezier_2<Kq>(q)};
+    const std::vector<fair::Bezier_2<Kd>> cd{fair::Bezier_2<Kd>(p)};
+    const auto h = fair::internal::homogeneous_exact(cq[0]);
+    const auto D = fair::internal::curvature_sign_polynomial(h);
+    if (fair::internal::is_zero_polynomial(D)) continue;
+    const fair::Feature_report in = fair::inflections(cq);
+    // Double input converts exactly: the same certified answer.
+    EXPECT_EQ(in.count(), fair::inflections(cd).count());
+    EXPECT_EQ(fair::curvature_extrema(cq).count(), fair::curvature_extrema(cd).count());
+    // Each reported inflection: D changes sign across its interval (exact evaluation).
+    for (const auto& f : in.features) {
+      if (f.interval.is_point()) continue;
+      EXPECT_LT(CGAL::sign(D.evaluate(f.interval.lower)) * CGAL::sign(D.evaluate(f.interval.upper)), 0);
+    }
+    // Parity: the count of sign changes inside (0,1) has the parity of sign D(0) sign D(1).
+    const int s0 = CGAL::sign(D.evaluate(CGAL::Gmpq(0))), s1 = CGAL::sign(D.evaluate(CGAL::Gmpq(1)));
+    if (s0 != 0 && s1 != 0) {
+      EXPECT_EQ(in.count() % 2, s0 == s1 ? 0u : 1u);
+    }
+    // Sampling can only miss features, never find more.
+    int changes = 0, last = 0;
+    for (int k = 0; k <= 2000; ++k) {
+      double d1x, d1y, d2x, d2y;
+      cd[0].derivatives_double(k / 2000.0, d1x, d1y, d2x, d2y);
+      const double v = d1x * d2y - d1y * d2x;
+      const int s = (v > 1e-9) - (v < -1e-9);
+      if (s != 0 && last != 0 && s != last) ++changes;
+      if (s != 0) last = s;
+    }
+    EXPECT_LE(changes, int(in.count()));
+  }
+}
+
+TEST(Metrics, CircleDeviationOfTheCubicQuarterCircle) {
+  // The classic cubic approximation of a quarter circle, handle k = 4 (sqrt 2 - 1) / 3: the radial
+  // error peaks at about 2.7e-4. The certified candidates must dominate a dense sampling.
+  const double k = 4 * (std::sqrt(2.0) - 1) / 3;
+  const std::vector<fair::Bezier_2<Kd>> c{
+      fair::Bezier_2<Kd>(Kd::Point_2(1, 0), Kd::Point_2(1, k), Kd::Point_2(k, 1), Kd::Point_2(0, 1))};
+  const auto dev = fair::max_circle_deviation(c, Kd::Point_2(0, 0), 1.0);
+  double sampled = 0;
+  for (int i = 0; i <= 100000; ++i) {
+    const auto p = c[0].point(i / 100000.0);
+    sampled = std::max(sampled, std::fabs(std::hypot(p.x(), p.y()) - 1));
+  }
+  EXPECT_GE(dev.max_deviation, sampled - 1e-16);
+  EXPECT_LE(dev.max_deviation, sampled + 1e-12);
+  EXPECT_NEAR(dev.max_deviation, 2.7253e-4, 1e-7);
+  EXPECT_TRUE(dev.certified);
+}
+
+TEST(Metrics, HausdorffDistance) {
+  // Concentric arcs of radii 3 and 3.3 over the same angles: Hausdorff distance 0.3.
+  typedef Kd::Point_2 P;
+  Test_rational_piece<Kd> a = circle_arc<Kd>(3), b = a;
+  for (auto& x : b.cp) x = P(1.1 * x.x(), 1.1 * x.y());
+  const std::vector<Test_rational_piece<Kd>> A{a}, B{b};
+  EXPECT_NEAR(fair::hausdorff_distance(A, B, 1e-3), 0.3, 1e-3);
+  // A segment and its translate along itself by 0.25: distance 0.25; symmetric.
+  const std::vector<fair::Bezier_2<Kd>> s{fair::Bezier_2<Kd>(std::vector<P>{P(0, 0), P(1, 0)})};
+  const std::vector<fair::Bezier_2<Kd>> t{fair::Bezier_2<Kd>(std::vector<P>{P(0.25, 0), P(1.25, 0)})};
+  EXPECT_NEAR(fair::hausdorff_distance(s, t, 1e-3), 0.25, 1e-12);
+  EXPECT_NEAR(fair::hausdorff_distance(t, s, 1e-3), 0.25, 1e-12);
+  EXPECT_EQ(fair::hausdorff_distance(s, s, 1e-3), 0.0);
+  // Random curves: triangle inequality through a third curve, to the sampling tolerance.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int trial = 0; trial < 5; ++trial) {
+    std::vector<fair::Bezier_2<Kd>> c[3];
+    for (auto& curve : c)
+      curve.push_back(fair::Bezier_2<Kd>(P(u(rng), u(rng)), P(u(rng), u(rng)), P(u(rng), u(rng)), P(u(rng), u(rng))));
+    const double tol = 1e-3;
+    EXPECT_LE(fair::hausdorff_distance(c[0], c[2], tol),
+              fair::hausdorff_distance(c[0], c[1], tol) + fair::hausdorff_distance(c[1], c[2], tol) + 2 * tol);
+  }
+  EXPECT_THROW(fair::hausdorff_distance(s, t, 0.0), fair::Precondition_error);
+  EXPECT_THROW(fair::hausdorff_distance(s, t, std::numeric_limits<double>::quiet_NaN()), fair::Precondition_error);
+}
+
+TEST(Metrics, ProfileAndLengthOfAStraightPiece) {
+  typedef Kd::Point_2 P;
+  const std::vector<fair::Bezier_2<Kd>> line{fair::Bezier_2<Kd>(P(0, 0), P(1, 0), P(5, 0), P(6, 0)),
+                                             fair::Bezier_2<Kd>(std::vector<P>{P(6, 0), P(6, 4)})};
+  EXPECT_NEAR(fair::arc_length(line).value, 10.0, 1e-12);
+  EXPECT_EQ(fair::bending_energy(line).value, 0.0);
+  const auto prof = fair::curvature_profile(line, 8);
+  ASSERT_EQ(prof.size(), 18u);
+  for (std::size_t i = 1; i < prof.size(); ++i) EXPECT_GE(prof[i].arc_length, prof[i - 1].arc_length);
+  EXPECT_NEAR(prof.back().arc_length, 10.0, 1e-12);
+  const fair::Feature_report in = fair::inflections(line);
+  EXPECT_EQ(in.count(), 0u);
+  EXPECT_EQ(in.degenerate_pieces.size(), 2u);
+}
+
+TEST(Metrics, GenericPiecesFallBackToSampling) {
+  const std::vector<Generic_piece> g{Generic_piece{cubic_x3<Kd>()}};
+  const std::vector<fair::Bezier_2<Kd>> b{cubic_x3<Kd>()};
+  const fair::Feature_report in = fair::inflections(g);
+  EXPECT_FALSE(in.certified);
+  EXPECT_EQ(in.count(), 1u);
+  EXPECT_EQ(fair::curvature_extrema(g).count(), 2u);
+  EXPECT_NEAR(fair::bending_energy(g).value, fair::bending_energy(b).value, 1e-12);
+  // The generic third derivative is a central difference: agreement to about 1e-8 relative.
+  const double eg = fair::curvature_variation_energy(g).value, eb = fair::curvature_variation_energy(b).value;
+  EXPECT_NEAR(eg, eb, 1e-7 * eb);
+  EXPECT_FALSE(fair::max_circle_deviation(g, Kd::Point_2(0, 0), 1.0).certified);
+}
+
+TEST(Metrics, QuadratureAccuracyAndCaps) {
+  fair::Quadrature_options o;
+  const auto p = fair::internal::adaptive_integral([](double x) { return std::pow(x, 20); }, 0.0, 1.0, o, "test");
+  EXPECT_NEAR(p.value, 1.0 / 21, 1e-16);
+  const auto r = fair::internal::adaptive_integral([](double x) { return std::sqrt(x); }, 0.0, 1.0, o, "test");
+  EXPECT_NEAR(r.value, 2.0 / 3, 1e-10);
+  EXPECT_GE(r.error_bound, std::fabs(r.value - 2.0 / 3) * 0.999);
+  o.max_subintervals = 10;
+  EXPECT_THROW(fair::internal::adaptive_integral([](double x) { return 1 / std::sqrt(x); }, 0.0, 1.0, o, "test"),
+               fair::Non_convergence_error);
+  // A cusp makes the curvature blow up: reported, never NaN.
+  typedef Kd::Point_2 P;
+  const std::vector<fair::Bezier_2<Kd>> cusp{fair::Bezier_2<Kd>(P(0, 0), P(2, 2), P(-1, 2), P(3, 0))};
+  EXPECT_THROW(fair::bending_energy(cusp), fair::Error);
+  EXPECT_THROW(fair::curvature_profile(cusp, 2), fair::Precondition_error);
+  EXPECT_THROW(fair::arc_length(std::vector<fair::Bezier_2<Kd>>{}), fair::Precondition_error);
+  EXPECT_THROW(fair::max_circle_deviation(cusp, P(0, 0), -1.0), fair::Precondition_error);
+}
+
+TEST(Metrics, FairnessReportAgreesWithTheParts) {
+  typedef Kd::Point_2 P;
+  const std::vector<fair::Bezier_2<Kd>> c{cubic_x3<Kd>(), fair::Bezier_2<Kd>(P(1, 1), P(5.0 / 3, 3), P(3, 4), P(4, 4))};
+  const fair::Fairness_report r = fair::fairness_report(c);
+  EXPECT_EQ(r.pieces, 2u);
+  EXPECT_EQ(r.inflection_count, fair::inflections(c).count());
+  EXPECT_EQ(r.curvature_extremum_count, fair::curvature_extrema(c).count());
+  EXPECT_DOUBLE_EQ(r.bending.value, fair::bending_energy(c).value);
+  EXPECT_LE(r.min_curvature, r.max_curvature);
+  EXPECT_TRUE(r.certified);
+}
+
+} // namespace
