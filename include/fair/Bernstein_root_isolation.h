@@ -34,6 +34,7 @@
 
 #include <fair/Bernstein_polynomial.h>
 #include <fair/Errors.h>
+#include <fair/internal/bernstein_dyadic.h>
 #include <fair/internal/bernstein_exact.h>
 #include <fair/internal/bernstein_unique_root.h>
 #include <fair/internal/bernstein_vca.h>
@@ -42,6 +43,7 @@
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
 
+#include <cmath>
 #include <cstddef>
 #include <ostream>
 #include <utility>
@@ -83,7 +85,10 @@ public:
     for (const CGAL::Gmpq& c : E) zero = zero && CGAL::is_zero(c);
     internal::require(!zero, "Bernstein_root_isolation: the zero polynomial (", p,
                       ") vanishes on all of [0,1]; it has no isolated roots");
-    isolate();
+    std::vector<internal::Unprotected_interval> enclosure;
+    enclosure.reserve(E.size());
+    for (const NT& c : p.coefficients()) enclosure.push_back(internal::Unprotected_interval(CGAL::to_interval(c)));
+    isolate(std::move(enclosure));
   }
 
   /// Number of distinct roots in [0,1].
@@ -113,18 +118,24 @@ public:
     }
   }
 
-  /// A double within one ulp of root i: refines interval i until both ends truncate to the same
-  /// double (an exact root is converted by CGAL::to_double, also within one ulp).
+  /// A double within one ulp of root i (refines interval i as needed). Double Newton with a
+  /// certified bracket (interval signs, exact integer fallback) shrinks the interval to two
+  /// adjacent doubles and the lower one is returned; an interval whose ends are not doubles
+  /// (deeper than 2^-52) is bisected exactly until both ends truncate to the same double.
   double root_approximation(std::size_t i) {
     internal::require(i < intervals_.size(), "Bernstein_root_isolation::root_approximation: index ", i,
                       " out of range (", intervals_.size(), " roots)");
-    for (int step = 0; !intervals_[i].is_point() &&
-                       CGAL::to_double(intervals_[i].lower) != CGAL::to_double(intervals_[i].upper);
-         ++step) {
+    Isolating_interval& I = intervals_[i];
+    if (I.is_point()) return CGAL::to_double(I.lower);
+    tighten_in_double(i, 1);
+    const double L = CGAL::to_double(I.lower), H = CGAL::to_double(I.upper);
+    if (I.is_point()) return L;
+    if (CGAL::Gmpq(L) == I.lower && CGAL::Gmpq(H) == I.upper && H <= std::nextafter(L, 2.0)) return L;
+    for (int step = 0; !I.is_point() && CGAL::to_double(I.lower) != CGAL::to_double(I.upper); ++step) {
       if (step > 5000) throw Non_convergence_error("Bernstein_root_isolation::root_approximation: bisection cap", 5000, 0.0);
       bisect(i);
     }
-    return intervals_[i].approximation();
+    return CGAL::to_double(I.lower);
   }
   std::vector<double> root_approximations() {
     std::vector<double> out;
@@ -133,10 +144,10 @@ public:
   }
 
 private:
-  void isolate() {
+  void isolate(std::vector<internal::Unprotected_interval> enclosure) {
     const std::vector<CGAL::Gmpq>& E = p_.coefficients();
     {
-      internal::Vca_isolator vca(E);
+      internal::Vca_isolator vca(E, true, std::move(enclosure));
       if (vca.run(30)) return accept(E, vca.leaves());
     }
     used_square_free_ = true;
@@ -199,8 +210,8 @@ private:
 
   void accept(const std::vector<CGAL::Gmpq>& witness, const std::vector<internal::Isolation_leaf>& leaves) {
     witness_ = witness;
-    witness_intervals_ = internal::to_intervals(witness);
-    witness_power_ = Bernstein_polynomial<CGAL::Gmpq>(witness).to_power_basis();
+    witness_intervals_.clear();
+    witness_power_.clear();
     intervals_.clear();
     sign_after_lower_.clear();
     for (const internal::Isolation_leaf& leaf : leaves) {
@@ -219,19 +230,68 @@ private:
                                 static_cast<std::size_t>(hard_cap), 0.0);
   }
 
+  void prepare_witness() {
+    if (!witness_intervals_.empty()) return;
+    witness_intervals_ = internal::to_intervals(witness_);
+    witness_approx_.clear();
+    for (const internal::Unprotected_interval& c : witness_intervals_) witness_approx_.push_back(CGAL::to_double(c));
+    witness_power_ = Bernstein_polynomial<CGAL::Gmpq>(witness_).to_power_basis();
+    witness_integer_power_ = internal::integer_power_coefficients(witness_power_);
+    scratch_.resize(witness_.size());
+  }
+
   // Sign of the witness at x in [0,1]: interval de Casteljau first, exact Horner if uncertain.
-  int witness_sign(const CGAL::Gmpq& x) const {
+  int witness_sign(const CGAL::Gmpq& x) {
+    prepare_witness();
     {
       CGAL::Protect_FPU_rounding<true> protect;
       const internal::Unprotected_interval t(CGAL::to_interval(x));
       const internal::Unprotected_interval s = internal::Unprotected_interval(1) - t;
-      std::vector<internal::Unprotected_interval> w(witness_intervals_);
+      std::vector<internal::Unprotected_interval>& w = scratch_;
+      w = witness_intervals_;
       for (std::size_t r = 1; r < w.size(); ++r)
         for (std::size_t k = 0; k + r < w.size(); ++k) w[k] = s * w[k] + t * w[k + 1];
       if (w[0].inf() > 0) return 1;
       if (w[0].sup() < 0) return -1;
     }
+    return exact_witness_sign(x);
+  }
+
+  // Exact sign of the witness at x: integer Horner when x is dyadic (always, for the end points
+  // this class produces), rational Horner otherwise.
+  int exact_witness_sign(const CGAL::Gmpq& x) {
+    internal::Mpz_array k(1);
+    unsigned long e = 0;
+    if (internal::dyadic_parts(x, k[0], e)) return internal::sign_power_at_dyadic(witness_integer_power_, k[0], e);
     return CGAL::sign(horner(witness_power_, x));
+  }
+  int exact_witness_sign(double x) {
+    internal::Mpz_array k(1);
+    unsigned long e = 0;
+    internal::dyadic_parts(x, k[0], e);
+    return internal::sign_power_at_dyadic(witness_integer_power_, k[0], e);
+  }
+
+  // If interval i has double end points, shrinks it to at most max_ulps ulps with the double Newton /
+  // interval-certified bracketing of internal/bernstein_unique_root.h.
+  void tighten_in_double(std::size_t i, double max_ulps) {
+    Isolating_interval& I = intervals_[i];
+    if (I.is_point()) return;
+    const double L = CGAL::to_double(I.lower), H = CGAL::to_double(I.upper);
+    if (CGAL::Gmpq(L) != I.lower || CGAL::Gmpq(H) != I.upper) return;
+    prepare_witness();
+    const internal::Double_bracket r = internal::tighten_double_bracket(
+        witness_intervals_.data(), witness_approx_.data(), witness_.size(), L, H, sign_after_lower_[i],
+        L + (H - L) / 2, [this](double x) { return exact_witness_sign(x); }, max_ulps);
+    if (r.exact_root) {
+      I.lower = I.upper = CGAL::Gmpq(r.root);
+      return;
+    }
+    if (r.lower != L) {
+      // The witness has sign sign_after_lower just after the new lower end, as before.
+      I.lower = CGAL::Gmpq(r.lower);
+    }
+    if (r.upper != H) I.upper = CGAL::Gmpq(r.upper);
   }
 
   void bisect(std::size_t i) {
@@ -255,8 +315,13 @@ private:
   std::vector<Isolating_interval> intervals_;
   std::vector<int> sign_after_lower_;
   std::vector<CGAL::Gmpq> witness_;
+  // Lazily prepared for refinement: interval enclosures, double approximations and the power
+  // basis of the witness, and a scratch buffer.
   std::vector<internal::Unprotected_interval> witness_intervals_;
+  std::vector<double> witness_approx_;
   internal::Q_polynomial witness_power_;
+  internal::Mpz_array witness_integer_power_;
+  std::vector<internal::Unprotected_interval> scratch_;
   bool used_square_free_ = false;
 };
 

@@ -15,7 +15,8 @@
 // 0, and then lower == upper), so the unique root lies in [lower, upper].
 //
 // Accuracy. The bracket is first grown from the Newton iterate by doubling steps until the
-// interval signs are certain; it is then shrunk by bisection (exact fallback where needed) until
+// interval signs are certain; it is then shrunk by bisection (exact integer evaluation at the
+// dyadic bisection point where the interval is inconclusive, internal/bernstein_dyadic.h) until
 // it is at most 8 ulps wide. So upper - lower <= 8 ulp(upper) always, and typically 1-2 ulps
 // for a well-conditioned root (exact evaluation is needed only within about
 // n * eps * max|b_i| / |p'(root)| of the root).
@@ -24,6 +25,7 @@
 #define FAIR_INTERNAL_BERNSTEIN_UNIQUE_ROOT_H
 
 #include <fair/Errors.h>
+#include <fair/internal/bernstein_dyadic.h>
 
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
@@ -56,36 +58,15 @@ namespace internal {
 
 constexpr std::size_t unique_root_stack_coefficients = 32;
 
-/// Interval enclosure of p(x) by de Casteljau; the caller must hold a
-/// CGAL::Protect_FPU_rounding<true>. `work` has room for m values.
-inline CGAL::Interval_nt<false> interval_de_casteljau(const double* b, std::size_t m, double x,
+/// Interval enclosure of p(x) for interval coefficients c; needs rounding protection.
+inline CGAL::Interval_nt<false> interval_de_casteljau(const CGAL::Interval_nt<false>* c, std::size_t m, double x,
                                                       CGAL::Interval_nt<false>* work) {
   typedef CGAL::Interval_nt<false> I;
   const I t(x), s = I(1) - t;
-  for (std::size_t i = 0; i < m; ++i) work[i] = I(b[i]);
+  for (std::size_t i = 0; i < m; ++i) work[i] = c[i];
   for (std::size_t r = 1; r < m; ++r)
     for (std::size_t i = 0; i + r < m; ++i) work[i] = s * work[i] + t * work[i + 1];
   return work[0];
-}
-
-/// Exact sign of p(x) (Gmpq de Casteljau; the double x is an exact rational).
-inline int exact_sign_de_casteljau(const double* b, std::size_t m, double x) {
-  const CGAL::Gmpq t(x), s = CGAL::Gmpq(1) - t;
-  std::vector<CGAL::Gmpq> w(b, b + m);
-  for (std::size_t r = 1; r < m; ++r)
-    for (std::size_t i = 0; i + r < m; ++i) w[i] = s * w[i] + t * w[i + 1];
-  return CGAL::sign(w[0]);
-}
-
-/// Certified sign of p(x): interval filter, exact fallback. Requires rounding protection.
-inline int certified_sign(const double* b, std::size_t m, double x, CGAL::Interval_nt<false>* work,
-                          bool& used_exact) {
-  const CGAL::Interval_nt<false> v = interval_de_casteljau(b, m, x, work);
-  if (v.inf() > 0) return 1;
-  if (v.sup() < 0) return -1;
-  if (v.inf() == 0 && v.sup() == 0) return 0;
-  used_exact = true;
-  return exact_sign_de_casteljau(b, m, x);
 }
 
 /// p(t) and p'(t) in double by de Casteljau (round to nearest).
@@ -100,6 +81,108 @@ inline void double_de_casteljau(const double* b, std::size_t m, double t, double
 }
 
 inline int sign_of(double x) { return (x > 0) - (x < 0); }
+
+/// Result of tighten_double_bracket.
+struct Double_bracket {
+  double lower, upper, root;
+  bool exact_root;  // lower == upper == root is the root
+  bool used_exact;  // some sign needed the exact fallback
+};
+
+/// Certified tightening of a double bracket around the unique root of a polynomial.
+///
+/// Precondition: on the open interval (L, H) the polynomial p (of degree m-1) has exactly one
+/// root, a simple one, with sign `s_low` on (L, root) and -s_low on (root, H). `c` holds
+/// intervals enclosing the exact Bernstein coefficients of p on [0,1] (point intervals for
+/// double input) and `approx` double approximations of them (used only by Newton). `exact_sign`
+/// is called as exact_sign(x) -> int for a double x where the interval filter is inconclusive.
+///
+/// Method: safeguarded Newton in double from `start`, then a certified bracket grown from the
+/// Newton iterate by doubling steps (interval signs), then shrunk by bisection (exact fallback)
+/// to at most `max_ulps` ulps (of its upper end; 1 means adjacent doubles). The returned [lower, upper] is inside [L, H] and contains the root.
+/// Must be called in round-to-nearest mode; protects the rounding mode itself.
+template <class ExactSign>
+Double_bracket tighten_double_bracket(const CGAL::Interval_nt<false>* c, const double* approx, std::size_t m,
+                                      double L, double H, int s_low, double start, ExactSign exact_sign,
+                                      double max_ulps = 8) {
+  Double_bracket out{L, H, start, false, false};
+  double stack_d[unique_root_stack_coefficients];
+  CGAL::Interval_nt<false> stack_i[unique_root_stack_coefficients];
+  std::vector<double> heap_d;
+  std::vector<CGAL::Interval_nt<false>> heap_i;
+  double* wd = stack_d;
+  CGAL::Interval_nt<false>* wi = stack_i;
+  if (m > unique_root_stack_coefficients) {
+    heap_d.resize(m);
+    heap_i.resize(m);
+    wd = heap_d.data();
+    wi = heap_i.data();
+  }
+  // Safeguarded Newton in double; [lo, hi] is only a guide here.
+  double t = (start > L && start < H) ? start : L + (H - L) / 2;
+  if (!(t > L && t < H)) return out; // no double strictly inside: [L, H] is already minimal
+  double lo = L, hi = H;
+  for (int it = 0; it < 100; ++it) {
+    double f, df;
+    double_de_casteljau(approx, m, t, wd, f, df);
+    if (f == 0) break;
+    if (sign_of(f) == s_low) lo = t; else hi = t;
+    double tn = t - f / df;
+    if (!(tn > lo && tn < hi)) tn = lo + (hi - lo) / 2;
+    const double step = std::fabs(tn - t);
+    if (!(tn > L && tn < H)) break;
+    t = tn;
+    if (step <= 2 * std::numeric_limits<double>::epsilon() * std::fabs(t) || !(hi - lo > 0)) break;
+  }
+
+  CGAL::Protect_FPU_rounding<true> protect;
+  double A = L, B = H; // certified: the root is in (A, B)
+  // Records the certified sign s of p at x in (L, H); returns true if x is the root.
+  auto classify = [&](double x, int s) -> bool {
+    if (s == 0) { out.lower = out.upper = out.root = x; out.exact_root = true; return true; }
+    if (s == s_low) { if (x > A) A = x; }
+    else if (x < B) B = x;
+    return false;
+  };
+  auto interval_sign = [&](double x, int& s) -> bool { // false if inconclusive
+    const CGAL::Interval_nt<false> v = interval_de_casteljau(c, m, x, wi);
+    if (v.inf() > 0) { s = 1; return true; }
+    if (v.sup() < 0) { s = -1; return true; }
+    if (v.inf() == 0 && v.sup() == 0) { s = 0; return true; }
+    return false;
+  };
+  int s;
+  if (interval_sign(t, s) && classify(t, s)) return out;
+  // Grow a certified end on each side of t by doubling steps, interval signs only; reaching L
+  // or H ends the search (their sides are known).
+  for (int side = 0; side < 2; ++side) {
+    double d = std::fabs(t) * std::numeric_limits<double>::epsilon();
+    if (d < std::numeric_limits<double>::denorm_min()) d = std::numeric_limits<double>::denorm_min();
+    for (int k = 0; k < 2200; ++k, d *= 2) {
+      if (side == 0 ? A >= t : B <= t) break; // this side is certified already
+      const double x = side == 0 ? t - d : t + d;
+      if (side == 0 ? x <= A : x >= B) break;
+      if (interval_sign(x, s) && classify(x, s)) return out;
+    }
+  }
+  // Shrink to at most max_ulps ulps by bisection, exact fallback where the interval is
+  // inconclusive.
+  for (int k = 0; k < 2200; ++k) {
+    const double ulp = std::nextafter(B, std::numeric_limits<double>::infinity()) - B;
+    if (B - A <= max_ulps * ulp) break;
+    const double mid = A + (B - A) / 2;
+    if (!(mid > A && mid < B)) break;
+    if (!interval_sign(mid, s)) {
+      out.used_exact = true;
+      s = exact_sign(mid);
+    }
+    if (classify(mid, s)) return out;
+  }
+  out.lower = A;
+  out.upper = B;
+  out.root = t < A ? A : (t > B ? B : t);
+  return out;
+}
 
 /// The core routine on m = degree + 1 coefficients b[0..m-1].
 inline Unique_root certified_unique_root(const double* b, std::size_t m) {
@@ -132,24 +215,11 @@ inline Unique_root certified_unique_root(const double* b, std::size_t m) {
   if (out.sign_variations != 1) return out;
   out.status = Unique_root::UNIQUE_ROOT;
 
-  double stack_d[unique_root_stack_coefficients];
-  CGAL::Interval_nt<false> stack_i[unique_root_stack_coefficients];
-  std::vector<double> heap_d;
-  std::vector<CGAL::Interval_nt<false>> heap_i;
-  double* wd = stack_d;
-  CGAL::Interval_nt<false>* wi = stack_i;
-  if (m > unique_root_stack_coefficients) {
-    heap_d.resize(m);
-    heap_i.resize(m);
-    wd = heap_d.data();
-    wi = heap_i.data();
-  }
-
   const int s0 = sign_of(b[0]);
   // Start at the crossing of the control polygon with the axis.
   double t = 0.5;
   {
-    std::size_t j = 0; // last nonzero coefficient with sign s0
+    std::size_t j = 0; // last coefficient with sign s0 before the change
     for (std::size_t i = 1; i <= n; ++i) {
       const int s = sign_of(b[i]);
       if (s == s0) j = i;
@@ -158,69 +228,21 @@ inline Unique_root certified_unique_root(const double* b, std::size_t m) {
         break;
       }
     }
-    if (!(t > 0 && t < 1)) t = 0.5;
   }
-  // Safeguarded Newton in double; the bracket [lo, hi] is only a guide here.
-  double lo = 0, hi = 1;
-  for (int it = 0; it < 100; ++it) {
-    double f, df;
-    double_de_casteljau(b, m, t, wd, f, df);
-    if (f == 0) break;
-    if (sign_of(f) == s0) lo = t; else hi = t;
-    double tn = t - f / df;
-    if (!(tn > lo && tn < hi)) tn = 0.5 * (lo + hi);
-    const double step = std::fabs(tn - t);
-    t = tn;
-    if (step <= 2 * std::numeric_limits<double>::epsilon() * t || hi - lo <= std::numeric_limits<double>::min()) break;
+  CGAL::Interval_nt<false> stack_c[unique_root_stack_coefficients];
+  std::vector<CGAL::Interval_nt<false>> heap_c;
+  CGAL::Interval_nt<false>* c = stack_c;
+  if (m > unique_root_stack_coefficients) {
+    heap_c.resize(m);
+    c = heap_c.data();
   }
-
-  // Certification.
-  CGAL::Protect_FPU_rounding<true> protect;
-  bool exact = false;
-  double L = 0, H = 1; // certified: sign(p(L)) = s0, sign(p(H)) = -s0 (true at 0 and 1)
-  bool haveL = false, haveH = false;
-  auto classify = [&](double x, int s) -> bool { // returns true if x is an exact root
-    if (s == 0) { out.root = out.lower = out.upper = x; return true; }
-    if (s == s0) { if (x > L || !haveL) { L = x; haveL = true; } }
-    else { if (x < H || !haveH) { H = x; haveH = true; } }
-    return false;
-  };
-  {
-    const CGAL::Interval_nt<false> v = interval_de_casteljau(b, m, t, wi);
-    if (v.inf() > 0 || v.sup() < 0) classify(t, v.inf() > 0 ? 1 : -1);
-    else if (v.inf() == 0 && v.sup() == 0) { classify(t, 0); out.used_exact_fallback = exact; return out; }
-  }
-  // Grow to each side that is still missing, by doubling steps (interval signs only; the ends
-  // 0 and 1 are exact, so this terminates).
-  for (int side = 0; side < 2; ++side) {
-    bool& have = side == 0 ? haveL : haveH;
-    if (have) continue;
-    // The missing end is on the side where p has the required sign. Below the root p has sign
-    // s0, so L is searched downwards from t and H upwards.
-    double d = std::fabs(t) * std::numeric_limits<double>::epsilon();
-    if (d < std::numeric_limits<double>::denorm_min()) d = std::numeric_limits<double>::denorm_min();
-    for (int k = 0; k < 2200 && !have; ++k, d *= 2) {
-      double x = side == 0 ? t - d : t + d;
-      if (x <= 0) x = 0;
-      if (x >= 1) x = 1;
-      const CGAL::Interval_nt<false> v = interval_de_casteljau(b, m, x, wi);
-      if (v.inf() > 0 || v.sup() < 0) classify(x, v.inf() > 0 ? 1 : -1);
-      else if (v.inf() == 0 && v.sup() == 0) { classify(x, 0); out.used_exact_fallback = exact; return out; }
-      if (x == 0 || x == 1) break;
-    }
-  }
-  // Shrink to at most 8 ulps by bisection with exact fallback.
-  for (int k = 0; k < 2200; ++k) {
-    const double ulp = std::nextafter(H, 2.0) - H;
-    if (H - L <= 8 * ulp) break;
-    const double mid = L + (H - L) / 2;
-    if (!(mid > L && mid < H)) break;
-    if (classify(mid, certified_sign(b, m, mid, wi, exact))) { out.used_exact_fallback = exact; return out; }
-  }
-  out.lower = L;
-  out.upper = H;
-  out.root = t < L ? L : (t > H ? H : t);
-  out.used_exact_fallback = exact;
+  for (std::size_t i = 0; i < m; ++i) c[i] = CGAL::Interval_nt<false>(b[i]);
+  const Double_bracket r = tighten_double_bracket(c, b, m, 0.0, 1.0, s0, t,
+                                                  [b, m](double x) { return exact_sign_bernstein_at(b, m, x); });
+  out.lower = r.lower;
+  out.upper = r.upper;
+  out.root = r.root;
+  out.used_exact_fallback = r.used_exact;
   return out;
 }
 

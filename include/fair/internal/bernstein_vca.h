@@ -104,8 +104,11 @@ class Vca_isolator {
 public:
   /// `use_interval_filter` = false runs the same bisection in exact arithmetic throughout (for
   /// testing: both must give identical leaves, since a certain filtered count is the exact one).
-  explicit Vca_isolator(const std::vector<CGAL::Gmpq>& exact, bool use_interval_filter = true)
-    : E_(exact), filter_(use_interval_filter) {}
+  /// `enclosure`, if given, holds intervals enclosing E (e.g. from the input number type);
+  /// otherwise they are computed from E.
+  explicit Vca_isolator(const std::vector<CGAL::Gmpq>& exact, bool use_interval_filter = true,
+                        std::vector<Unprotected_interval> enclosure = {})
+    : E_(exact), filter_(use_interval_filter), enclosure_(std::move(enclosure)) {}
 
   /// Isolates the roots of E in [0,1]. Returns false when a node deeper than `depth_cap` would
   /// be needed (leaves() is then incomplete).
@@ -121,12 +124,10 @@ public:
     if (n == 0) return true;
     std::vector<Node> stack;
     Node root;
-    root.lo = CGAL::Gmpq(0);
-    root.hi = CGAL::Gmpq(1);
-    root.depth = 0;
     root.exact = !filter_;
-    if (filter_) root.I = to_intervals(E_);
-    else root.X = E_;
+    if (!filter_) root.X = E_;
+    else if (enclosure_.size() == E_.size()) root.I = std::move(enclosure_);
+    else root.I = to_intervals(E_);
     stack.push_back(std::move(root));
     while (!stack.empty()) {
       Node node = std::move(stack.back());
@@ -135,7 +136,7 @@ public:
         const Sign_variation_count v = sign_variation_bounds(node.I.begin(), node.I.end());
         if (v.upper == 0) continue;
         if (v.certain() && v.lower == 1) {
-          leaves_.push_back({node.lo, node.hi, 1, first_certain_sign(node.I)});
+          leaves_.push_back({node.lower(), node.upper(), 1, first_certain_sign(node.I)});
           continue;
         }
         if (v.lower >= 2) {
@@ -144,40 +145,30 @@ public:
           split_half_interval(node.I, right.I);
           const std::pair<int, int> mid_sign = sign_range_of(right.I[0]);
           if (mid_sign.first > 0 || mid_sign.second < 0) { // p(mid) certainly nonzero
-            const CGAL::Gmpq mid = (node.lo + node.hi) / 2;
-            right.lo = mid;
-            right.hi = node.hi;
-            right.depth = node.depth + 1;
-            right.exact = false;
-            node.hi = mid;
-            node.depth += 1;
+            node.bisect(right);
             stack.push_back(std::move(right));
             stack.push_back(std::move(node));
             continue;
           }
+          // p(mid) may vanish: redo this node exactly (the intervals were overwritten).
         }
         // Uncertain count that may be 0 or 1, or p(mid) possibly zero: go exact.
-        node.X = Bernstein_polynomial<CGAL::Gmpq>(E_).restricted(node.lo, node.hi).coefficients();
+        node.X = Bernstein_polynomial<CGAL::Gmpq>(E_).restricted(node.lower(), node.upper()).coefficients();
         node.exact = true;
         node.I.clear();
       }
       const Sign_variation_count v = sign_variation_bounds(node.X.begin(), node.X.end());
       if (v.lower == 0) continue;
       if (v.lower == 1) {
-        leaves_.push_back({node.lo, node.hi, 1, first_certain_sign(node.X)});
+        leaves_.push_back({node.lower(), node.upper(), 1, first_certain_sign(node.X)});
         continue;
       }
       if (node.depth + 1 > depth_cap) return false;
       Node right;
       split_half(node.X, right.X);
-      const CGAL::Gmpq mid = (node.lo + node.hi) / 2;
-      if (CGAL::is_zero(right.X[0])) leaves_.push_back({mid, mid, leading_zero_count(right.X), 0});
-      right.lo = mid;
-      right.hi = node.hi;
-      right.depth = node.depth + 1;
       right.exact = true;
-      node.hi = mid;
-      node.depth += 1;
+      node.bisect(right);
+      if (CGAL::is_zero(right.X[0])) leaves_.push_back({right.lower(), right.lower(), leading_zero_count(right.X), 0});
       stack.push_back(std::move(right));
       stack.push_back(std::move(node));
     }
@@ -189,16 +180,46 @@ public:
   std::vector<Isolation_leaf>& leaves() { return leaves_; }
 
 private:
+  // A subdivision node [lo, hi]. Its end points are dyadic k / 2^depth: they are kept as exact
+  // doubles while depth <= 52 (cheap), and as Gmpq below.
   struct Node {
-    CGAL::Gmpq lo, hi;
+    double lo_d = 0, hi_d = 1;
+    CGAL::Gmpq lo_q, hi_q;
+    bool rational = false;
     int depth = 0;
     bool exact = false;
     std::vector<Unprotected_interval> I;
     std::vector<CGAL::Gmpq> X;
+
+    CGAL::Gmpq lower() const { return rational ? lo_q : CGAL::Gmpq(lo_d); }
+    CGAL::Gmpq upper() const { return rational ? hi_q : CGAL::Gmpq(hi_d); }
+    // Halves this node: it becomes [lo, mid] and `right` becomes [mid, hi].
+    void bisect(Node& right) {
+      right.depth = ++depth;
+      if (!rational && depth <= 52) {
+        const double mid = 0.5 * (lo_d + hi_d); // exact: both are multiples of 2^-(depth-1)
+        right.lo_d = mid;
+        right.hi_d = hi_d;
+        right.rational = false;
+        hi_d = mid;
+        return;
+      }
+      if (!rational) {
+        lo_q = CGAL::Gmpq(lo_d);
+        hi_q = CGAL::Gmpq(hi_d);
+        rational = true;
+      }
+      const CGAL::Gmpq mid = (lo_q + hi_q) / 2;
+      right.lo_q = mid;
+      right.hi_q = hi_q;
+      right.rational = true;
+      hi_q = mid;
+    }
   };
 
   const std::vector<CGAL::Gmpq>& E_;
   bool filter_;
+  std::vector<Unprotected_interval> enclosure_;
   std::vector<Isolation_leaf> leaves_;
 };
 
