@@ -59,18 +59,24 @@ struct Cardinal_parameters {
 /// p_{n+1} = p_{n-2} - (1 - 2/alpha)(p_n - p_{n-1}). With them the two end segments have
 /// r''' = 0 (they are parabolic arcs) and contribute nothing to eq. 10.
 /// \throws Invalid_input_error for fewer than 3 points or bad points; Precondition_error if alpha == 0.
-template <class Point_2>
-std::pair<Point_2, Point_2> cardinal_auxiliary_points(const std::vector<Point_2>& p,
-                                                      const typename CGAL::Kernel_traits<Point_2>::Kernel::FT& alpha) {
-  typedef typename CGAL::Kernel_traits<Point_2>::Kernel::FT FT;
-  internal::check_interpolation_input(p, 3, false, "cardinal_auxiliary_points");
-  internal::require(!CGAL::is_zero(alpha), "cardinal_auxiliary_points: alpha = 0 has no optimal auxiliary points (eqs. 16-17 divide by alpha)");
+namespace internal {
+template <class Point_2, class FT>
+std::pair<Point_2, Point_2> cardinal_auxiliary_points_unchecked(const std::vector<Point_2>& p, const FT& alpha) {
   const std::size_t n = p.size() - 1;
   const FT c = FT(1) - FT(2) / alpha;                                              // eq. 19
   const Point_2 start(c * (p[1].x() - p[0].x()) + p[2].x(), c * (p[1].y() - p[0].y()) + p[2].y());
   const Point_2 end(p[n - 2].x() - c * (p[n].x() - p[n - 1].x()),                 // eq. 20
                     p[n - 2].y() - c * (p[n].y() - p[n - 1].y()));
   return std::make_pair(start, end);
+}
+} // namespace internal
+
+template <class Point_2>
+std::pair<Point_2, Point_2> cardinal_auxiliary_points(const std::vector<Point_2>& p,
+                                                      const typename CGAL::Kernel_traits<Point_2>::Kernel::FT& alpha) {
+  internal::check_interpolation_input(p, 3, false, "cardinal_auxiliary_points");
+  internal::require(!CGAL::is_zero(alpha), "cardinal_auxiliary_points: alpha = 0 has no optimal auxiliary points (eqs. 16-17 divide by alpha)");
+  return internal::cardinal_auxiliary_points_unchecked(p, alpha);
 }
 
 /// The minimiser of the approximate curvature variation energy of eq. 10.
@@ -95,21 +101,22 @@ optimal_cardinal_parameters(const std::vector<Point_2>& p, bool closed = false) 
   const char* method = closed ? "optimal_cardinal_parameters (closed)" : "optimal_cardinal_parameters (open)";
   internal::check_interpolation_input(p, closed ? 3 : 4, closed, method);
   const internal::Cardinal_sums<FT> s = internal::cardinal_interior_sums<FT>(p, closed);
-  if (CGAL::is_zero(s.D))
+  const FT D = s.D(), M = s.M();
+  if (CGAL::is_zero(D))
     throw Invalid_input_error(internal::message(
         method, ": the denominator of eq. 18, sum |d_i|^2 with d_i = -p_i - p_{i+1} + p_{i+2} + p_{i+3}, is 0 "
         "(the data alternate so that every d_i vanishes): the energy of eq. 10 does not depend on alpha and "
         "has no unique minimiser"));
-  const FT alpha = -FT(2) * s.M / s.D; // eq. 18 (closed: same formula over all N segments)
+  const FT alpha = -FT(2) * M / D; // eq. 18 (closed: same formula over all N segments)
   if (!CGAL::is_positive(alpha))
     throw Invalid_input_error(internal::message(
         method, ": the optimal parameter of eq. 18 is alpha* = ", CGAL::to_double(alpha),
-        " <= 0 (sum d_i.m_i = ", CGAL::to_double(s.M), ", sum |d_i|^2 = ", CGAL::to_double(s.D),
+        " <= 0 (sum d_i.m_i = ", CGAL::to_double(M), ", sum |d_i|^2 = ", CGAL::to_double(D),
         "): the data fold back on themselves and no Cardinal spline with alpha > 0 minimises eq. 10; "
         "use a fixed alpha such as 1/2 (Catmull-Rom)"));
   Cardinal_parameters<K> out{alpha, p.front(), p.back(), s.energy(alpha), closed};
   if (!closed) {
-    const std::pair<Point_2, Point_2> aux = cardinal_auxiliary_points(p, alpha);
+    const std::pair<Point_2, Point_2> aux = internal::cardinal_auxiliary_points_unchecked(p, alpha);
     out.aux_start = aux.first;
     out.aux_end = aux.second;
     // With the optimal auxiliary points the two end segments contribute 0 (see the doc page):

@@ -15,6 +15,7 @@
 
 #include <fair/Errors.h>
 
+#include <CGAL/Lazy_exact_nt.h>
 #include <CGAL/number_utils.h>
 
 #include <cstddef>
@@ -23,24 +24,54 @@
 namespace fair {
 namespace internal {
 
-/// The three sums of eq. 10: D = sum |d_i|^2, M = sum d_i.m_i, S = sum |m_i|^2.
+/// The number type the sums of eq. 10 are accumulated in. For EPECK's lazy numbers the sums are
+/// accumulated directly in the exact type: a lazy sum of n terms would build a DAG of depth n
+/// (slow, and its exact evaluation recurses n deep); the result is wrapped back as one lazy number.
 template <class FT>
-struct Cardinal_sums {
-  FT D = FT(0), M = FT(0), S = FT(0);
+struct Cardinal_accumulator {
+  typedef FT Type;
+  static const FT& convert(const FT& x) { return x; }
+  static const FT& wrap(const FT& x) { return x; }
+};
+template <class ET>
+struct Cardinal_accumulator<CGAL::Lazy_exact_nt<ET>> {
+  typedef ET Type;
+  static const ET& convert(const CGAL::Lazy_exact_nt<ET>& x) { return CGAL::exact(x); }
+  static CGAL::Lazy_exact_nt<ET> wrap(const ET& x) { return CGAL::Lazy_exact_nt<ET>(x); }
+};
 
+/// The three sums of eq. 10: D = sum |d_i|^2, M = sum d_i.m_i, S = sum |m_i|^2.
+/// In double the sums carry the usual O(n eps) relative rounding error of recursive summation.
+template <class FT>
+class Cardinal_sums {
+  typedef Cardinal_accumulator<FT> Acc;
+  typedef typename Acc::Type AT;
+
+public:
   template <class Point_2>
   void add(const Point_2& q0, const Point_2& q1, const Point_2& q2, const Point_2& q3) {
-    // Work on coordinates, not on kernel constructions: with EPECK this keeps one lazy DAG per
-    // sum instead of one per intermediate vector, and with double it is a handful of flops.
-    const FT dx = q2.x() + q3.x() - q0.x() - q1.x(), dy = q2.y() + q3.y() - q0.y() - q1.y();
-    const FT mx = q1.x() - q2.x(), my = q1.y() - q2.y();
-    D += dx * dx + dy * dy;
-    M += dx * mx + dy * my;
-    S += mx * mx + my * my;
+    // Coordinates, not kernel constructions: a handful of flops in double, no lazy nodes in EPECK.
+    // (Copies: for EPECK, x() returns a temporary whose exact value must not be referenced.)
+    const AT x0 = Acc::convert(q0.x()), y0 = Acc::convert(q0.y());
+    const AT x1 = Acc::convert(q1.x()), y1 = Acc::convert(q1.y());
+    const AT x2 = Acc::convert(q2.x()), y2 = Acc::convert(q2.y());
+    const AT x3 = Acc::convert(q3.x()), y3 = Acc::convert(q3.y());
+    const AT dx = x2 + x3 - x0 - x1, dy = y2 + y3 - y0 - y1; // d = -q0 - q1 + q2 + q3 (eq. 8)
+    const AT mx = x1 - x2, my = y1 - y2;                       // m = q1 - q2
+    D_ += dx * dx + dy * dy;
+    M_ += dx * mx + dy * my;
+    S_ += mx * mx + my * my;
   }
 
+  FT D() const { return Acc::wrap(D_); }
+  FT M() const { return Acc::wrap(M_); }
+  FT S() const { return Acc::wrap(S_); }
+
   /// The energy of eq. 10 for the parameter alpha.
-  FT energy(const FT& alpha) const { return FT(36) * alpha * alpha * D + FT(144) * alpha * M + FT(144) * S; }
+  FT energy(const FT& alpha) const { return FT(36) * alpha * alpha * D() + FT(144) * alpha * M() + FT(144) * S(); }
+
+private:
+  AT D_ = AT(0), M_ = AT(0), S_ = AT(0);
 };
 
 /// The sums over the interior segments i = 0..n-3 of an open curve (the ones that do not touch an
