@@ -19,6 +19,7 @@
 #include <CGAL/number_utils.h>
 
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace fair {
@@ -44,10 +45,10 @@ struct Cardinal_accumulator<CGAL::Lazy_exact_nt<ET>> {
 /// In double the sums carry the usual O(n eps) relative rounding error of recursive summation.
 template <class FT>
 class Cardinal_sums {
+public:
   typedef Cardinal_accumulator<FT> Acc;
   typedef typename Acc::Type AT;
 
-public:
   template <class Point_2>
   void add(const Point_2& q0, const Point_2& q1, const Point_2& q2, const Point_2& q3) {
     // Coordinates, not kernel constructions: a handful of flops in double, no lazy nodes in EPECK.
@@ -56,6 +57,11 @@ public:
     const AT x1 = Acc::convert(q1.x()), y1 = Acc::convert(q1.y());
     const AT x2 = Acc::convert(q2.x()), y2 = Acc::convert(q2.y());
     const AT x3 = Acc::convert(q3.x()), y3 = Acc::convert(q3.y());
+    add_values(x0, y0, x1, y1, x2, y2, x3, y3);
+  }
+
+  void add_values(const AT& x0, const AT& y0, const AT& x1, const AT& y1, const AT& x2, const AT& y2, const AT& x3,
+                  const AT& y3) {
     const AT dx = x2 + x3 - x0 - x1, dy = y2 + y3 - y0 - y1; // d = -q0 - q1 + q2 + q3 (eq. 8)
     const AT mx = x1 - x2, my = y1 - y2;                       // m = q1 - q2
     D_ += dx * dx + dy * dy;
@@ -78,12 +84,34 @@ private:
 /// auxiliary point; eq. 15 / eq. 18), or over all N segments of a closed curve (indices mod N).
 template <class FT, class Point_2>
 Cardinal_sums<FT> cardinal_interior_sums(const std::vector<Point_2>& p, bool closed) {
+  typedef typename Cardinal_sums<FT>::Acc Acc;
+  typedef typename Cardinal_sums<FT>::AT AT;
   Cardinal_sums<FT> s;
   const std::size_t N = p.size();
+  if (std::is_same<AT, FT>::value) {
+    if (closed) {
+      for (std::size_t i = 0; i < N; ++i) s.add(p[(i + N - 1) % N], p[i], p[(i + 1) % N], p[(i + 2) % N]);
+    } else {
+      for (std::size_t i = 0; i + 3 < N; ++i) s.add(p[i], p[i + 1], p[i + 2], p[i + 3]);
+    }
+    return s;
+  }
+  // Lazy exact numbers: convert every coordinate once.
+  std::vector<AT> x, y;
+  x.reserve(N);
+  y.reserve(N);
+  for (const Point_2& q : p) {
+    x.push_back(Acc::convert(q.x()));
+    y.push_back(Acc::convert(q.y()));
+  }
   if (closed) {
-    for (std::size_t i = 0; i < N; ++i) s.add(p[(i + N - 1) % N], p[i], p[(i + 1) % N], p[(i + 2) % N]);
+    for (std::size_t i = 0; i < N; ++i) {
+      const std::size_t a = (i + N - 1) % N, b = (i + 1) % N, c = (i + 2) % N;
+      s.add_values(x[a], y[a], x[i], y[i], x[b], y[b], x[c], y[c]);
+    }
   } else {
-    for (std::size_t i = 0; i + 3 < N; ++i) s.add(p[i], p[i + 1], p[i + 2], p[i + 3]);
+    for (std::size_t i = 0; i + 3 < N; ++i)
+      s.add_values(x[i], y[i], x[i + 1], y[i + 1], x[i + 2], y[i + 2], x[i + 3], y[i + 3]);
   }
   return s;
 }
