@@ -205,6 +205,18 @@ TYPED_TEST(Classic_splines, ClampedSplineReproducesCubics) {
                        "line");
 }
 
+// Long systems (520 rows) take the solvers' DAG-pruning path for lazy exact numbers (see
+// classic_tridiagonal.h); the result must still be exact.
+TYPED_TEST(Classic_splines, LongNaturalAndPeriodicSplinesStayExact) {
+  typedef TypeParam K;
+  std::mt19937 rng(520);
+  const auto p = random_points<K>(rng, 520);
+  fair::Cubic_interpolating_spline_2<K> nat(p);
+  check_interpolation_and_continuity<K>(nat, 2);
+  fair::Cubic_interpolating_spline_2<K> per(p, fair::Spline_end_condition::periodic);
+  check_interpolation_and_continuity<K>(per, 2);
+}
+
 TYPED_TEST(Classic_splines, SplineRejectsBadInput) {
   typedef TypeParam K;
   typedef typename K::Point_2 P;
