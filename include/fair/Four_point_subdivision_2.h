@@ -26,8 +26,9 @@
 // always divisible by (1 + z)^4; it is divisible by (1 + z)^5 exactly when gamma = -3/128, our
 // default. The difference-scheme test (N. Dyn, "Subdivision schemes in CAGD", 1992: S_a is C^m if
 // the scheme of 2^m a(z) / (1 + z)^(m+1) is contractive) gives, with at most 8 iterated steps,
-// C2 for gamma in [-1/16, -1/256] and C3 for gamma in [-3/128, -9/256]; gamma = 0 is the C1 DLG
-// scheme. The relaxed scheme does not interpolate (old points move by gamma Delta^4).
+// C2 at every gamma of the grid k/256 in [-1/16, -1/256] and C3 on the grid points of
+// [-3/128, -9/256] (test_classic_approximants re-checks C2 at -1/16, -1/32, -3/128, -1/256 and
+// C3 at -3/128, -1/32, -9/256 in exact arithmetic); gamma = 0 is the C1 DLG scheme. The relaxed scheme does not interpolate (old points move by gamma Delta^4).
 //
 // Open polylines, end handling (documented choice): each round extends the current polygon by
 // phantom points on the cubic through its four end points (p_{-1} = 4 p_0 - 6 p_1 + 4 p_2 - p_3,
