@@ -46,6 +46,7 @@ std::string expect_parse_error(F f, const std::string& file, std::size_t line) {
     EXPECT_EQ(e.line(), line) << e.what();
     const std::string prefix = line ? file + ":" + std::to_string(line) + ": " : file + ": ";
     EXPECT_EQ(std::string(e.what()).rfind(prefix, 0), 0u) << e.what();
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "multi-line message: " << e.what();
     return e.what();
   } catch (const std::exception& e) {
     ADD_FAILURE() << "expected Parse_error at " << file << ":" << line << ", got " << e.what();

@@ -457,7 +457,9 @@ inline std::string curvature_plot_svg(const Sampled_curve& curve,
            "\" r=\"4.5\" fill=\"none\" stroke=\"#c0392b\" stroke-width=\"2\"/>\n";
     if (!m.label.empty()) {
       const bool to_left = X(m.s) > left + 0.75 * pw;
-      out += "<text x=\"" + px(to_left ? X(m.s) - 7 : X(m.s) + 7) + "\" y=\"" + px(Y(m.kappa) - 7) +
+      // Above the ring, or below it when the ring is near the top of the frame.
+      const double label_y = Y(m.kappa) - 7 < top + 12 ? Y(m.kappa) + 16 : Y(m.kappa) - 7;
+      out += "<text x=\"" + px(to_left ? X(m.s) - 7 : X(m.s) + 7) + "\" y=\"" + px(label_y) +
              "\" font-family=\"sans-serif\" font-size=\"10\" fill=\"#c0392b\"" +
              (to_left ? " text-anchor=\"end\"" : "") + ">" + internal::xml_escape(m.label) + "</text>\n";
     }

@@ -15,6 +15,7 @@
 #include <fair/Errors.h>
 #include <fair/io/internal/number_parsing.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstddef>
 #include <string>
@@ -65,7 +66,8 @@ public:
     Json_value v = value(0);
     skip_space();
     if (i_ != s_.size())
-      fail("trailing garbage " + quoted(s_.substr(i_, 20)) + " after the JSON value");
+      fail("trailing garbage " + quoted(s_.substr(i_, std::min<std::size_t>(20, s_.find('\n', i_) - i_))) +
+           " after the JSON value");
     return v;
   }
 

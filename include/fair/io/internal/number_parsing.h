@@ -37,9 +37,18 @@ struct Parsed_number {
 };
 
 /// Quotes `text` for an error message, shortening very long fields.
+/// Control characters are shown escaped so that the message stays on one line.
 inline std::string quoted(const std::string& text) {
-  if (text.size() <= 40) return "'" + text + "'";
-  return "'" + text.substr(0, 37) + "...'";
+  std::string shown;
+  for (char c : text.size() <= 40 ? text : text.substr(0, 37)) {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (c == '\n') shown += "\\n";
+    else if (c == '\r') shown += "\\r";
+    else if (c == '\t') shown += "\\t";
+    else if (u < 0x20 || u == 0x7f) shown += "\\x" + std::string(1, "0123456789abcdef"[u >> 4]) + "0123456789abcdef"[u & 15];
+    else shown += c;
+  }
+  return "'" + shown + (text.size() <= 40 ? "'" : "...'");
 }
 
 inline bool is_digit(char c) { return c >= '0' && c <= '9'; }

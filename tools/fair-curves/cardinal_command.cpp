@@ -1,0 +1,157 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// fair-curves cardinal: the Cardinal spline through a point file, with the curvature-variation-
+// minimising parameter and auxiliary points of J. Li (eqs. 18-20; doc/cardinal_splines.md), or a
+// given parameter. Writes the curve as cubic Bezier pieces (JSON, SVG, curvature plot).
+
+#include "registry.h"
+#include "tool_common.h"
+
+#include <fair/Cardinal_spline_2.h>
+#include <fair/Fairness_metrics.h>
+#include <fair/io/read_points.h>
+#include <fair/io/svg.h>
+#include <fair/io/write_json.h>
+
+#include <CGAL/Gmpq.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+
+namespace {
+
+struct Cardinal_options {
+  std::string input, alpha = "optimal", json_out, svg_out, plot_out, aux_start, aux_end;
+  bool closed = false, exact = false;
+};
+
+template <class K>
+void run_cardinal_in(const Cardinal_options& o) {
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  const fair::io::Point_file<K> data = fair::io::read_point_file<K>(o.input);
+  const bool closed = o.closed || data.closed;
+  const bool optimal = o.alpha == "optimal";
+  const bool explicit_aux = !o.aux_start.empty() || !o.aux_end.empty();
+  if (closed && explicit_aux)
+    throw CLI::ValidationError("--aux-start/--aux-end", "a closed curve has no auxiliary points");
+  if (explicit_aux && (o.aux_start.empty() || o.aux_end.empty()))
+    throw CLI::ValidationError("--aux-start/--aux-end", "give both auxiliary points or neither");
+  const std::size_t minimum = optimal ? (closed ? 3 : 4) : (closed ? 3 : (explicit_aux ? 2 : 3));
+  fair::io::check_point_file(data, minimum, closed, "fair-curves cardinal");
+
+  FT alpha;
+  if (optimal) {
+    alpha = fair::optimal_cardinal_parameters(data.points, closed).alpha;
+  } else {
+    alpha = FT(fair_curves::option_number(o.alpha, "--alpha"));
+  }
+  std::optional<fair::Cardinal_spline_2<K>> curve;
+  if (closed) {
+    curve.emplace(data.points, alpha, true);
+  } else if (explicit_aux) {
+    const fair_curves::Point_2 a = fair_curves::option_point(o.aux_start, "--aux-start");
+    const fair_curves::Point_2 b = fair_curves::option_point(o.aux_end, "--aux-end");
+    curve.emplace(data.points, alpha, P(a.x(), a.y()), P(b.x(), b.y()));
+  } else {
+    curve.emplace(data.points, alpha, false); // the auxiliary points of eqs. 19-20 for this alpha
+  }
+  const auto pieces = curve->bezier_pieces();
+  const FT energy_approx = curve->approximate_energy();
+  const fair::Quadrature_estimate e_t = curve->curvature_variation_energy(fair::Energy_measure::parameter);
+  const fair::Quadrature_estimate e_s = curve->curvature_variation_energy(fair::Energy_measure::arc_length);
+
+  nlohmann::json extra{{"method", "cardinal"},
+                       {"closed", closed},
+                       {"alpha", CGAL::to_double(alpha)},
+                       {"alpha_choice", optimal ? "optimal (Li eq. 18)" : "given"},
+                       {"energy_approx", CGAL::to_double(energy_approx)},
+                       {"energy_true", e_t.value},
+                       {"energy_true_error", e_t.error_bound},
+                       {"energy_true_arc_length", e_s.value},
+                       {"input", fair::io::points_to_json(data.points, closed)}};
+  if (o.exact) {
+    extra["alpha_exact"] = fair::io::internal::rational_text(alpha);
+    extra["energy_approx_exact"] = fair::io::internal::rational_text(energy_approx);
+  }
+  if (!closed) {
+    extra["aux_start"] = fair::io::point_to_json(curve->aux_start(), "aux_start");
+    extra["aux_end"] = fair::io::point_to_json(curve->aux_end(), "aux_end");
+  }
+  const nlohmann::json out = fair::io::curve_to_json(pieces, extra);
+
+  std::cout << "cardinal: " << data.points.size() << " points, " << (closed ? "closed" : "open") << ", "
+            << pieces.size() << " cubic pieces\n";
+  std::cout << "alpha = " << fair_curves::format_number(CGAL::to_double(alpha), 10)
+            << (o.exact ? " = " + fair::io::internal::rational_text(alpha) : std::string())
+            << (optimal ? " (optimal, eq. 18)" : " (given)") << "\n";
+  if (!closed) {
+    std::cout << "aux_start = (" << fair_curves::format_number(CGAL::to_double(curve->aux_start().x()), 10) << ", "
+              << fair_curves::format_number(CGAL::to_double(curve->aux_start().y()), 10) << ")"
+              << (explicit_aux ? " (given)" : " (eq. 19)") << "\n";
+    std::cout << "aux_end = (" << fair_curves::format_number(CGAL::to_double(curve->aux_end().x()), 10) << ", "
+              << fair_curves::format_number(CGAL::to_double(curve->aux_end().y()), 10) << ")"
+              << (explicit_aux ? " (given)" : " (eq. 20)") << "\n";
+  }
+  std::cout << "energy_approx (eq. 10) = " << fair_curves::format_number(CGAL::to_double(energy_approx), 10) << "\n";
+  std::cout << "energy_true (eq. 5, int (dk/dt)^2 dt) = " << fair_curves::format_number(e_t.value, 10)
+            << " (error estimate " << fair_curves::format_number(e_t.error_bound, 2) << ")\n";
+  std::cout << "energy_true_arc_length (int (dk/ds)^2 ds) = " << fair_curves::format_number(e_s.value, 10) << "\n";
+
+  std::string json_text, svg_text, plot_text;
+  if (!o.json_out.empty()) {
+    std::ostringstream s;
+    fair::io::write_json(s, out);
+    json_text = s.str();
+  }
+  if (!o.svg_out.empty() || !o.plot_out.empty()) {
+    fair_curves::Curve_case c;
+    c.title = o.input + ": Cardinal spline, alpha = " + fair_curves::format_number(CGAL::to_double(alpha), 6);
+    c.title_in_figure = true;
+    c.input_points = fair::io::to_xy(data.points);
+    const fair_curves::Curve_figures f = fair_curves::make_curve_figures(pieces, c);
+    svg_text = f.curve_svg;
+    plot_text = f.curvature_svg;
+  }
+  // Write only once everything has been computed: a failure leaves no partial output.
+  if (!o.json_out.empty()) {
+    if (o.json_out == "-") std::cout << json_text;
+    else fair::io::write_text_file(o.json_out, json_text);
+  }
+  if (!o.svg_out.empty()) fair::io::write_text_file(o.svg_out, svg_text);
+  if (!o.plot_out.empty()) fair::io::write_text_file(o.plot_out, plot_text);
+}
+
+void run_cardinal(const Cardinal_options& o) {
+  if (o.alpha != "optimal") fair_curves::option_number(o.alpha, "--alpha"); // usage error before any work
+  if (o.exact) run_cardinal_in<CGAL::Simple_cartesian<CGAL::Gmpq>>(o);
+  else run_cardinal_in<fair_curves::Kernel>(o);
+}
+
+} // namespace
+
+void register_cardinal_command(CLI::App& app) {
+  auto options = std::make_shared<Cardinal_options>();
+  CLI::App* sub = app.add_subcommand(
+      "cardinal", "Cardinal spline through a point file, with the curvature-variation-minimising parameter and "
+                  "auxiliary points of Li (eqs. 18-20), or a given parameter alpha = (1 - tension)/2");
+  sub->add_option("input", options->input, "the point file (.csv, .txt or .json)")->required();
+  sub->add_flag("--closed", options->closed, "closed (periodic) curve; no auxiliary points");
+  sub->add_option("--alpha", options->alpha,
+                  "'optimal' (default, eq. 18 / its closed analogue) or a value > 0 (1/2: Catmull-Rom); with a "
+                  "value and no --aux-*, the auxiliary points are the optimal ones for it (eqs. 19-20)");
+  sub->add_option("--aux-start", options->aux_start, "auxiliary point p_{-1} \"x,y\" (open curves, with --aux-end)");
+  sub->add_option("--aux-end", options->aux_end, "auxiliary point p_{n+1} \"x,y\" (open curves, with --aux-start)");
+  sub->add_flag("--exact", options->exact,
+                "compute in exact rational arithmetic (the input doubles / p/q values exactly); JSON gains "
+                "\"alpha_exact\" and \"energy_approx_exact\"");
+  sub->add_option("-o,--output", options->json_out, "write the curve as JSON ('-' for stdout)");
+  sub->add_option("--svg", options->svg_out, "draw the curve with its curvature comb");
+  sub->add_option("--plot", options->plot_out, "plot the curvature against arc length");
+  sub->callback([options] { run_cardinal(*options); });
+}
+FAIR_CURVES_COMMAND(register_cardinal_command)

@@ -1,0 +1,54 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// fair-curves demo: the gallery of built-in cases. Each method contributes its cases from its
+// own file demo_<method>.cpp through FAIR_CURVES_DEMO (see registry.h).
+
+#include "registry.h"
+
+#include <fair/io/gallery.h>
+
+#include <algorithm>
+#include <iostream>
+#include <memory>
+#include <string>
+
+namespace {
+
+struct Demo_options {
+  std::string out = "demo-out";
+  bool inline_svg = false;
+  bool list = false;
+};
+
+void run_demo(const Demo_options& o) {
+  std::vector<fair_curves::Demo_entry> entries = fair_curves::demo_registry();
+  std::stable_sort(entries.begin(), entries.end(), [](const fair_curves::Demo_entry& a, const fair_curves::Demo_entry& b) {
+    return a.order != b.order ? a.order < b.order : a.name < b.name;
+  });
+  if (o.list) {
+    for (const fair_curves::Demo_entry& e : entries) std::cout << e.order << ' ' << e.name << '\n';
+    return;
+  }
+  fair::io::Gallery gallery(
+      "fair: demo gallery",
+      "Fair interpolating planar curves, computed by the fair library. Each case shows the curve with its control "
+      "polygons (grey, dashed), its curvature comb (orange, teeth pointing away from the centre of curvature), the "
+      "input points (black) and marked points (red), then its signed curvature against arc length (piece joins "
+      "dashed), and a table of measured figures.");
+  for (const fair_curves::Demo_entry& e : entries) e.add(gallery);
+  gallery.write(o.out, o.inline_svg);
+  std::cout << "fair-curves demo: wrote " << o.out << "/index.html: " << gallery.section_count() << " sections, "
+            << gallery.case_count() << " cases\n";
+}
+
+} // namespace
+
+void register_demo_command(CLI::App& app) {
+  auto options = std::make_shared<Demo_options>();
+  CLI::App* sub = app.add_subcommand("demo", "Write the demo gallery (index.html with SVG figures) of every method");
+  sub->add_option("--out", options->out, "output directory (default demo-out)");
+  sub->add_flag("--inline", options->inline_svg, "embed the SVG figures in index.html instead of figures/*.svg");
+  sub->add_flag("--list", options->list, "only list the registered demo sections");
+  sub->callback([options] { run_demo(*options); });
+}
+FAIR_CURVES_COMMAND(register_demo_command)

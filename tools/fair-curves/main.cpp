@@ -1,0 +1,42 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// fair-curves: a thin command-line layer over the fair library. Each subcommand registers
+// itself from its own file (see registry.h). Exit codes: 0 success, 1 bad input data (a
+// missing or malformed file, a degenerate configuration: one message on stderr naming the file
+// and line), 2 usage error (unknown option, malformed option value).
+
+#include "registry.h"
+
+#include <fair/Errors.h>
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+int main(int argc, char** argv) {
+  CLI::App app{"fair-curves: fair interpolating planar curves (see doc/fair_curves_program.md)", "fair-curves"};
+  app.require_subcommand(1);
+  app.fallthrough(false);
+  // Registration order across files is unspecified: list the subcommands by name.
+  std::vector<fair_curves::Command_entry> commands = fair_curves::command_registry();
+  std::sort(commands.begin(), commands.end(),
+            [](const fair_curves::Command_entry& a, const fair_curves::Command_entry& b) { return a.name < b.name; });
+  for (const fair_curves::Command_entry& c : commands) c.add(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  } catch (const fair::Error& e) {
+    std::cerr << "fair-curves: error: " << e.what() << '\n';
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "fair-curves: error: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}
