@@ -14,7 +14,7 @@
 // the interval result contains 0. p(lower) and p(upper) have opposite signs (or one is exactly
 // 0, and then lower == upper), so the unique root lies in [lower, upper].
 //
-// Accuracy. The bracket is first grown from the Newton iterate by doubling steps until the
+// Accuracy. The bracket is first grown from the Newton iterate by geometric steps until the
 // interval signs are certain; it is then shrunk by bisection (exact integer evaluation at the
 // dyadic bisection point where the interval is inconclusive, internal/bernstein_dyadic.h) until
 // it is at most 8 ulps wide. So upper - lower <= 8 ulp(upper) always, and typically 1-2 ulps
@@ -31,6 +31,7 @@
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -98,7 +99,7 @@ struct Double_bracket {
 /// is called as exact_sign(x) -> int for a double x where the interval filter is inconclusive.
 ///
 /// Method: safeguarded Newton in double from `start`, then a certified bracket grown from the
-/// Newton iterate by doubling steps (interval signs), then shrunk by bisection (exact fallback)
+/// Newton iterate by geometric steps (interval signs), then shrunk by bisection (exact fallback)
 /// to at most `max_ulps` ulps (of its upper end; 1 means adjacent doubles). The returned [lower, upper] is inside [L, H] and contains the root.
 /// Must be called in round-to-nearest mode; protects the rounding mode itself.
 template <class ExactSign>
@@ -121,11 +122,16 @@ Double_bracket tighten_double_bracket(const CGAL::Interval_nt<false>* c, const d
   // Safeguarded Newton in double; [lo, hi] is only a guide here.
   double t = (start > L && start < H) ? start : L + (H - L) / 2;
   if (!(t > L && t < H)) return out; // no double strictly inside: [L, H] is already minimal
+  // Stop at the rounding noise of the double evaluation (a fraction of n eps max|b_i|): further
+  // iterates only wander inside the region where no floating-point sign is reliable.
   double lo = L, hi = H;
+  double noise = 0;
+  for (std::size_t i = 0; i < m; ++i) noise = std::max(noise, std::fabs(approx[i]));
+  noise *= 0.25 * double(m) * std::numeric_limits<double>::epsilon();
   for (int it = 0; it < 100; ++it) {
     double f, df;
     double_de_casteljau(approx, m, t, wd, f, df);
-    if (f == 0) break;
+    if (std::fabs(f) <= noise) break;
     if (sign_of(f) == s_low) lo = t; else hi = t;
     double tn = t - f / df;
     if (!(tn > lo && tn < hi)) tn = lo + (hi - lo) / 2;
@@ -153,12 +159,13 @@ Double_bracket tighten_double_bracket(const CGAL::Interval_nt<false>* c, const d
   };
   int s;
   if (interval_sign(t, s) && classify(t, s)) return out;
-  // Grow a certified end on each side of t by doubling steps, interval signs only; reaching L
-  // or H ends the search (their sides are known).
+  // Grow a certified end on each side of t by steps growing from one ulp by a factor 1.5
+  // (slower than doubling, so the bracket rarely overshoots 8 ulps and needs exact bisection),
+  // interval signs only; reaching L or H ends the search (their sides are known).
   for (int side = 0; side < 2; ++side) {
     double d = std::fabs(t) * std::numeric_limits<double>::epsilon();
     if (d < std::numeric_limits<double>::denorm_min()) d = std::numeric_limits<double>::denorm_min();
-    for (int k = 0; k < 2200; ++k, d *= 2) {
+    for (int k = 0; k < 2200; ++k, d *= 1.5) {
       if (side == 0 ? A >= t : B <= t) break; // this side is certified already
       const double x = side == 0 ? t - d : t + d;
       if (side == 0 ? x <= A : x >= B) break;
