@@ -25,9 +25,10 @@
 // levels (roots closer than 2^-4000) throws Non_convergence_error rather than loop.
 //
 // Refinement. refine() bisects an interval with exact sign evaluation (an interval de Casteljau
-// filter first, exact Gmpq Horner when the filter is inconclusive) until the requested width;
-// root_approximation() refines until both end points truncate to the same double, so the
-// returned double is within one ulp of the root.
+// filter first, exact integer de Casteljau at the dyadic bisection point when the filter is
+// inconclusive) until the requested width. root_approximation() shrinks the interval to two
+// adjacent doubles by double Newton iteration and an interval-certified bracket (as
+// certified_unique_root), so the returned double is within one ulp of the root.
 
 #ifndef FAIR_BERNSTEIN_ROOT_ISOLATION_H
 #define FAIR_BERNSTEIN_ROOT_ISOLATION_H
@@ -43,6 +44,7 @@
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <ostream>
@@ -211,7 +213,6 @@ private:
   void accept(const std::vector<CGAL::Gmpq>& witness, const std::vector<internal::Isolation_leaf>& leaves) {
     witness_ = witness;
     witness_intervals_.clear();
-    witness_power_.clear();
     intervals_.clear();
     sign_after_lower_.clear();
     for (const internal::Isolation_leaf& leaf : leaves) {
@@ -235,8 +236,8 @@ private:
     witness_intervals_ = internal::to_intervals(witness_);
     witness_approx_.clear();
     for (const internal::Unprotected_interval& c : witness_intervals_) witness_approx_.push_back(CGAL::to_double(c));
-    witness_power_ = Bernstein_polynomial<CGAL::Gmpq>(witness_).to_power_basis();
-    witness_integer_power_ = internal::integer_power_coefficients(witness_power_);
+    witness_integer_ = internal::integer_scaled(witness_);
+    integer_work_ = internal::Mpz_array(witness_.size() + 3);
     scratch_.resize(witness_.size());
   }
 
@@ -257,19 +258,20 @@ private:
     return exact_witness_sign(x);
   }
 
-  // Exact sign of the witness at x: integer Horner when x is dyadic (always, for the end points
-  // this class produces), rational Horner otherwise.
+  // Exact sign of the witness at x: integer homogeneous de Casteljau when x is dyadic (always,
+  // for the end points this class produces), rational de Casteljau otherwise.
   int exact_witness_sign(const CGAL::Gmpq& x) {
-    internal::Mpz_array k(1);
+    const std::size_t m = witness_.size();
     unsigned long e = 0;
-    if (internal::dyadic_parts(x, k[0], e)) return internal::sign_power_at_dyadic(witness_integer_power_, k[0], e);
-    return CGAL::sign(horner(witness_power_, x));
+    if (internal::dyadic_parts(x, integer_work_[m + 2], e))
+      return internal::sign_bernstein_at_dyadic(witness_integer_, integer_work_[m + 2], e, integer_work_);
+    return CGAL::sign(Bernstein_polynomial<CGAL::Gmpq>(witness_).evaluate(x));
   }
   int exact_witness_sign(double x) {
-    internal::Mpz_array k(1);
+    const std::size_t m = witness_.size();
     unsigned long e = 0;
-    internal::dyadic_parts(x, k[0], e);
-    return internal::sign_power_at_dyadic(witness_integer_power_, k[0], e);
+    internal::dyadic_parts(x, integer_work_[m + 2], e);
+    return internal::sign_bernstein_at_dyadic(witness_integer_, integer_work_[m + 2], e, integer_work_);
   }
 
   // If interval i has double end points, shrinks it to at most max_ulps ulps with the double Newton /
@@ -315,12 +317,12 @@ private:
   std::vector<Isolating_interval> intervals_;
   std::vector<int> sign_after_lower_;
   std::vector<CGAL::Gmpq> witness_;
-  // Lazily prepared for refinement: interval enclosures, double approximations and the power
-  // basis of the witness, and a scratch buffer.
+  // Lazily prepared for refinement: interval enclosures, double approximations and integer
+  // coefficients of the witness, and scratch buffers.
   std::vector<internal::Unprotected_interval> witness_intervals_;
   std::vector<double> witness_approx_;
-  internal::Q_polynomial witness_power_;
-  internal::Mpz_array witness_integer_power_;
+  internal::Mpz_array witness_integer_;  // the witness scaled to integer Bernstein coefficients
+  internal::Mpz_array integer_work_;
   std::vector<internal::Unprotected_interval> scratch_;
   bool used_square_free_ = false;
 };
@@ -335,6 +337,12 @@ std::vector<Isolating_interval> isolate_roots(const Bernstein_polynomial<NT>& p)
 /// internal/bernstein_unique_root.h for the method and accuracy).
 inline Unique_root certified_unique_root(const Bernstein_polynomial<double>& p) {
   return internal::certified_unique_root(p.coefficients().data(), p.coefficients().size());
+}
+
+/// The same on N = degree + 1 coefficients in a std::array: no heap allocation for N <= 32.
+template <std::size_t N>
+Unique_root certified_unique_root(const std::array<double, N>& b) {
+  return internal::certified_unique_root(b);
 }
 
 } // namespace fair

@@ -73,9 +73,9 @@ inline bool dyadic_parts(const CGAL::Gmpq& x, mpz_ptr k, unsigned long& e) {
   return true;
 }
 
-/// Integer power-basis coefficients c with c_i = D a_i for a common positive D (so the signs
-/// of sum c_i x^i and sum a_i x^i agree).
-inline Mpz_array integer_power_coefficients(const std::vector<CGAL::Gmpq>& a) {
+/// Integer coefficients c_i = D a_i for the common positive D = lcm of the denominators (so a
+/// polynomial with coefficients c has the signs of the one with coefficients a, in any basis).
+inline Mpz_array integer_scaled(const std::vector<CGAL::Gmpq>& a) {
   Mpz_array c(a.size());
   mpz_t D;
   mpz_init_set_ui(D, 1);
@@ -88,38 +88,18 @@ inline Mpz_array integer_power_coefficients(const std::vector<CGAL::Gmpq>& a) {
   return c;
 }
 
-/// Sign of sum c_i x^i at x = k / 2^e: the sign of sum c_i k^i 2^(e (n-i)) (homogeneous Horner).
-inline int sign_power_at_dyadic(const Mpz_array& c, mpz_srcptr k, unsigned long e) {
-  const std::size_t m = c.size();
-  if (m == 0) return 0;
-  mpz_t v, t;
-  mpz_init_set(v, c[m - 1]);
-  mpz_init(t);
-  for (std::size_t i = m - 1; i-- > 0;) {
-    mpz_mul(v, v, k);
-    mpz_mul_2exp(t, c[i], e * static_cast<unsigned long>(m - 1 - i));
-    mpz_add(v, v, t);
-  }
-  const int s = mpz_sgn(v);
-  mpz_clear(v);
-  mpz_clear(t);
-  return s;
-}
-
-/// Exact sign of the Bernstein polynomial with double coefficients b[0..m-1] at the double x in
-/// [0,1]: b_i = K_i 2^(E_i) are scaled to integers and de Casteljau is run homogeneously,
-/// w_i <- (2^e - k) w_i + k w_{i+1}, which multiplies p(x) by 2^(e n) > 0.
-inline int exact_sign_bernstein_at(const double* b, std::size_t m, double x) {
+/// Integer Bernstein coefficients B_i = 2^(-E) b_i of double coefficients (E the smallest
+/// exponent of a nonzero b_i), exact.
+inline Mpz_array integer_scaled(const double* b, std::size_t m) {
   Mpz_array w(m);
   long min_exp = 0;
   bool first = true;
-  std::vector<long> exps(m, 0);
   for (std::size_t i = 0; i < m; ++i) {
     if (b[i] == 0) continue;
     int ex = 0;
     std::frexp(b[i], &ex);
-    exps[i] = static_cast<long>(ex) - 53; // b_i = K_i 2^(ex - 53) with K_i an integer
-    if (first || exps[i] < min_exp) min_exp = exps[i];
+    const long e = static_cast<long>(ex) - 53; // b_i = K_i 2^(ex - 53) with K_i an integer
+    if (first || e < min_exp) min_exp = e;
     first = false;
   }
   for (std::size_t i = 0; i < m; ++i) {
@@ -127,21 +107,37 @@ inline int exact_sign_bernstein_at(const double* b, std::size_t m, double x) {
     int ex = 0;
     const double f = std::frexp(b[i], &ex);
     mpz_set_d(w[i], std::ldexp(f, 53));
-    mpz_mul_2exp(w[i], w[i], static_cast<unsigned long>(exps[i] - min_exp));
+    mpz_mul_2exp(w[i], w[i], static_cast<unsigned long>(static_cast<long>(ex) - 53 - min_exp));
   }
-  Mpz_array kd(3); // k, 2^e - k, scratch
-  unsigned long e = 0;
-  dyadic_parts(x, kd[0], e);
-  mpz_set_ui(kd[1], 1);
-  mpz_mul_2exp(kd[1], kd[1], e);
-  mpz_sub(kd[1], kd[1], kd[0]);
+  return w;
+}
+
+/// Sign of the Bernstein polynomial with integer coefficients B at x = k / 2^e, by homogeneous
+/// de Casteljau w_i <- (2^e - k) w_i + k w_{i+1}, which multiplies p(x) by 2^(e n) > 0.
+/// `work` is scratch space of B.size() + 2 integers.
+inline int sign_bernstein_at_dyadic(const Mpz_array& B, mpz_srcptr k, unsigned long e, Mpz_array& work) {
+  const std::size_t m = B.size();
+  for (std::size_t i = 0; i < m; ++i) mpz_set(work[i], B[i]);
+  mpz_ptr kc = work[m], tmp = work[m + 1];
+  mpz_set_ui(kc, 1);
+  mpz_mul_2exp(kc, kc, e);
+  mpz_sub(kc, kc, k); // 2^e - k
   for (std::size_t r = 1; r < m; ++r)
     for (std::size_t i = 0; i + r < m; ++i) {
-      mpz_mul(w[i], w[i], kd[1]);
-      mpz_mul(kd[2], w[i + 1], kd[0]);
-      mpz_add(w[i], w[i], kd[2]);
+      mpz_mul(work[i], work[i], kc);
+      mpz_mul(tmp, work[i + 1], k);
+      mpz_add(work[i], work[i], tmp);
     }
-  return mpz_sgn(w[0]);
+  return mpz_sgn(work[0]);
+}
+
+/// Exact sign of the Bernstein polynomial with double coefficients b[0..m-1] at the double x.
+inline int exact_sign_bernstein_at(const double* b, std::size_t m, double x) {
+  const Mpz_array B = integer_scaled(b, m);
+  Mpz_array work(m + 3);
+  unsigned long e = 0;
+  dyadic_parts(x, work[m + 2], e);
+  return sign_bernstein_at_dyadic(B, work[m + 2], e, work);
 }
 
 } // namespace internal
