@@ -269,8 +269,8 @@ public:
   /// (w < 1), at most 1 for a parabola or hyperbola (Sec. 3.1 of the paper).
   std::vector<Curvature_extremum> curvature_extrema() const {
     std::vector<Curvature_extremum> out;
-    if (has_constant_curvature()) return out;
     const Bernstein_polynomial<CGAL::Gmpq> E(exact_eq4());
+    if (E.is_zero()) return out; // circular arc: constant curvature, no isolated extrema
     Bernstein_root_isolation iso(E);
     for (std::size_t i = 0; i < iso.number_of_roots(); ++i) {
       const Isolating_interval I = iso[i];

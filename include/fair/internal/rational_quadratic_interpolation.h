@@ -32,6 +32,10 @@
 // t_lower == t_upper is the exact root (f(t) == 0 exactly). Hence the exact root lies in
 // [t_lower, t_upper]; t is a double inside it. In the filtered path the bracket is usually
 // 2 to 8 ulps wide (relative accuracy ~1e-15 for well-conditioned inputs).
+// Fallback: overflow or underflow of the double enclosures (coordinates beyond ~1e150 or below
+// ~1e-150) only makes the filter fail; the exact stage then decides, so there is no failure mode.
+// Unlike fair::certified_unique_root (Bernstein_root_isolation.h), which certifies the root of
+// the quartic with ROUNDED double coefficients, this certifies the root for the exact inputs.
 
 #ifndef FAIR_INTERNAL_RATIONAL_QUADRATIC_INTERPOLATION_H
 #define FAIR_INTERNAL_RATIONAL_QUADRATIC_INTERPOLATION_H
