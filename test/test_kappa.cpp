@@ -1,0 +1,448 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// Tests of fair::Kappa_curve_2 (rational kappa-curves, Yan-Schiller-Schaefer): the published
+// polynomial kappa-curve, the defining properties on seeded random data, circle reproduction
+// and its documented failure, warm starts, and bad or hard input.
+
+#include <fair/Kappa_curve_2.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Simple_cartesian<double> Kd;
+typedef Kd::Point_2 Pd;
+
+template <class K>
+typename K::Point_2 pt(double x, double y) {
+  return typename K::Point_2(typename K::FT(x), typename K::FT(y));
+}
+
+template <class K>
+class Kappa_typed : public ::testing::Test {};
+typedef ::testing::Types<Kd, CGAL::Exact_predicates_inexact_constructions_kernel,
+                         CGAL::Exact_predicates_exact_constructions_kernel, CGAL::Simple_cartesian<CGAL::Gmpq>>
+    Kernels;
+TYPED_TEST_SUITE(Kappa_typed, Kernels);
+
+// Yan et al. 2017 / the rational kappa-curve paper (w = 1): the open polynomial kappa-curve
+// through (-1,0), (0,1), (1,0), (2,1) has the pieces {(-1,0), (-0.08187, 1.71183), (0.5,0.5)}
+// and {(0.5,0.5), (1.08187, -0.711831), (2,1)}.
+TYPED_TEST(Kappa_typed, PublishedPolynomialKappaCurve) {
+  typedef TypeParam K;
+  const std::vector<typename K::Point_2> q = {pt<K>(-1, 0), pt<K>(0, 1), pt<K>(1, 0), pt<K>(2, 1)};
+  const fair::Kappa_curve_2<K> curve(q);
+  ASSERT_EQ(curve.number_of_pieces(), 2u);
+  EXPECT_TRUE(curve.report().converged) << curve.report();
+  EXPECT_LE(curve.report().residual, 1e-12);
+  const double expected[2][3][2] = {{{-1, 0}, {-0.08187, 1.71183}, {0.5, 0.5}},
+                                    {{0.5, 0.5}, {1.08187, -0.711831}, {2, 1}}};
+  for (int j = 0; j < 2; ++j) {
+    EXPECT_EQ(CGAL::to_double(curve.piece(j).weight()), 1.0);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(CGAL::to_double(curve.piece(j).control_point(k).x()), expected[j][k][0], 6e-6) << j << " " << k;
+      EXPECT_NEAR(CGAL::to_double(curve.piece(j).control_point(k).y()), expected[j][k][1], 6e-6) << j << " " << k;
+    }
+  }
+  // C0 by construction: the shared end point is the same point.
+  EXPECT_TRUE(curve.piece(0).target() == curve.piece(1).source());
+  // The ends of an open curve are the first and last input points (Sec. 6), exactly.
+  EXPECT_TRUE(curve.piece(0).source() == q.front());
+  EXPECT_TRUE(curve.piece(1).target() == q.back());
+  // Q_i is the (certified) maximum of |kappa| of its piece, at t_i.
+  for (std::size_t j = 0; j < 2; ++j) {
+    const auto ext = curve.piece(j).curvature_extrema();
+    ASSERT_EQ(ext.size(), 1u);
+    EXPECT_EQ(ext[0].kind, fair::Curvature_extremum_kind::MAXIMUM);
+    EXPECT_NEAR(ext[0].t, curve.t(j), 1e-9);
+  }
+}
+
+// ------------------------------------------------------------------ helpers (double kernel)
+
+struct Check {
+  double interpolation = 0, g1 = 0, kappa = 0;
+};
+
+Check check_curve(const fair::Kappa_curve_2<Kd>& c) {
+  Check out;
+  const std::size_t n = c.number_of_pieces();
+  double scale = 0;
+  for (const Pd& p : c.points()) scale = std::max(scale, std::max(std::abs(p.x()), std::abs(p.y())));
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto& pc = c.piece(j);
+    const Pd q = c.points()[c.point_index(j)];
+    const Pd p = pc.point(c.t(j));
+    out.interpolation = std::max(out.interpolation, std::hypot(p.x() - q.x(), p.y() - q.y()) / scale);
+    if (j + 1 < n || c.is_closed()) {
+      const auto& nx = c.piece((j + 1) % n);
+      EXPECT_TRUE(pc.target() == nx.source());
+      // G1: P_{j,1}, E, P_{j+1,1} collinear (relative to the lengths involved).
+      const auto a = pc.control_point(1), e = pc.target(), b = nx.control_point(1);
+      const double cr = (e.x() - a.x()) * (b.y() - e.y()) - (e.y() - a.y()) * (b.x() - e.x());
+      const double l1 = std::hypot(e.x() - a.x(), e.y() - a.y()), l2 = std::hypot(b.x() - e.x(), b.y() - e.y());
+      out.g1 = std::max(out.g1, std::abs(cr) / (l1 * l2));
+      // |kappa| continuity.
+      const double k1 = std::abs(pc.curvature_at_target()), k2 = std::abs(nx.curvature_at_source());
+      out.kappa = std::max(out.kappa, std::abs(k1 - k2) / (k1 + k2));
+    }
+  }
+  return out;
+}
+
+std::vector<Pd> random_star(std::mt19937& g, std::size_t n, double roughness) {
+  std::uniform_real_distribution<double> U(-1, 1);
+  const double a1 = U(g), a2 = U(g), a3 = U(g), ph = U(g);
+  std::vector<Pd> p;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * (i + 0.3 * U(g)) / n;
+    const double r = 1 + roughness * (0.3 * a1 * std::sin(2 * a + ph) + 0.2 * a2 * std::cos(3 * a) + 0.1 * a3 * std::sin(5 * a));
+    p.push_back(Pd(r * std::cos(a), 0.7 * r * std::sin(a)));
+  }
+  return p;
+}
+
+// Spiky star: every point is a corner (alternately convex and concave), the data the
+// kappa-curve is designed for (input points at curvature maxima).
+std::vector<Pd> spiky_star(std::mt19937& g, std::size_t n, double amplitude) {
+  std::uniform_real_distribution<double> U(0, 1);
+  std::vector<Pd> p;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * (i + 0.2 * (U(g) - 0.5)) / n;
+    const double r = 1 + amplitude * (i % 2 ? 1 : -1) * (0.5 + U(g));
+    p.push_back(Pd(r * std::cos(a), r * std::sin(a)));
+  }
+  return p;
+}
+
+// ------------------------------------------------------------------ properties
+
+TEST(Kappa, PropertiesOnRandomClosedCurves) {
+  std::mt19937 g(12345);
+  for (int trial = 0; trial < 40; ++trial) {
+    const std::size_t n = 5 + g() % 8;
+    for (auto mode : {fair::Kappa_weights::UNIT, fair::Kappa_weights::AUTOMATIC, fair::Kappa_weights::FIXED}) {
+      fair::Kappa_curve_options o;
+      o.closed = true;
+      o.weights = mode;
+      if (mode == fair::Kappa_weights::FIXED) o.fixed_weights.assign(n, 1.5);
+      const fair::Kappa_curve_2<Kd> c(random_star(g, n, 1.0), o);
+      ASSERT_EQ(c.number_of_pieces(), n);
+      const Check k = check_curve(c);
+      // Interpolation and G1 hold to rounding in every case (the solver restores them).
+      EXPECT_LE(k.interpolation, 1e-12) << trial << c.report();
+      EXPECT_LE(k.g1, 1e-9) << trial << c.report();
+      if (c.report().converged) {
+        EXPECT_LE(k.kappa, 1e-9) << trial << c.report();
+        if (mode != fair::Kappa_weights::AUTOMATIC) {
+          // w >= 1: Q_i is the certified maximum of |kappa| of its piece (Sec. 3.2).
+          for (std::size_t j = 0; j < n; ++j) {
+            const auto ext = c.piece(j).curvature_extrema();
+            ASSERT_EQ(ext.size(), 1u) << "t " << c.t(j) << " " << c.report();
+            EXPECT_EQ(ext[0].kind, fair::Curvature_extremum_kind::MAXIMUM);
+            EXPECT_NEAR(ext[0].t, c.t(j), 1e-8);
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(Kappa, CornerDataConverges) {
+  // Points at corners (the intended use): with unit, fixed and automatic weights, open and
+  // closed, the solver reaches 1e-12 on (nearly) all inputs and the defining properties hold.
+  // The few failures are reported (converged == false), never silent.
+  std::mt19937 g(7);
+  int converged = 0, total = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    const std::size_t n = 6 + 2 * (trial % 20);
+    for (auto mode : {fair::Kappa_weights::UNIT, fair::Kappa_weights::AUTOMATIC, fair::Kappa_weights::FIXED}) {
+      fair::Kappa_curve_options o;
+      o.closed = trial % 3 != 0;
+      o.weights = mode;
+      o.fixed_weights.assign(n, 1.0 + 0.1 * (trial % 7));
+      const fair::Kappa_curve_2<Kd> c(spiky_star(g, n, 0.05 + 0.02 * (trial % 5)), o);
+      ++total;
+      const Check k = check_curve(c);
+      EXPECT_LE(k.interpolation, 1e-12);
+      EXPECT_LE(k.g1, 1e-9);
+      if (!c.report().converged) {
+        EXPECT_TRUE(c.report().residual > o.tolerance || c.report().bounds_active > 0) << c.report();
+        continue;
+      }
+      ++converged;
+      EXPECT_LE(c.report().residual, 1e-12);
+      EXPECT_LE(k.kappa, 1e-9);
+    }
+  }
+  EXPECT_GE(converged, total * 9 / 10) << converged << " of " << total;
+}
+
+// ------------------------------------------------------------------ circles (Sec. 4.4, 8)
+
+// Points on a circle, non-uniformly spaced, consecutive central angles < pi and every piece
+// within the 120 degrees that the clamp 1/2 allows: automatic weights reproduce the circle.
+TEST(Kappa, CircleReproduction) {
+  std::mt19937 g(2024);
+  std::uniform_real_distribution<double> U(0, 1);
+  int cases = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const std::size_t n = 4 + g() % 12;
+    std::vector<double> gaps(n);
+    double s = 0;
+    for (double& x : gaps) { x = 0.6 + 0.8 * U(g); s += x; }
+    bool ok = true;
+    for (double& x : gaps) { x *= 2 * M_PI / s; ok = ok && x < 0.55 * M_PI; }
+    if (!ok) continue;
+    ++cases;
+    const double cx = 10 * (U(g) - 0.5), cy = 10 * (U(g) - 0.5), R = std::pow(10.0, 4 * U(g) - 2);
+    double a = 2 * M_PI * U(g);
+    std::vector<Pd> p;
+    for (std::size_t i = 0; i < n; ++i) { p.push_back(Pd(cx + R * std::cos(a), cy + R * std::sin(a))); a += gaps[i]; }
+    fair::Kappa_curve_options o;
+    o.closed = true;
+    o.weights = fair::Kappa_weights::AUTOMATIC;
+    const fair::Kappa_curve_2<Kd> c(p, o);
+    ASSERT_TRUE(c.report().converged) << trial << " " << c.report();
+    double dev = 0;
+    for (const auto& pc : c.pieces())
+      for (int k = 0; k <= 8; ++k) {
+        const Pd x = pc.point(k / 8.0);
+        dev = std::max(dev, std::abs(std::hypot(x.x() - cx, x.y() - cy) - R) / R);
+      }
+    EXPECT_LE(dev, 1e-12) << trial << " n " << n << " " << c.report();
+  }
+  EXPECT_GT(cases, 100);
+}
+
+TEST(Kappa, CircleReproductionThreePointsEquilateral) {
+  // Three points: only the equilateral triangle gives pieces of 120 degrees (Sec. 4.4.1).
+  std::vector<Pd> p;
+  for (int i = 0; i < 3; ++i) p.push_back(Pd(std::cos(2 * M_PI * i / 3 + 0.3), std::sin(2 * M_PI * i / 3 + 0.3)));
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  o.weights = fair::Kappa_weights::AUTOMATIC;
+  const fair::Kappa_curve_2<Kd> c(p, o);
+  ASSERT_TRUE(c.report().converged) << c.report();
+  for (const auto& pc : c.pieces()) {
+    EXPECT_NEAR(CGAL::to_double(pc.weight()), 0.5, 1e-12);
+    for (int k = 0; k <= 8; ++k) {
+      const Pd x = pc.point(k / 8.0);
+      EXPECT_NEAR(std::hypot(x.x(), x.y()), 1.0, 1e-12);
+    }
+  }
+}
+
+// Sec. 8 / Fig. 12: with a central angle above pi the curve is not the circle.
+TEST(Kappa, CircleFailureCaseCentralAngleAbovePi) {
+  const double angles[4] = {0.0, 0.5, 1.2, 2.0};  // last gap 2 pi - 2 > pi
+  std::vector<Pd> p;
+  for (double a : angles) p.push_back(Pd(std::cos(a), std::sin(a)));
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  o.weights = fair::Kappa_weights::AUTOMATIC;
+  const fair::Kappa_curve_2<Kd> c(p, o);
+  double dev = 0;
+  for (const auto& pc : c.pieces())
+    for (int k = 0; k <= 16; ++k) {
+      const Pd x = pc.point(k / 16.0);
+      dev = std::max(dev, std::abs(std::hypot(x.x(), x.y()) - 1));
+    }
+  EXPECT_GT(dev, 1e-3) << c.report();
+  EXPECT_LE(check_curve(c).interpolation, 1e-12);
+}
+
+// ------------------------------------------------------------------ warm start
+
+TEST(Kappa, WarmStartAfterMovingOnePoint) {
+  std::mt19937 g(99);
+  std::vector<Pd> p = spiky_star(g, 40, 0.1);
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  fair::Kappa_curve_2<Kd> c(p, o);
+  ASSERT_TRUE(c.report().converged) << c.report();
+  const std::size_t cold_iterations = c.report().iterations + c.report().refinement_passes;
+  p[7] = Pd(p[7].x() * 1.02, p[7].y() * 1.02);
+  c.move_point(7, p[7]);
+  EXPECT_TRUE(c.report().converged) << c.report();
+  EXPECT_TRUE(c.report().warm_started);
+  EXPECT_LT(c.report().iterations + c.report().refinement_passes, cold_iterations);
+  const fair::Kappa_curve_2<Kd> cold(p, o);
+  ASSERT_TRUE(cold.report().converged);
+  for (std::size_t j = 0; j < c.number_of_pieces(); ++j) {
+    EXPECT_NEAR(c.t(j), cold.t(j), 1e-8);
+    EXPECT_NEAR(c.piece(j).control_point(1).x(), cold.piece(j).control_point(1).x(), 1e-8);
+  }
+  EXPECT_LE(check_curve(c).interpolation, 1e-12);
+}
+
+// ------------------------------------------------------------------ bad and hard input
+
+template <class F>
+std::string error_message(F f) {
+  try {
+    f();
+  } catch (const fair::Invalid_input_error& e) {
+    return e.what();
+  }
+  return "no Invalid_input_error";
+}
+
+TEST(Kappa, BadInput) {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  EXPECT_NE(error_message([] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1)}); }).find("at least 3"), std::string::npos);
+  EXPECT_NE(error_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(nan, 1), Pd(2, 0)}); }).find("non-finite"),
+            std::string::npos);
+  EXPECT_NE(error_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, inf), Pd(2, 0)}); }).find("non-finite"),
+            std::string::npos);
+  EXPECT_NE(error_message([] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(1, 1), Pd(2, 0)}); }).find("coincide"),
+            std::string::npos);
+  fair::Kappa_curve_options closed;
+  closed.closed = true;
+  EXPECT_NE(error_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 0), Pd(0, 0)}, closed); })
+                .find("coincide"),
+            std::string::npos);
+  EXPECT_NE(error_message([] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 2), Pd(5, 5)}); }).find("collinear"),
+            std::string::npos);
+  EXPECT_NE(error_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 0), Pd(3, 0), Pd(2, 0)}, closed); })
+                .find("collinear"),
+            std::string::npos);
+  fair::Kappa_curve_options fixed;
+  fixed.weights = fair::Kappa_weights::FIXED;
+  fixed.fixed_weights = {1, 1};
+  EXPECT_NE(error_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 0)}, fixed); }).find("one weight"),
+            std::string::npos);
+  fixed.fixed_weights = {1, -2, 1};
+  EXPECT_NE(error_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 0)}, fixed); }).find("-2"),
+            std::string::npos);
+  fair::Kappa_curve_options aut;
+  aut.weights = fair::Kappa_weights::AUTOMATIC;
+  aut.tension = {1, nan, 1};
+  EXPECT_NE(error_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 0)}, aut); }).find("tension"),
+            std::string::npos);
+}
+
+TEST(Kappa, PartlyCollinearPointsGiveAValidCurve) {
+  // Three and four collinear points among others (open and closed).
+  for (bool closed : {false, true}) {
+    fair::Kappa_curve_options o;
+    o.closed = closed;
+    const std::vector<Pd> p = {Pd(0, 0), Pd(1, 0), Pd(2, 0), Pd(3, 0), Pd(4, 1), Pd(2, 3), Pd(0, 2)};
+    const fair::Kappa_curve_2<Kd> c(p, o);
+    const Check k = check_curve(c);
+    EXPECT_LE(k.interpolation, 1e-12) << c.report();
+    EXPECT_LE(k.g1, 1e-9);
+  }
+}
+
+TEST(Kappa, HugeAndTinyCoordinatesScale) {
+  const std::vector<Pd> base = {Pd(0, 0), Pd(1, 0.2), Pd(2, 1.5), Pd(0.5, 2.5), Pd(-1, 1)};
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  const fair::Kappa_curve_2<Kd> ref(base, o);
+  ASSERT_TRUE(ref.report().converged);
+  for (double s : {1e150, 1e-150}) {
+    std::vector<Pd> p;
+    for (const Pd& q : base) p.push_back(Pd(q.x() * s, q.y() * s));
+    const fair::Kappa_curve_2<Kd> c(p, o);
+    EXPECT_TRUE(c.report().converged) << s << c.report();
+    for (std::size_t j = 0; j < c.number_of_pieces(); ++j)
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(c.piece(j).control_point(k).x() / s, ref.piece(j).control_point(k).x(), 1e-10) << s;
+        EXPECT_NEAR(c.piece(j).control_point(k).y() / s, ref.piece(j).control_point(k).y(), 1e-10) << s;
+      }
+  }
+}
+
+// Fig. 9: moving the 2nd and 4th points together creates a cusp at an input point; the curve
+// stays valid (finite, interpolating, G1) all the way.
+TEST(Kappa, CuspFromPointsMovingTogether) {
+  for (auto mode : {fair::Kappa_weights::UNIT, fair::Kappa_weights::AUTOMATIC}) {
+    for (double d : {1.0, 0.5, 0.2, 0.1, 0.03, 0.01, 0.001}) {
+      const std::vector<Pd> p = {Pd(-2, 0), Pd(-d, 1), Pd(0, 2.5), Pd(d, 1), Pd(2, 0)};
+      fair::Kappa_curve_options o;
+      o.weights = mode;
+      const fair::Kappa_curve_2<Kd> c(p, o);
+      const Check k = check_curve(c);
+      EXPECT_LE(k.interpolation, 1e-12) << d << c.report();
+      EXPECT_LE(k.g1, 1e-9) << d;
+      for (const auto& pc : c.pieces())
+        for (int i = 0; i < 3; ++i) EXPECT_TRUE(std::isfinite(pc.control_point(i).x()));
+    }
+  }
+}
+
+TEST(Kappa, NonConvergenceIsReportedOrThrown) {
+  std::mt19937 g(5);
+  const std::vector<Pd> p = random_star(g, 12, 1.0);
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  o.refinement_passes = 0;
+  o.max_iterations = 0;
+  const fair::Kappa_curve_2<Kd> c(p, o);
+  EXPECT_FALSE(c.report().converged);
+  EXPECT_GT(c.report().residual, o.tolerance);
+  EXPECT_LE(check_curve(c).interpolation, 1e-12);  // still a valid interpolating G1 curve
+  o.throw_on_non_convergence = true;
+  EXPECT_THROW(fair::Kappa_curve_2<Kd>(p, o), fair::Non_convergence_error);
+}
+
+TEST(Kappa, HundredThousandPoints) {
+  std::mt19937 g(1);
+  const std::vector<Pd> p = spiky_star(g, 100000, 0.05);
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  const fair::Kappa_curve_2<Kd> c(p, o);
+  ASSERT_EQ(c.number_of_pieces(), 100000u);
+  EXPECT_TRUE(c.report().converged) << c.report();
+  const Check k = check_curve(c);
+  EXPECT_LE(k.interpolation, 1e-12) << c.report();
+  EXPECT_LE(k.g1, 1e-9);
+}
+
+// Seeded stress: thousands of random inputs, each a valid finite curve or a typed error.
+TEST(Kappa, RandomStress) {
+  std::mt19937 g(31337);
+  std::uniform_real_distribution<double> U(-1, 1);
+  int curves = 0, errors = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const std::size_t n = 3 + g() % 9;
+    std::vector<Pd> p;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i > 0 && g() % 10 == 0) p.push_back(Pd(p.back().x() + 1e-9 * U(g), p.back().y()));  // near duplicates
+      else p.push_back(Pd(U(g), U(g)));
+    }
+    fair::Kappa_curve_options o;
+    o.closed = g() % 2;
+    o.weights = static_cast<fair::Kappa_weights>(g() % 3);
+    o.fixed_weights.assign(p.size(), 0.3 + 2 * std::abs(U(g)));
+    o.max_iterations = 40;
+    try {
+      const fair::Kappa_curve_2<Kd> c(p, o);
+      ++curves;
+      EXPECT_TRUE(std::isfinite(c.report().residual));
+      for (const auto& pc : c.pieces()) {
+        for (int i = 0; i < 3; ++i)
+          ASSERT_TRUE(std::isfinite(pc.control_point(i).x()) && std::isfinite(pc.control_point(i).y()));
+        ASSERT_TRUE(std::isfinite(CGAL::to_double(pc.weight())) && pc.weight() > 0);
+      }
+      for (std::size_t j = 0; j < c.number_of_pieces(); ++j) ASSERT_TRUE(c.t(j) > 0 && c.t(j) < 1);
+    } catch (const fair::Error&) {
+      ++errors;
+    }
+  }
+  EXPECT_GT(curves, 1500);
+}
+
+} // namespace
