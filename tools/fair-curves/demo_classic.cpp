@@ -26,7 +26,8 @@ using fair_curves::Point_2;
 typedef fair::Bezier_2<Kernel> Piece;
 
 // The upper unit semicircle from (-1,0) over (0,1) to (1,0), 9 samples, continued by the flat
-// parabola x = 1 + y^2/20 (tangent continuous at (1,0), curvature 1/10 there instead of 1),
+// parabola x = 1 - y^2/20 turning the same way (tangent continuous at (1,0), curvature 1/10
+// there instead of 1),
 // sampled with about the same spacing.
 std::vector<Point_2> semicircle_and_parabola() {
   std::vector<Point_2> p;
@@ -37,7 +38,7 @@ std::vector<Point_2> semicircle_and_parabola() {
   }
   for (int k = 1; k <= 6; ++k) {
     const double y = -0.39 * k;
-    p.push_back(Point_2(1 + y * y / 20, y));
+    p.push_back(Point_2(1 - y * y / 20, y));
   }
   return p;
 }
