@@ -217,6 +217,56 @@ TYPED_TEST(Classic_splines, LongNaturalAndPeriodicSplinesStayExact) {
   check_interpolation_and_continuity<K>(per, 2);
 }
 
+// Collinear data: every construction is an affine combination along the line, so all control
+// points stay on it (exactly in an exact kernel, decided by the exact orientation predicate).
+TYPED_TEST(Classic_splines, CollinearDataStayOnTheLine) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  std::vector<P> p;
+  for (int x : {0, 1, 3, 4, 9, 10, 14}) p.push_back(P(FT(x), FT(2 * x + 1)));
+  const P a(0, 1), b(1, 3);
+  for (fair::Spline_end_condition e : {fair::Spline_end_condition::natural, fair::Spline_end_condition::periodic}) {
+    fair::Cubic_interpolating_spline_2<K> s(p, e);
+    fair::Catmull_rom_2<K> c(p, e == fair::Spline_end_condition::periodic);
+    for (const auto* pieces : {&s.pieces(), &c.pieces()})
+      for (const auto& piece : *pieces)
+        for (const P& q : piece.control_points()) {
+          if (is_exact<K>())
+            EXPECT_EQ(CGAL::orientation(a, b, q), CGAL::COLLINEAR);
+          else
+            EXPECT_NEAR(CGAL::to_double(q.y()), 2 * CGAL::to_double(q.x()) + 1, 1e-12 * (1 + std::fabs(CGAL::to_double(q.y()))));
+        }
+  }
+}
+
+// Scale invariance over 600 orders of magnitude (double kernels): the same data scaled by
+// 1e-150 and 1e150 give the same curve scaled, to rounding.
+TYPED_TEST(Classic_splines, TinyAndHugeCoordinates) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  if (is_exact<K>()) return;  // the exact kernels are scale-exact by construction
+  std::mt19937 rng(3);
+  const auto base = random_points<K>(rng, 9);
+  for (double scale : {1e-150, 1e150}) {
+    std::vector<P> p;
+    for (const P& q : base) p.push_back(P(q.x() * scale, q.y() * scale));
+    for (fair::Knot_spacing sp : {fair::Knot_spacing::uniform, fair::Knot_spacing::centripetal, fair::Knot_spacing::chordal}) {
+      fair::Cubic_interpolating_spline_2<K> s0(base, fair::Spline_end_condition::natural, sp);
+      fair::Cubic_interpolating_spline_2<K> s1(p, fair::Spline_end_condition::natural, sp);
+      fair::Catmull_rom_2<K> c0(base, true, sp), c1(p, true, sp);
+      for (std::size_t i = 0; i < s0.pieces().size(); ++i) {
+        const P a = s0.pieces()[i].point(FT(0.3)), b = s1.pieces()[i].point(FT(0.3));
+        EXPECT_NEAR(CGAL::to_double(b.x()) / scale, CGAL::to_double(a.x()), 1e-9 * (1 + std::fabs(CGAL::to_double(a.x()))));
+        EXPECT_NEAR(CGAL::to_double(b.y()) / scale, CGAL::to_double(a.y()), 1e-9 * (1 + std::fabs(CGAL::to_double(a.y()))));
+        const P c = c0.pieces()[i].point(FT(0.7)), d = c1.pieces()[i].point(FT(0.7));
+        EXPECT_NEAR(CGAL::to_double(d.x()) / scale, CGAL::to_double(c.x()), 1e-9 * (1 + std::fabs(CGAL::to_double(c.x()))));
+      }
+    }
+  }
+}
+
 TYPED_TEST(Classic_splines, SplineRejectsBadInput) {
   typedef TypeParam K;
   typedef typename K::Point_2 P;
