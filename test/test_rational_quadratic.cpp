@@ -153,6 +153,10 @@ TYPED_TEST(Rational_quadratic_test, CircularArcsHaveConstantCurvature) {
     EXPECT_NEAR(c.curvature_at_target(), 1.0, 1e-14);
     // eq. 15 reproduces the circle's weight, and the conic is a circle: (a-c)^2 + b^2 = 0.
     EXPECT_TRUE(same<K>(c.minimum_eccentricity_weight_squared(), c.weight() * c.weight()));
+    if constexpr (is_exact<K>()) {
+      typedef typename fair::Rational_quadratic_bezier_2<K>::Sqrt_extension_FT S;
+      EXPECT_EQ(CGAL::compare(c.minimum_eccentricity_weight_sqrt_extension(), S(c.weight())), CGAL::EQUAL);
+    }
     EXPECT_NEAR(c.minimum_eccentricity_weight(), CGAL::to_double(c.weight()), 1e-15);
     const std::array<FT, 6> e = c.implicit_coefficients();
     EXPECT_TRUE(same<K>(e[0], e[2]));
@@ -405,6 +409,13 @@ TYPED_TEST(Rational_quadratic_test, MinimumEccentricityWeight) {
     const FT expected = ((p2 - p0) * (p2 - p0)) / (FT(2) * ((p0 - p1) * (p0 - p1) + (p2 - p1) * (p2 - p1)));
     EXPECT_TRUE(same<K>(w2, expected));
     EXPECT_LT(CGAL::to_double(w2), 1.0); // < 1 in general position (the paper, after eq. 15)
+    if constexpr (is_exact<K>()) { // exact clamp decision of eq. 16: w_hat > 1/2 iff w_hat^2 > 1/4
+      typedef typename fair::Rational_quadratic_bezier_2<K>::Sqrt_extension_FT S;
+      const fair::Rational_quadratic_bezier_2<K> piece(p0, p1, p2, FT(1));
+      EXPECT_EQ(CGAL::compare(piece.minimum_eccentricity_weight_sqrt_extension(), S(q<K>(1, 2))),
+                CGAL::compare(w2, q<K>(1, 4)));
+      EXPECT_NEAR(CGAL::to_double(piece.minimum_eccentricity_weight_sqrt_extension()), piece.minimum_eccentricity_weight(), 1e-15);
+    }
     const double w = std::sqrt(CGAL::to_double(w2));
     const double e0 = fair::Rational_quadratic_bezier_2<K>(p0, p1, p2, FT(w)).eccentricity();
     for (double f : {0.9, 0.99, 1.01, 1.1})

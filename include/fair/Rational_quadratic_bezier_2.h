@@ -35,6 +35,7 @@
 #include <fair/internal/rational_quadratic_interpolation.h>
 
 #include <CGAL/Gmpq.h>
+#include <CGAL/Sqrt_extension.h>
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
 
@@ -113,6 +114,8 @@ public:
   typedef typename K::Point_2 Point_2;
   typedef typename K::Vector_2 Vector_2;
   typedef Bernstein_polynomial<FT> Polynomial;
+  /// Numbers a0 + a1 sqrt(r) over FT (exact comparisons in an exact kernel).
+  typedef CGAL::Sqrt_extension<FT, FT, CGAL::Tag_true, CGAL::Tag_true> Sqrt_extension_FT;
 
   /// The standard-form piece P0, P1, P2 with weight w on P1 (eq. 1).
   /// \throws Precondition_error if a coordinate or w is not finite, w <= 0, P0 == P2, or the
@@ -396,6 +399,12 @@ public:
   /// eq. 15 in double: the weight minimising the eccentricity for these control points.
   double minimum_eccentricity_weight() const {
     return std::sqrt(CGAL::to_double(minimum_eccentricity_weight_squared()));
+  }
+  /// eq. 15 exactly, w_hat = sqrt(w_hat^2) as a CGAL::Sqrt_extension (meant for exact kernels):
+  /// e.g. the clamp of eq. 16, mu w_hat > 1/2, is decided exactly by
+  /// CGAL::compare(w * mu, Sqrt_extension_FT(FT(1) / FT(2))).
+  Sqrt_extension_FT minimum_eccentricity_weight_sqrt_extension() const {
+    return Sqrt_extension_FT(FT(0), FT(1), minimum_eccentricity_weight_squared());
   }
   /// eq. 15 squared for arbitrary P0, P1, P2 (P0 != P1 or P1 != P2).
   static FT minimum_eccentricity_weight_squared(const Point_2& p0, const Point_2& p1, const Point_2& p2) {
