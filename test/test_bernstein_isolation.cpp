@@ -90,6 +90,8 @@ void expect_matches_kernel(const fair::Bernstein_root_isolation& iso) {
 
 PQ linear_factor(const Q& r) { return PQ({-r, 1 - r}); } // t - r
 
+void expect_certified_bracket(const std::vector<double>& b, const fair::Unique_root& u);
+
 PQ product_of_roots(const std::vector<Q>& roots) {
   PQ p({Q(1)});
   for (const Q& r : roots) p *= linear_factor(r);
@@ -295,6 +297,30 @@ TEST(BernsteinIsolation, ConstantsNoRootsAndBadInput) {
   ASSERT_EQ(tiny.number_of_roots(), 1u);
   EXPECT_GT(tiny[0].upper, 0);
   EXPECT_FALSE(tiny[0].is_point());
+}
+
+TEST(BernsteinIsolation, HugeAndTinyCoefficients) {
+  // Near-overflow coefficients overflow the interval subdivision (the filter then hands over to
+  // exact arithmetic); subnormal ones underflow it. The answers stay exact.
+  const std::vector<std::vector<double>> cases = {
+      {1.7e308, -1.7e308, 1e308, -1.7e308},
+      {-1.7e308, -1.7e308, 1.5e308, 1.7e308},
+      {-5e-324, 5e-324},
+      {-1e-310, 3e-320, 2e-300},
+      {1e-300, -1e300, 1e-300}};
+  for (const std::vector<double>& b : cases) {
+    fair::Bernstein_root_isolation iso{PD(b)};
+    expect_matches_kernel(iso);
+    const std::vector<std::pair<Real, int>> roots = ak_roots_in_unit_interval(iso.polynomial());
+    const AK::Compare_1 cmp = AK().compare_1_object();
+    for (std::size_t j = 0; j < iso.number_of_roots(); ++j) {
+      const double x = iso.root_approximation(j);
+      EXPECT_NE(cmp(roots[j].first, Q(std::nextafter(x, -1.0))), CGAL::SMALLER);
+      EXPECT_NE(cmp(roots[j].first, Q(std::nextafter(x, 2.0))), CGAL::LARGER);
+    }
+    const fair::Unique_root u = fair::certified_unique_root(PD(b));
+    if (u.status == fair::Unique_root::UNIQUE_ROOT) expect_certified_bracket(b, u);
+  }
 }
 
 TEST(BernsteinIsolation, DepthCapThrowsInsteadOfLooping) {
