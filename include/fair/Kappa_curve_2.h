@@ -24,9 +24,8 @@
 // units of the half-size of the bounding box, eq. 7 divided by A+C, relative |kappa| mismatch);
 // a solve that stops earlier is reported in report() (converged == false) -- and throws
 // fair::Non_convergence_error when Kappa_curve_options::throw_on_non_convergence is set.
-// In a floating kernel the pieces carry the rounding of the solve; certify a curve exactly
-// with fair::certify_kappa_curve (include/fair/Kappa_curve_certificate.h... see
-// internal/kappa_certify.h).
+// In a floating kernel the pieces carry the rounding of the solve; fair::certify() (below)
+// rebuilds the curve exactly from its rational lambda_i, t_i, w_i and certifies it.
 
 #ifndef FAIR_KAPPA_CURVE_2_H
 #define FAIR_KAPPA_CURVE_2_H
@@ -34,7 +33,12 @@
 #include <fair/Errors.h>
 #include <fair/Rational_quadratic_bezier_2.h>
 #include <fair/internal/input_checks.h>
+#include <fair/internal/kappa_certify.h>
 #include <fair/internal/kappa_solver.h>
+#include <fair/internal/rational_quadratic_exact.h>
+
+#include <CGAL/Gmpq.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
@@ -42,6 +46,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <ostream>
 #include <utility>
 #include <vector>
@@ -347,6 +352,151 @@ private:
   double scale_ = 0, center_x_ = 0, center_y_ = 0;
   Kappa_solve_report report_;
 };
+
+
+/// The exact certificate of a kappa-curve, see certify().
+struct Kappa_certificate {
+  typedef CGAL::Simple_cartesian<CGAL::Gmpq> Exact_kernel;
+  struct Piece {
+    std::size_t point_index = 0;
+    bool valid_piece = false;      ///< exact control points not collinear (a genuine conic arc)
+    bool point_on_piece = false;   ///< Q_i == c_i(t_i) exactly
+    std::size_t extrema = 0;       ///< certified curvature extrema in (0,1) (roots of eq. 4)
+    std::size_t maxima = 0;        ///< of which maxima of |kappa|
+    bool unique_maximum = false;   ///< exactly one root in (0,1) and it is a maximum
+    double t = 0;                  ///< t_i (its exact value is this double)
+    /// The certified extremum nearest to t_i: its kind, isolating interval (outward rounded)
+    /// and an upper bound on |root - t_i| (infinity when the piece has no extremum). With
+    /// w_i < 1 (automatic weights) Q_i can be a curvature minimum (Sec. 3.2): kind says so.
+    bool has_extremum_at_t = false;
+    Curvature_extremum_kind kind_at_t = Curvature_extremum_kind::MAXIMUM;
+    double root_lower = 0, root_upper = 0;
+    double root_distance = std::numeric_limits<double>::infinity();
+  };
+  struct Join {
+    std::size_t piece = 0;         ///< the join at the start of this piece
+    bool c0 = false;               ///< both pieces share the exact point
+    bool g1 = false;               ///< P_{i-1}, E_i, P_i exactly collinear, E_i strictly between
+    double kappa_mismatch_lower = 0, kappa_mismatch_upper = 0;  ///< (|k1|-|k2|)/(|k1|+|k2|) enclosure
+  };
+  std::vector<Piece> pieces;
+  std::vector<Join> joins;
+  std::vector<Rational_quadratic_bezier_2<Exact_kernel>> exact_pieces;
+
+  bool all_points_on_pieces() const { for (const Piece& p : pieces) if (!p.point_on_piece) return false; return true; }
+  bool all_unique_maxima() const { for (const Piece& p : pieces) if (!p.unique_maximum) return false; return true; }
+  bool all_g1() const { for (const Join& j : joins) if (!(j.c0 && j.g1)) return false; return true; }
+  /// Largest |relative |kappa| mismatch| over the joins (certified upper bound).
+  double max_kappa_mismatch() const {
+    double m = 0;
+    for (const Join& j : joins) m = std::max(m, std::max(std::abs(j.kappa_mismatch_lower), std::abs(j.kappa_mismatch_upper)));
+    return m;
+  }
+  /// Largest distance from t_i to the nearest certified curvature extremum (infinity if a piece
+  /// has none).
+  double max_root_distance() const { double m = 0; for (const Piece& p : pieces) m = std::max(m, p.root_distance); return m; }
+  /// Number of pieces whose Q_i is a certified curvature minimum rather than a maximum.
+  std::size_t minima_at_points() const {
+    std::size_t k = 0;
+    for (const Piece& p : pieces) k += p.has_extremum_at_t && p.kind_at_t == Curvature_extremum_kind::MINIMUM;
+    return k;
+  }
+  /// Everything exact holds and |kappa| matches within `kappa_tolerance` and each maximum lies
+  /// within `t_tolerance` of t_i.
+  bool valid(double kappa_tolerance = 1e-9, double t_tolerance = 1e-9) const {
+    return all_points_on_pieces() && all_unique_maxima() && all_g1() && max_kappa_mismatch() <= kappa_tolerance &&
+           max_root_distance() <= t_tolerance;
+  }
+  friend std::ostream& operator<<(std::ostream& out, const Kappa_certificate& c) {
+    out << "Kappa_certificate{pieces " << c.pieces.size() << ", Q_i on pieces " << c.all_points_on_pieces()
+        << ", unique maxima " << c.all_unique_maxima() << ", G1 " << c.all_g1() << ", max |kappa| mismatch <= "
+        << c.max_kappa_mismatch() << ", max |root - t_i| <= " << c.max_root_distance() << "}";
+    for (const Piece& p : c.pieces)
+      if (!(p.point_on_piece && p.unique_maximum))
+        out << "\n  piece for point " << p.point_index << ": valid " << p.valid_piece << ", on piece "
+            << p.point_on_piece << ", extrema " << p.extrema << ", maxima " << p.maxima << ", nearest extremum "
+            << (p.has_extremum_at_t ? to_string(p.kind_at_t) : "none") << " at distance <= " << p.root_distance;
+    return out;
+  }
+};
+
+/// Certifies `curve` exactly (see internal/kappa_certify.h): the exact curve defined by the
+/// solver's rational lambda_i, t_i, w_i and the exact input points.
+template <class K>
+Kappa_certificate certify(const Kappa_curve_2<K>& curve) {
+  typedef CGAL::Gmpq Q;
+  typedef Kappa_certificate::Exact_kernel EK;
+  typedef EK::Point_2 EP;
+  const internal::kappa::State& st = curve.state();
+  const std::size_t n = curve.number_of_pieces(), m = curve.points().size();
+  const bool closed = curve.is_closed();
+  std::vector<Q> qx(n), qy(n), lam(n), t(n), w(n), px, py;
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto& q = curve.points()[curve.point_index(j)];
+    qx[j] = internal::to_gmpq(q.x());
+    qy[j] = internal::to_gmpq(q.y());
+    lam[j] = Q(st.lambda[j]);
+    t[j] = Q(st.t[j]);
+    w[j] = Q(st.w[j]);
+  }
+  Q sx(0), sy(0), ex(0), ey(0);
+  if (!closed) {
+    sx = internal::to_gmpq(curve.points()[0].x()); sy = internal::to_gmpq(curve.points()[0].y());
+    ex = internal::to_gmpq(curve.points()[m - 1].x()); ey = internal::to_gmpq(curve.points()[m - 1].y());
+  }
+  internal::kappa::exact_eq18(closed, qx, qy, sx, sy, ex, ey, lam, t, w, px, py);
+  std::vector<EP> P(n), E(n + 1);
+  for (std::size_t j = 0; j < n; ++j) P[j] = EP(px[j], py[j]);
+  for (std::size_t j = 0; j < n; ++j) {
+    if (!closed && j == 0) { E[0] = EP(sx, sy); continue; }
+    const std::size_t a = (j + n - 1) % n;
+    E[j] = EP((Q(1) - lam[j]) * px[a] + lam[j] * px[j], (Q(1) - lam[j]) * py[a] + lam[j] * py[j]);
+  }
+  E[n] = closed ? E[0] : EP(ex, ey);
+  Kappa_certificate cert;
+  const EK::Orientation_2 orient;
+  for (std::size_t j = 0; j < n; ++j) {
+    Kappa_certificate::Piece pc;
+    pc.point_index = curve.point_index(j);
+    pc.t = st.t[j];
+    pc.valid_piece = E[j] != E[j + 1] && orient(E[j], P[j], E[j + 1]) != CGAL::COLLINEAR && w[j] > 0;
+    if (pc.valid_piece) {
+      cert.exact_pieces.emplace_back(E[j], P[j], E[j + 1], w[j]);
+      const auto& piece = cert.exact_pieces.back();
+      pc.point_on_piece = piece.point(t[j]) == EP(qx[j], qy[j]);
+      const std::vector<Curvature_extremum> ext = piece.curvature_extrema();
+      pc.extrema = ext.size();
+      for (const Curvature_extremum& x : ext) {
+        if (x.kind == Curvature_extremum_kind::MAXIMUM) ++pc.maxima;
+        const Q d = std::max(CGAL::abs(t[j] - x.t_lower), CGAL::abs(x.t_upper - t[j]));
+        const double dd = CGAL::to_interval(d).second;
+        if (dd < pc.root_distance) {
+          pc.root_distance = dd;
+          pc.has_extremum_at_t = true;
+          pc.kind_at_t = x.kind;
+          pc.root_lower = CGAL::to_interval(x.t_lower).first;
+          pc.root_upper = CGAL::to_interval(x.t_upper).second;
+        }
+      }
+      pc.unique_maximum = pc.extrema == 1 && pc.maxima == 1 && pc.kind_at_t == Curvature_extremum_kind::MAXIMUM;
+    }
+    cert.pieces.push_back(pc);
+  }
+  if (cert.exact_pieces.size() == n) {
+    for (std::size_t j = (closed ? 0 : 1); j < n; ++j) {
+      const std::size_t a = (j + n - 1) % n;
+      Kappa_certificate::Join jn;
+      jn.piece = j;
+      jn.c0 = cert.exact_pieces[a].target() == cert.exact_pieces[j].source();
+      jn.g1 = orient(P[a], E[j], P[j]) == CGAL::COLLINEAR && lam[j] > 0 && lam[j] < 1;
+      const Q k1 = cert.exact_pieces[a].squared_curvature_at_target();
+      const Q k2 = cert.exact_pieces[j].squared_curvature_at_source();
+      internal::kappa::relative_mismatch_interval(k1 / k2, jn.kappa_mismatch_lower, jn.kappa_mismatch_upper);
+      cert.joins.push_back(jn);
+    }
+  }
+  return cert;
+}
 
 } // namespace fair
 
