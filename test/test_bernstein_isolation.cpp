@@ -356,6 +356,16 @@ TEST(BernsteinIsolation, RefinementReachesWidthAndKeepsTheRoot) {
       EXPECT_TRUE(interval_contains(iso[j], roots[j].first));
     }
   }
+  // The isolation is a value: a copy refines independently of the original.
+  fair::Bernstein_root_isolation original{PD({-1, 0.3, 2})};
+  original.root_approximation(0); // prepares the refinement caches
+  fair::Bernstein_root_isolation copy = original;
+  const Q before = original[0].width();
+  copy.refine(0, before / 1024);
+  EXPECT_EQ(original[0].width(), before);
+  EXPECT_LE(copy[0].width(), before / 1024);
+  EXPECT_TRUE(interval_contains(copy[0], ak_roots_in_unit_interval(copy.polynomial())[0].first));
+
   fair::Bernstein_root_isolation iso{PD({1, -1})};
   EXPECT_THROW(iso.refine(0, Q(0)), fair::Precondition_error);
   EXPECT_THROW(iso.refine(3, Q(1, 2)), fair::Precondition_error);

@@ -19,7 +19,7 @@
 namespace fair {
 namespace internal {
 
-/// A fixed-size array of GMP integers (RAII).
+/// A fixed-size array of GMP integers (RAII, deep copies).
 class Mpz_array {
 public:
   explicit Mpz_array(std::size_t n = 0) : n_(n), v_(n ? new __mpz_struct[n] : nullptr) {
@@ -28,8 +28,16 @@ public:
   ~Mpz_array() {
     for (std::size_t i = 0; i < n_; ++i) mpz_clear(&v_[i]);
   }
-  Mpz_array(const Mpz_array&) = delete;
-  Mpz_array& operator=(const Mpz_array&) = delete;
+  Mpz_array(const Mpz_array& o) : n_(o.n_), v_(o.n_ ? new __mpz_struct[o.n_] : nullptr) {
+    for (std::size_t i = 0; i < n_; ++i) mpz_init_set(&v_[i], &o.v_[i]);
+  }
+  Mpz_array& operator=(const Mpz_array& o) {
+    if (this != &o) {
+      Mpz_array copy(o);
+      *this = std::move(copy);
+    }
+    return *this;
+  }
   Mpz_array(Mpz_array&& o) noexcept : n_(o.n_), v_(std::move(o.v_)) { o.n_ = 0; }
   Mpz_array& operator=(Mpz_array&& o) noexcept {
     if (this != &o) {
