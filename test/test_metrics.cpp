@@ -6,6 +6,7 @@
 
 #include <fair/Bezier_2.h>
 #include <fair/Fairness_metrics.h>
+#include <fair/Rational_quadratic_bezier_2.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -217,6 +218,31 @@ TEST(Metrics, RandomCubicsCertifiedCountsAreConsistent) {
       if (s != 0) last = s;
     }
     EXPECT_LE(changes, int(in.count()));
+  }
+}
+
+TEST(Metrics, ConicPiecesUseTheirOwnCertifiedExtrema) {
+  // fair::Rational_quadratic_bezier_2 certifies its curvature extrema itself (eq. 4 of Yan,
+  // Schiller, Schaefer); the homogeneous construction here must find the same points.
+  typedef fair::Rational_quadratic_bezier_2<Kq> Conic;
+  typedef Kq::Point_2 P;
+  static_assert(fair::internal::Has_own_curvature_extrema<Conic>::value, "the conic's own extrema are used");
+  static_assert(!fair::internal::Has_own_curvature_extrema<Test_rational_piece<Kq>>::value, "");
+  EXPECT_EQ(fair::curvature_extrema(std::vector<Conic>{Conic(P(3, 0), P(0, 3), P(0, 0), CGAL::Gmpq(3, 10))}).count(), 2u);
+  for (const CGAL::Gmpq& w : {CGAL::Gmpq(3, 10), CGAL::Gmpq(1, 2), CGAL::Gmpq(1), CGAL::Gmpq(2)}) {
+    const Conic c(P(3, 0), P(0, 3), P(0, 0), w);
+    Test_rational_piece<Kq> h;
+    h.cp = {P(3, 0), P(0, 3), P(0, 0)};
+    h.w = {CGAL::Gmpq(1), w, CGAL::Gmpq(1)};
+    const fair::Feature_report own = fair::curvature_extrema(std::vector<Conic>{c});
+    const fair::Feature_report hom = fair::curvature_extrema(std::vector<Test_rational_piece<Kq>>{h});
+    EXPECT_TRUE(own.certified);
+    ASSERT_EQ(own.count(), hom.count()) << w;
+    for (std::size_t k = 0; k < own.count(); ++k) {
+      EXPECT_NEAR(own.features[k].t, hom.features[k].t, 1e-15);
+      EXPECT_NEAR(own.features[k].curvature, hom.features[k].curvature, 1e-12);
+    }
+    EXPECT_EQ(fair::inflections(std::vector<Conic>{c}).count(), 0u);
   }
 }
 

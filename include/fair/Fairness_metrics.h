@@ -237,6 +237,10 @@ Feature_report certified_features(const std::vector<Piece>& curve, int which, co
         continue;
       }
       const Signed_roots s = signed_roots(p);
+      // A piece that certifies its own curvature extrema provides the interior ones; the signs
+      // computed here still decide the changes at the joins.
+      bool own = false;
+      if constexpr (Has_own_curvature_extrema<Piece>::value) own = (which == 1);
       for (std::size_t g = 0; g < s.gaps.size(); ++g) {
         const int sign = s.gaps[g];
         if (sign == 0) continue;
@@ -245,14 +249,27 @@ Feature_report certified_features(const std::vector<Piece>& curve, int which, co
           // The sign changed since the last nonempty gap: at root g-1 of this piece when it is an
           // interior one, otherwise across the join into this piece.
           if (g > 0) {
-            report.features.push_back(make_feature(curve[i], i, s.approximations[g - 1], s.roots[g - 1],
-                                                   s.roots[g - 1].is_point() && CGAL::is_zero(s.roots[g - 1].lower)));
+            const bool at_start = s.roots[g - 1].is_point() && CGAL::is_zero(s.roots[g - 1].lower);
+            if (!own || at_start)
+              report.features.push_back(make_feature(curve[i], i, s.approximations[g - 1], s.roots[g - 1], at_start));
           } else {
             Isolating_interval I;
             report.features.push_back(make_feature(curve[i], i, 0.0, I, true));
           }
         }
         last = sign;
+      }
+      if constexpr (Has_own_curvature_extrema<Piece>::value) {
+        if (own) {
+          for (const auto& x : curve[i].curvature_extrema()) {
+            if (x.multiplicity % 2 == 0) continue; // no sign change of kappa': not an extremum
+            Isolating_interval I;
+            I.lower = x.t_lower;
+            I.upper = x.t_upper;
+            I.multiplicity = x.multiplicity;
+            report.features.push_back(make_feature(curve[i], i, x.t, I, false));
+          }
+        }
       }
     }
     // A closed curve (last end point == first start point, exactly): the closing join too.

@@ -64,6 +64,17 @@ template <class P>
 struct Has_weights<P, std::void_t<decltype(std::declval<const P&>().weights()),
                                   decltype(std::declval<const P&>().control_points())>> : std::true_type {};
 
+/// Pieces that certify their own curvature extrema (e.g. fair::Rational_quadratic_bezier_2):
+/// curvature_extrema() returning entries with t, t_lower, t_upper (exact) and multiplicity.
+template <class P, class = void>
+struct Has_own_curvature_extrema : std::false_type {};
+template <class P>
+struct Has_own_curvature_extrema<
+    P, std::void_t<decltype(std::declval<const P&>().curvature_extrema().front().t_lower),
+                   decltype(std::declval<const P&>().curvature_extrema().front().t_upper),
+                   decltype(std::declval<const P&>().curvature_extrema().front().t),
+                   decltype(std::declval<const P&>().curvature_extrema().front().multiplicity)>> : std::true_type {};
+
 template <class P>
 struct Is_bezier : std::false_type {};
 template <class K>
