@@ -79,6 +79,17 @@ void BM_unique_root_kappa_array(benchmark::State& state) {
 }
 BENCHMARK(BM_unique_root_kappa_array);
 
+// The same with a one-ulp bracket (adjacent doubles: more exact evaluations near the root).
+void BM_unique_root_kappa_array_one_ulp(benchmark::State& state) {
+  const auto eqs = kappa_equations();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const fair::Unique_root u = fair::internal::certified_unique_root(eqs[i++ % pool], 1.0);
+    benchmark::DoNotOptimize(u.root);
+  }
+}
+BENCHMARK(BM_unique_root_kappa_array_one_ulp);
+
 void BM_unique_root_kappa_polynomial(benchmark::State& state) {
   const auto eqs = kappa_equations();
   std::vector<fair::Bernstein_polynomial<double>> polys;

@@ -90,7 +90,7 @@ void expect_matches_kernel(const fair::Bernstein_root_isolation& iso) {
 
 PQ linear_factor(const Q& r) { return PQ({-r, 1 - r}); } // t - r
 
-void expect_certified_bracket(const std::vector<double>& b, const fair::Unique_root& u);
+void expect_certified_bracket(const std::vector<double>& b, const fair::Unique_root& u, double max_ulps = 8);
 
 PQ product_of_roots(const std::vector<Q>& roots) {
   PQ p({Q(1)});
@@ -375,7 +375,7 @@ TEST(BernsteinIsolation, RefinementReachesWidthAndKeepsTheRoot) {
 // ------------------------------------------------------------------ fast unique-root path
 
 // Checks the certificate of a UNIQUE_ROOT answer independently, in exact arithmetic.
-void expect_certified_bracket(const std::vector<double>& b, const fair::Unique_root& u) {
+void expect_certified_bracket(const std::vector<double>& b, const fair::Unique_root& u, double max_ulps) {
   ASSERT_EQ(u.status, fair::Unique_root::UNIQUE_ROOT);
   const PQ p(std::vector<Q>(b.begin(), b.end()));
   EXPECT_LE(u.lower, u.root);
@@ -388,7 +388,7 @@ void expect_certified_bracket(const std::vector<double>& b, const fair::Unique_r
     EXPECT_EQ(CGAL::sign(p(Q(u.upper))), -s0);
   }
   const double ulp = std::nextafter(u.upper, 2.0) - u.upper;
-  EXPECT_LE(u.upper - u.lower, 8 * ulp);
+  EXPECT_LE(u.upper - u.lower, max_ulps * ulp);
   // The kernel agrees: one root in [0,1], inside the bracket.
   const std::vector<std::pair<Real, int>> roots = ak_roots_in_unit_interval(p);
   ASSERT_EQ(roots.size(), 1u);
@@ -428,7 +428,9 @@ TEST(BernsteinUniqueRoot, RandomSingleSignChange) {
     }
     const fair::Unique_root u = fair::certified_unique_root(PD(b));
     expect_certified_bracket(b, u);
+    if (trial % 3 == 0) expect_certified_bracket(b, fair::certified_unique_root(PD(b), 1.0), 1.0);
   }
+  EXPECT_THROW(fair::certified_unique_root(PD({-1, 1}), 0.5), fair::Precondition_error);
 }
 
 TEST(BernsteinUniqueRoot, StatusesAndExactRoots) {

@@ -335,14 +335,15 @@ std::vector<Isolating_interval> isolate_roots(const Bernstein_polynomial<NT>& p)
 
 /// Fast certified path for the common case of exactly one sign change (see
 /// internal/bernstein_unique_root.h for the method and accuracy).
-inline Unique_root certified_unique_root(const Bernstein_polynomial<double>& p) {
-  return internal::certified_unique_root(p.coefficients().data(), p.coefficients().size());
+/// `max_ulps` (>= 1) bounds the width of the certified bracket.
+inline Unique_root certified_unique_root(const Bernstein_polynomial<double>& p, double max_ulps = 8) {
+  return internal::certified_unique_root(p.coefficients().data(), p.coefficients().size(), max_ulps);
 }
 
 /// The same on N = degree + 1 coefficients in a std::array: no heap allocation for N <= 32.
 template <std::size_t N>
-Unique_root certified_unique_root(const std::array<double, N>& b) {
-  return internal::certified_unique_root(b);
+Unique_root certified_unique_root(const std::array<double, N>& b, double max_ulps = 8) {
+  return internal::certified_unique_root(b, max_ulps);
 }
 
 } // namespace fair

@@ -8,18 +8,19 @@
 // count V, are exact. Descartes' rule in Bernstein form: V = 1 with b_0, b_n != 0 proves exactly
 // one root in (0,1), and it is simple. The root is then approximated by Newton's method in
 // double, safeguarded by bisection of a (heuristic) bracket, starting from the crossing of the
-// control polygon with the axis. The final bracket [lower, upper] is CERTIFIED: the sign of p at
-// each end is proven by evaluating de Casteljau in CGAL::Interval_nt<false> (outward rounding
-// under CGAL::Protect_FPU_rounding<true>), falling back to exact Gmpq evaluation at a point where
-// the interval result contains 0. p(lower) and p(upper) have opposite signs (or one is exactly
-// 0, and then lower == upper), so the unique root lies in [lower, upper].
+// control polygon with the axis, and stopped at the rounding noise. The final bracket
+// [lower, upper] is CERTIFIED: the sign of p at each end is proven by evaluating de Casteljau in
+// CGAL::Interval_nt<false> (outward rounding under CGAL::Protect_FPU_rounding<true>), falling
+// back to exact evaluation in GMP integers (the double point is dyadic) where the interval
+// result contains 0. p(lower) and p(upper) have opposite signs (or p is exactly 0 at one point,
+// and then lower == upper), so the unique root lies in [lower, upper].
 //
-// Accuracy. The bracket is first grown from the Newton iterate by geometric steps until the
-// interval signs are certain; it is then shrunk by bisection (exact integer evaluation at the
-// dyadic bisection point where the interval is inconclusive, internal/bernstein_dyadic.h) until
-// it is at most 8 ulps wide. So upper - lower <= 8 ulp(upper) always, and typically 1-2 ulps
-// for a well-conditioned root (exact evaluation is needed only within about
-// n * eps * max|b_i| / |p'(root)| of the root).
+// Accuracy. The bracket is first grown from the Newton iterate by geometric steps (factor 1.5
+// from one ulp) until the interval signs are certain; it is then shrunk by bisection, with the
+// exact fallback where needed, to at most max_ulps ulps of its upper end (default 8; 1 gives
+// adjacent doubles). On eq. (7) the default bracket is 3.8 ulps wide on average and needs no
+// exact evaluation; exact evaluation is needed only within about n eps max|b_i| / |p'(root)|
+// of the root.
 
 #ifndef FAIR_INTERNAL_BERNSTEIN_UNIQUE_ROOT_H
 #define FAIR_INTERNAL_BERNSTEIN_UNIQUE_ROOT_H
@@ -100,7 +101,8 @@ struct Double_bracket {
 ///
 /// Method: safeguarded Newton in double from `start`, then a certified bracket grown from the
 /// Newton iterate by geometric steps (interval signs), then shrunk by bisection (exact fallback)
-/// to at most `max_ulps` ulps (of its upper end; 1 means adjacent doubles). The returned [lower, upper] is inside [L, H] and contains the root.
+/// to at most `max_ulps` ulps (of its upper end; 1 means adjacent doubles). The returned
+/// [lower, upper] is inside [L, H] and contains the root.
 /// Must be called in round-to-nearest mode; protects the rounding mode itself.
 template <class ExactSign>
 Double_bracket tighten_double_bracket(const CGAL::Interval_nt<false>* c, const double* approx, std::size_t m,
@@ -191,9 +193,12 @@ Double_bracket tighten_double_bracket(const CGAL::Interval_nt<false>* c, const d
   return out;
 }
 
-/// The core routine on m = degree + 1 coefficients b[0..m-1].
-inline Unique_root certified_unique_root(const double* b, std::size_t m) {
+/// The core routine on m = degree + 1 coefficients b[0..m-1]. The certified bracket is at most
+/// `max_ulps` ulps wide (>= 1; 1 asks for adjacent doubles, at the price of more exact
+/// evaluations near the root).
+inline Unique_root certified_unique_root(const double* b, std::size_t m, double max_ulps = 8) {
   require(m >= 1, "certified_unique_root: no coefficients");
+  require(max_ulps >= 1, "certified_unique_root: max_ulps = ", max_ulps, " must be >= 1");
   Unique_root out;
   bool all_zero = true;
   int last = 0;
@@ -244,8 +249,18 @@ inline Unique_root certified_unique_root(const double* b, std::size_t m) {
     c = heap_c.data();
   }
   for (std::size_t i = 0; i < m; ++i) c[i] = CGAL::Interval_nt<false>(b[i]);
-  const Double_bracket r = tighten_double_bracket(c, b, m, 0.0, 1.0, s0, t,
-                                                  [b, m](double x) { return exact_sign_bernstein_at(b, m, x); });
+  // Exact fallback: integer-scaled coefficients, built on first use only.
+  Mpz_array B, work;
+  auto exact_sign = [&](double x) {
+    if (B.size() == 0) {
+      B = integer_scaled(b, m);
+      work = Mpz_array(m + 3);
+    }
+    unsigned long e = 0;
+    dyadic_parts(x, work[m + 2], e);
+    return sign_bernstein_at_dyadic(B, work[m + 2], e, work);
+  };
+  const Double_bracket r = tighten_double_bracket(c, b, m, 0.0, 1.0, s0, t, exact_sign, max_ulps);
   out.lower = r.lower;
   out.upper = r.upper;
   out.root = r.root;
@@ -255,9 +270,9 @@ inline Unique_root certified_unique_root(const double* b, std::size_t m) {
 
 /// Fixed-size overload (no heap allocation for N <= 32).
 template <std::size_t N>
-Unique_root certified_unique_root(const std::array<double, N>& b) {
+Unique_root certified_unique_root(const std::array<double, N>& b, double max_ulps = 8) {
   static_assert(N >= 1, "certified_unique_root: at least one coefficient");
-  return certified_unique_root(b.data(), N);
+  return certified_unique_root(b.data(), N, max_ulps);
 }
 
 } // namespace internal
