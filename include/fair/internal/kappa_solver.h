@@ -448,17 +448,27 @@ inline void assemble_normal_equations(const Problem& pb, const State& st, Banded
       if (!win.valid[k]) continue;
       for (int c = 0; c < 4; ++c) { slots[m] = 4 * k + c; colpos[m] = 4 * pos(win.block[k]) + c; ++m; }
     }
+    // Local 16 x 16 block of J^T J and local gradient, then one scatter into the band.
+    double M[16][16] = {};
+    double gl[16] = {};
     for (int e = 0; e < 4; ++e) {
+      const double* de = r[e].d.data();
       const double fe = r[e].v;
-      for (int a = 0; a < m; ++a) {
-        const double va = r[e].d[slots[a]];
+      for (int a = 0; a < 16; ++a) {
+        gl[a] += de[a] * fe;
+        const double va = de[a];
         if (va == 0.0) continue;
-        g[colpos[a]] += va * fe;
-        for (int b = 0; b < m; ++b) {
-          const double vb = r[e].d[slots[b]];
-          if (vb == 0.0 || colpos[a] < colpos[b]) continue;
-          chol.add_lower(colpos[a], colpos[b], va * vb);
-        }
+        for (int b = 0; b <= a; ++b) M[a][b] += va * de[b];
+      }
+    }
+    for (int a = 0; a < m; ++a) {
+      const int sa = slots[a];
+      g[colpos[a]] += gl[sa];
+      for (int b = 0; b < m; ++b) {
+        if (colpos[a] < colpos[b]) continue;
+        const int sb = slots[b];
+        const double v = sa >= sb ? M[sa][sb] : M[sb][sa];
+        if (v != 0.0) chol.add_lower(colpos[a], colpos[b], v);
       }
     }
   }
@@ -503,7 +513,7 @@ inline double levenberg_marquardt(const Problem& pb, State& st, const Solve_sett
     for (std::size_t k = 0; k < N; ++k) maxdiag = std::max(maxdiag, chol.diagonal(k));
     if (!(maxdiag > 0) || !std::isfinite(maxdiag)) break;
     for (std::size_t k = 0; k < N; ++k) D[k] = std::max(chol.diagonal(k), 1e-12 * maxdiag);
-    if (mu < 0) mu = 1e-6;
+    if (mu < 0) mu = 1e-8;
     Abase = chol.storage();
     bool accepted = false;
     for (int attempt = 0; attempt < (polish ? 4 : 40) && !accepted; ++attempt) {
@@ -533,8 +543,11 @@ inline double levenberg_marquardt(const Problem& pb, State& st, const Solve_sett
         F.swap(Ftrial);
         cost = ct;
         fmax = fm;
+        // Nielsen's update, but faster towards Gauss-Newton on very good steps: from the
+        // refined initial guess the full Newton step is almost always right.
         const double q = 2 * rho - 1;
-        mu *= std::max(1.0 / 3.0, 1 - q * q * q);
+        mu *= (rho > 0.75) ? 0.01 : std::max(1.0 / 3.0, 1 - q * q * q);
+        mu = std::max(mu, 1e-20);
         nu = 2;
         accepted = true;
       } else {
@@ -562,14 +575,14 @@ inline double refine(const Problem& pb, State& st, std::size_t max_passes, doubl
 
 /// Solves the kappa-curve system; `st` holds the initial state when settings.warm.
 /// Strategy: initial guess and up to `refinement_passes` alternating passes (stopping early
-/// once max |r| <= 1e-4), Levenberg-Marquardt; if that stalls away from a root, one restart:
+/// once max |r| <= 1e-3), Levenberg-Marquardt; if that stalls away from a root, one restart:
 /// up to 4 x `refinement_passes` more passes from the best state, then Levenberg-Marquardt again.
 inline Solve_result solve(const Problem& pb, State& st, const Solve_settings& settings) {
   Solve_result res;
   const std::size_t n = pb.n;
   if (!settings.warm || st.t.size() != n) {
     initial_guess(pb, st);
-    refine(pb, st, settings.refinement_passes, 1e-4, res);
+    refine(pb, st, settings.refinement_passes, 1e-3, res);
   }
   double fmax = levenberg_marquardt(pb, st, settings, res, settings.max_iterations);
   if (!(fmax <= settings.tolerance) && res.iterations < settings.max_iterations && settings.refinement_passes > 0) {

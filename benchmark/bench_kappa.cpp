@@ -1,0 +1,103 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// Benchmarks of fair::Kappa_curve_2 (rational kappa-curves): time to converge on closed
+// random star-shaped point sets (every point a corner, alternately convex and concave: the
+// data kappa-curves are made for) with unit and automatic weights; a warm re-solve after moving
+// one point of a 1000-point curve; exact certification (fair::certify).
+// Run: ./bench_kappa --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+
+#include <fair/Kappa_curve_2.h>
+
+#include <CGAL/Simple_cartesian.h>
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Simple_cartesian<double> K;
+typedef K::Point_2 P;
+
+std::vector<P> random_star(std::size_t n, unsigned seed) {
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<double> U(0, 1);
+  std::vector<P> p;
+  p.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * (i + 0.2 * (U(g) - 0.5)) / n;
+    const double r = 1 + 0.05 * (i % 2 ? 1 : -1) * (0.5 + U(g));
+    p.push_back(P(r * std::cos(a), r * std::sin(a)));
+  }
+  return p;
+}
+
+void solve(benchmark::State& state, fair::Kappa_weights weights) {
+  const std::size_t n = static_cast<std::size_t>(state.range(0));
+  const std::vector<P> points = random_star(n, 1);
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  o.weights = weights;
+  std::size_t iterations = 0, passes = 0;
+  bool converged = true;
+  for (auto _ : state) {
+    const fair::Kappa_curve_2<K> curve(points, o);
+    iterations = curve.report().iterations;
+    passes = curve.report().refinement_passes;
+    converged = converged && curve.report().converged;
+    benchmark::DoNotOptimize(curve.pieces().data());
+  }
+  state.counters["lm_iterations"] = static_cast<double>(iterations);
+  state.counters["passes"] = static_cast<double>(passes);
+  state.counters["converged"] = converged ? 1 : 0;
+  state.SetComplexityN(state.range(0));
+}
+
+void BM_kappa_closed_unit(benchmark::State& state) { solve(state, fair::Kappa_weights::UNIT); }
+void BM_kappa_closed_automatic(benchmark::State& state) { solve(state, fair::Kappa_weights::AUTOMATIC); }
+BENCHMARK(BM_kappa_closed_unit)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_kappa_closed_unit)->Arg(100000)->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_kappa_closed_automatic)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_kappa_closed_automatic)->Arg(100000)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// Warm re-solve: move one point of a converged 1000-point curve by 1 % and solve again from
+// the previous solution (alternating back and forth so every iteration does real work).
+void BM_kappa_warm_resolve_1000(benchmark::State& state) {
+  std::vector<P> points = random_star(1000, 2);
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  fair::Kappa_curve_2<K> curve(points, o);
+  const P a = points[500], b(a.x() * 1.01, a.y() * 1.01);
+  bool flip = false, warm = true;
+  for (auto _ : state) {
+    curve.move_point(500, flip ? a : b);
+    flip = !flip;
+    warm = warm && curve.report().warm_started && curve.report().converged;
+  }
+  state.counters["warm_and_converged"] = warm ? 1 : 0;
+}
+BENCHMARK(BM_kappa_warm_resolve_1000)->Unit(benchmark::kMillisecond);
+
+// Exact certification of 10^4 pieces, as 100 closed curves of 100 pieces (the exact eq.-18
+// solve costs O(n^2) bit operations per curve, see doc/kappa_curves.md).
+void BM_kappa_certify_10000_pieces(benchmark::State& state) {
+  const std::size_t per_curve = static_cast<std::size_t>(state.range(0));
+  const std::size_t curves_count = 10000 / per_curve;
+  std::vector<fair::Kappa_curve_2<K>> curves;
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  for (std::size_t c = 0; c < curves_count; ++c) curves.emplace_back(random_star(per_curve, 100 + c), o);
+  std::size_t valid = 0;
+  for (auto _ : state) {
+    valid = 0;
+    for (const auto& curve : curves) valid += fair::certify(curve).valid() ? 1 : 0;
+  }
+  state.counters["valid_curves"] = static_cast<double>(valid);
+  state.counters["curves"] = static_cast<double>(curves_count);
+}
+BENCHMARK(BM_kappa_certify_10000_pieces)->Arg(20)->Arg(100)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+} // namespace
