@@ -6,6 +6,7 @@
 
 #include <fair/Bezier_2.h>
 #include <fair/Fairness_metrics.h>
+#include <fair/Rational_bezier_2.h>
 #include <fair/Rational_quadratic_bezier_2.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -244,6 +245,29 @@ TEST(Metrics, ConicPiecesUseTheirOwnCertifiedExtrema) {
     }
     EXPECT_EQ(fair::inflections(std::vector<Conic>{c}).count(), 0u);
   }
+}
+
+TEST(Metrics, LibraryRationalPieces) {
+  // fair::Rational_bezier_2 with equal weights is the polynomial cubic y = x^3: same certified
+  // features (exactly at t = 1/2 for the inflection) and the same energies.
+  typedef Kq::Point_2 P;
+  const auto b = cubic_x3<Kq>();
+  const fair::Rational_bezier_2<Kq> r(b.control_points(), std::vector<CGAL::Gmpq>(4, CGAL::Gmpq(2)));
+  const std::vector<fair::Rational_bezier_2<Kq>> rc{r};
+  const std::vector<fair::Bezier_2<Kq>> bc{b};
+  const fair::Feature_report in = fair::inflections(rc);
+  ASSERT_EQ(in.count(), 1u);
+  EXPECT_TRUE(in.features[0].interval.is_point() && in.features[0].interval.lower == CGAL::Gmpq(1, 2));
+  EXPECT_EQ(fair::curvature_extrema(rc).count(), 2u);
+  EXPECT_NEAR(fair::bending_energy(rc).value, fair::bending_energy(bc).value, 1e-12);
+  EXPECT_NEAR(fair::curvature_variation_energy(rc).value, fair::curvature_variation_energy(bc).value,
+              1e-10 * fair::curvature_variation_energy(bc).value);
+  // The exact circular arc as a library rational piece: constant curvature decided exactly.
+  const Test_rational_piece<Kq> a = circle_arc<Kq>(1);
+  const std::vector<fair::Rational_bezier_2<Kq>> arc{fair::Rational_bezier_2<Kq>(a.cp, a.w)};
+  EXPECT_EQ(fair::curvature_extrema(arc).degenerate_pieces.size(), 1u);
+  EXPECT_NEAR(fair::bending_energy(arc).value, 2 * std::acos(0.6), 1e-12);
+  EXPECT_LT(fair::max_circle_deviation(arc, P(0, 0), 1.0).max_deviation, 1e-15);
 }
 
 TEST(Metrics, CircleDeviationOfTheCubicQuarterCircle) {
