@@ -418,7 +418,7 @@ double contraction_norm(const Laurent& b, int L) {
   for (int l = 0; l < L; ++l) {
     Laurent r;
     for (const auto& x : p)
-      for (const auto& y : b) r[x.first + (y.first << l)] += x.second * y.second;
+      for (const auto& y : b) r[x.first + y.first * (1 << l)] += x.second * y.second;
     p = r;
   }
   const int m = 1 << L;

@@ -396,6 +396,39 @@ TYPED_TEST(Classic_splines, CatmullRomRandomOpenClosedAndAuxiliaryPoints) {
   expect_equal_xy<K>(seg.pieces()[0].point(FT(1) / 3), P(2, 4), "segment");
 }
 
+// Independent check of the non-uniform tangent formula: the Barry-Goldman pyramid (three linear
+// interpolations, two of those, one of those) evaluated in double on knots t0..t3 must give the
+// same point as our Hermite piece, for centripetal and chordal knots on random data.
+TEST(Classic_catmull_rom, NonUniformPiecesMatchTheBarryGoldmanPyramid) {
+  typedef SC_double K;
+  typedef K::Point_2 P;
+  auto lerp = [](const P& a, double ta, const P& b, double tb, double t) {
+    const double s = (t - ta) / (tb - ta);
+    return P((1 - s) * a.x() + s * b.x(), (1 - s) * a.y() + s * b.y());
+  };
+  std::mt19937 rng(41);
+  for (int trial = 0; trial < 50; ++trial) {
+    const auto p = random_points<K>(rng, 7);
+    for (fair::Knot_spacing sp : {fair::Knot_spacing::centripetal, fair::Knot_spacing::chordal}) {
+      fair::Catmull_rom_2<K> c(p, false, sp);
+      const auto& u = c.knots();
+      for (std::size_t i = 1; i + 2 < p.size(); ++i) {  // interior pieces: p_{i-1}..p_{i+2} exist
+        const double t0 = u[i - 1], t1 = u[i], t2 = u[i + 1], t3 = u[i + 2];
+        for (double s : {0.2, 0.5, 0.9}) {
+          const double t = t1 + s * (t2 - t1);
+          const P a1 = lerp(p[i - 1], t0, p[i], t1, t), a2 = lerp(p[i], t1, p[i + 1], t2, t),
+                  a3 = lerp(p[i + 1], t2, p[i + 2], t3, t);
+          const P b1 = lerp(a1, t0, a2, t2, t), b2 = lerp(a2, t1, a3, t3, t);
+          const P bg = lerp(b1, t1, b2, t2, t);
+          const P ours = c.pieces()[i].point(s);
+          EXPECT_NEAR(ours.x(), bg.x(), 1e-9 * (1 + std::fabs(bg.x())));
+          EXPECT_NEAR(ours.y(), bg.y(), 1e-9 * (1 + std::fabs(bg.y())));
+        }
+      }
+    }
+  }
+}
+
 TYPED_TEST(Classic_splines, CatmullRomRejectsBadInput) {
   typedef TypeParam K;
   typedef typename K::Point_2 P;

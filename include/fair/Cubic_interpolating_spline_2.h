@@ -27,8 +27,9 @@
 // conditions hold exactly. Centripetal/chordal knots are computed in double and converted
 // exactly to FT (see Knot_spacing); the solve is then exact for those knots.
 // Accuracy in double: the solve is backward stable (diagonal dominance, no pivoting needed);
-// relative errors of a few ulps times the condition number, which is at most 3 for uniform
-// knots and grows like max(h)/min(h) for strongly non-uniform chordal knots.
+// relative errors of a few ulps times the condition number, which is at most 6 for uniform
+// knots (Gershgorin: the symmetric matrix has its eigenvalues in [1, 6]) and grows like
+// max(h)/min(h) for strongly non-uniform chordal knots.
 
 #ifndef FAIR_CUBIC_INTERPOLATING_SPLINE_2_H
 #define FAIR_CUBIC_INTERPOLATING_SPLINE_2_H
