@@ -51,11 +51,10 @@ void run_conic(const Conic_options& o) {
     svg_text = f.curve_svg;
     plot_text = f.curvature_svg;
   }
-  std::cout << conic_text(piece, report);
-  if (!o.json_out.empty()) {
-    if (o.json_out == "-") std::cout << json_text;
-    else fair::io::write_text_file(o.json_out, json_text);
-  }
+  // With "-o -" stdout carries only the JSON, so that it can be piped.
+  if (o.json_out == "-") std::cout << json_text;
+  else std::cout << conic_text(piece, report);
+  if (!o.json_out.empty() && o.json_out != "-") fair::io::write_text_file(o.json_out, json_text);
   if (!o.svg_out.empty()) fair::io::write_text_file(o.svg_out, svg_text);
   if (!o.plot_out.empty()) fair::io::write_text_file(o.plot_out, plot_text);
 }
@@ -71,7 +70,7 @@ void register_conic_command(CLI::App& app) {
   sub->add_option("--p1", options->p1, "middle control point x,y (not collinear with P0, P2)")->required();
   sub->add_option("--p2", options->p2, "end point x,y")->required();
   sub->add_option("--w", options->w, "weight of P1, > 0 (< 1 ellipse, 1 parabola, > 1 hyperbola)")->required();
-  sub->add_option("-o,--output", options->json_out, "write the piece and its report as JSON ('-' for stdout)");
+  sub->add_option("-o,--output", options->json_out, "write the piece and its report as JSON ('-': only the JSON on stdout)");
   sub->add_option("--svg", options->svg_out, "write a figure of the arc (control polygon, comb, extrema)");
   sub->add_option("--plot", options->plot_out, "write the curvature against arc length plot");
   sub->add_option("--samples", options->samples, "samples for the figures (default 128)");

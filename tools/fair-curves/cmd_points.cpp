@@ -55,13 +55,13 @@ void run_points(const Points_options& o) {
     xmin = std::min(xmin, p.x()); xmax = std::max(xmax, p.x());
     ymin = std::min(ymin, p.y()); ymax = std::max(ymax, p.y());
   }
-  std::cout << o.input << ": " << data.points.size() << " points, " << (closed ? "closed" : "open")
+  // With "-o -" stdout carries only the JSON, so that it can be piped.
+  if (o.json_out != "-")
+    std::cout << o.input << ": " << data.points.size() << " points, " << (closed ? "closed" : "open")
             << ", bounding box [" << format_number(xmin, 10) << ", " << format_number(xmax, 10) << "] x ["
             << format_number(ymin, 10) << ", " << format_number(ymax, 10) << "]\n";
-  if (!o.json_out.empty()) {
-    if (o.json_out == "-") std::cout << json_text;
-    else fair::io::write_text_file(o.json_out, json_text);
-  }
+  if (o.json_out == "-") std::cout << json_text;
+  else if (!o.json_out.empty()) fair::io::write_text_file(o.json_out, json_text);
   if (!o.csv_out.empty()) fair::io::write_text_file(o.csv_out, csv_text);
   if (!o.svg_out.empty()) fair::io::write_text_file(o.svg_out, svg_text);
 }
@@ -76,7 +76,7 @@ void register_points_command(CLI::App& app) {
   sub->add_option("input", options->input, "the point file (.csv, .txt or .json)")->required();
   sub->add_flag("--closed", options->closed, "treat the points as a closed polygon (also set by JSON \"closed\")");
   sub->add_option("--min", options->minimum, "minimum number of points (default 2)")->check(CLI::Range(1, 1000000));
-  sub->add_option("-o,--output", options->json_out, "write the points as JSON ('-' for stdout)");
+  sub->add_option("-o,--output", options->json_out, "write the points as JSON ('-': only the JSON on stdout)");
   sub->add_option("--csv", options->csv_out, "write the points as CSV");
   sub->add_option("--svg", options->svg_out, "draw the points");
   sub->callback([options] { run_points(*options); });

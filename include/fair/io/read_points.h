@@ -268,7 +268,7 @@ void check_point_file(const Point_file<Kernel>& data, std::size_t minimum, bool 
   if (n < minimum)
     throw Parse_error(data.file, 0, fair::internal::message(method, ": needs at least ", minimum,
                                                       " points, the file has ", n));
-  const std::size_t pairs = closed ? n : n - 1;
+  const std::size_t pairs = n == 0 ? 0 : (closed ? n : n - 1);
   for (std::size_t i = 0; i < pairs; ++i) {
     const std::size_t j = (i + 1) % n;
     if (data.points[i] == data.points[j]) {

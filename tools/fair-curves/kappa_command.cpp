@@ -1,0 +1,148 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// fair-curves kappa: the (rational) kappa-curve through a point file (fair::Kappa_curve_2;
+// Yan, Schiller, Schaefer; doc/kappa_curves.md). Weights: "1" (polynomial kappa-curves),
+// "auto" (clamped minimum-eccentricity weights, eq. 16, optional per-point tension file) or a
+// number W used for every point. Writes the pieces and the solve report as JSON and a figure.
+
+#include "registry.h"
+#include "tool_common.h"
+
+#include <fair/Kappa_curve_2.h>
+#include <fair/io/read_points.h>
+#include <fair/io/svg.h>
+#include <fair/io/write_json.h>
+
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Kappa_command_options {
+  std::string input, weights = "1", tension_file, json_out, svg_out;
+  bool closed = false;
+};
+
+/// One number per non-empty line ('#' starts a comment); Parse_error names FILE:LINE.
+std::vector<double> read_numbers(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw fair::Parse_error(file, 0, "cannot open the tension file");
+  std::vector<double> out;
+  std::string line;
+  std::size_t number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    const std::size_t hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    std::istringstream fields(line);
+    double v;
+    if (!(fields >> v)) {
+      std::string rest;
+      if (std::istringstream(line) >> rest) throw fair::Parse_error(file, number, "expected a number, got '" + rest + "'");
+      continue;
+    }
+    std::string extra;
+    if (fields >> extra) throw fair::Parse_error(file, number, "expected one number per line, got '" + line + "'");
+    if (!std::isfinite(v) || v <= 0) throw fair::Parse_error(file, number, "tension must be finite and > 0");
+    out.push_back(v);
+  }
+  return out;
+}
+
+nlohmann::json xy(const fair_curves::Point_2& p) { return nlohmann::json::array({p.x(), p.y()}); }
+
+void run_kappa(const Kappa_command_options& o) {
+  using namespace fair_curves;
+  fair::Kappa_curve_options options;
+  if (o.weights == "auto") {
+    options.weights = fair::Kappa_weights::AUTOMATIC;
+  } else if (o.weights == "1") {
+    options.weights = fair::Kappa_weights::UNIT;
+  } else {
+    const double w = option_number(o.weights, "--weights");
+    if (!(w > 0)) throw CLI::ValidationError("--weights", "expected auto, 1 or a weight > 0, got '" + o.weights + "'");
+    options.weights = fair::Kappa_weights::FIXED;
+  }
+  if (!o.tension_file.empty() && options.weights != fair::Kappa_weights::AUTOMATIC)
+    throw CLI::ValidationError("--tension", "tension applies to --weights auto only");
+  const fair::io::Point_file<Kernel> data = fair::io::read_point_file<Kernel>(o.input);
+  options.closed = o.closed || data.closed;
+  fair::io::check_point_file(data, 3, options.closed, "fair-curves kappa");
+  if (options.weights == fair::Kappa_weights::FIXED)
+    options.fixed_weights.assign(data.points.size(), option_number(o.weights, "--weights"));
+  if (!o.tension_file.empty()) options.tension = read_numbers(o.tension_file);
+
+  const fair::Kappa_curve_2<Kernel> curve(data.points, options);
+  const fair::Kappa_solve_report& r = curve.report();
+
+  std::string json_text, svg_text;
+  if (!o.json_out.empty()) {
+    nlohmann::json pieces = nlohmann::json::array();
+    for (std::size_t j = 0; j < curve.number_of_pieces(); ++j) {
+      const auto& pc = curve.piece(j);
+      pieces.push_back({{"P0", xy(pc.control_point(0))}, {"P1", xy(pc.control_point(1))}, {"P2", xy(pc.control_point(2))},
+                        {"w", pc.weight()}, {"t", curve.t(j)}, {"point", curve.point_index(j)}});
+    }
+    const nlohmann::json j{{"method", "kappa"},
+                           {"closed", options.closed},
+                           {"weights", o.weights},
+                           {"converged", r.converged},
+                           {"iterations", r.iterations},
+                           {"refinement_passes", r.refinement_passes},
+                           {"residuals",
+                            {{"max", r.residual},
+                             {"interpolation", r.interpolation_residual},
+                             {"max_curvature_eq7", r.curvature_residual},
+                             {"abs_curvature_continuity", r.g2_residual},
+                             {"weight_eq16", r.weight_residual}}},
+                           {"energy",
+                            {{"total", r.energy()},
+                             {"interpolation", r.energy_interpolation},
+                             {"curvature_eq12", r.energy_curvature},
+                             {"g2_eq11", r.energy_g2},
+                             {"weight_eq13", r.energy_weight}}},
+                           {"bounds_active", r.bounds_active},
+                           {"pieces", pieces}};
+    std::ostringstream out;
+    fair::io::write_json(out, j);
+    json_text = out.str();
+  }
+  if (!o.svg_out.empty()) {
+    Curve_case c;
+    c.title = o.input + ": kappa-curve, weights " + o.weights;
+    c.title_in_figure = true;
+    c.input_points = fair::io::to_xy(data.points);
+    const Curve_figures f = make_curve_figures(curve.pieces(), c);
+    svg_text = f.curve_svg;
+  }
+  if (o.json_out != "-")
+    std::cout << o.input << ": " << curve.number_of_pieces() << " pieces, " << (options.closed ? "closed" : "open")
+              << ", weights " << o.weights << ", " << (r.converged ? "converged" : "NOT converged") << " after "
+              << r.refinement_passes << " passes and " << r.iterations << " iterations, residual "
+              << format_number(r.residual, 3) << ", energy " << format_number(r.energy(), 3) << "\n";
+  if (o.json_out == "-") std::cout << json_text;
+  else if (!o.json_out.empty()) fair::io::write_text_file(o.json_out, json_text);
+  if (!o.svg_out.empty()) fair::io::write_text_file(o.svg_out, svg_text);
+}
+
+} // namespace
+
+void register_kappa_command(CLI::App& app) {
+  auto options = std::make_shared<Kappa_command_options>();
+  CLI::App* sub = app.add_subcommand(
+      "kappa", "Rational kappa-curve through a point file: one conic piece per point, each point a curvature "
+               "extremum of its piece, |kappa| continuous (Yan, Schiller, Schaefer)");
+  sub->add_option("input", options->input, "the point file (.csv, .txt or .json)")->required();
+  sub->add_flag("--closed", options->closed, "closed curve (also set by JSON \"closed\")");
+  sub->add_option("--weights", options->weights,
+                  "1 (polynomial kappa-curve, default), auto (minimum-eccentricity weights, eq. 16) or a weight W > 0");
+  sub->add_option("--tension", options->tension_file, "with --weights auto: one tension mu_i > 0 per point per line");
+  sub->add_option("-o,--output", options->json_out, "write the pieces and the report as JSON ('-': only JSON on stdout)");
+  sub->add_option("--svg", options->svg_out, "draw the curve, its control polygons and curvature comb");
+  sub->callback([options] { run_kappa(*options); });
+}
+FAIR_CURVES_COMMAND(register_kappa_command)
