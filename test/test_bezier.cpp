@@ -80,6 +80,9 @@ TYPED_TEST(Bezier_typed, ExactIdentitiesOnRandomPieces) {
     EXPECT_EQ(e.degree(), n + 1);
     for (const FT& t : ts) {
       expect_same<K>(c.point(t), bernstein_sum<K>(cp, t));
+      expect_same<K>(c.point(t), P(c.x_polynomial().evaluate(t), c.y_polynomial().evaluate(t)));
+      expect_same<K>(c.derivative(t), typename K::Vector_2(c.x_polynomial().derivative().evaluate(t),
+                                                           c.y_polynomial().derivative().evaluate(t)));
       // The hodograph evaluates to c'(t); its hodograph to c''(t).
       expect_same<K>(h.point(t) - CGAL::ORIGIN, c.derivative(t));
       expect_same<K>(h.hodograph().point(t) - CGAL::ORIGIN, c.second_derivative(t));

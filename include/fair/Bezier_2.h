@@ -12,6 +12,7 @@
 #ifndef FAIR_BEZIER_2_H
 #define FAIR_BEZIER_2_H
 
+#include <fair/Bernstein_polynomial.h>
 #include <fair/Errors.h>
 
 #include <CGAL/number_utils.h>
@@ -120,6 +121,19 @@ public:
     }
     d1x = dn * de_casteljau(x, t);
     d1y = dn * de_casteljau(y, t);
+  }
+
+  /// The coordinate functions x(t), y(t) as fair::Bernstein_polynomial (coefficients = the
+  /// control point coordinates), for root finding and exact polynomial algebra.
+  Bernstein_polynomial<FT> x_polynomial() const {
+    std::vector<FT> x, y;
+    coordinates(x, y);
+    return Bernstein_polynomial<FT>(std::move(x));
+  }
+  Bernstein_polynomial<FT> y_polynomial() const {
+    std::vector<FT> x, y;
+    coordinates(x, y);
+    return Bernstein_polynomial<FT>(std::move(y));
   }
 
   /// The hodograph c'(t) as a Bezier piece of degree n-1 whose control "points" are
