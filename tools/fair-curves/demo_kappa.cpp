@@ -61,24 +61,35 @@ void add_kappa_cases(fair::io::Gallery& gallery) {
       "(eq. 7), consecutive pieces join G1 with |kappa| continuous (eqs. 9, 10). Weights 1 give the polynomial "
       "kappa-curves; the automatic (clamped minimum-eccentricity, eq. 16) weights reproduce circles. The marks "
       "are the input points at their parameters t_i.");
-  // Fig. 3: the same closed points, uniform weights 0.6, 1, 2 and automatic weights.
-  const std::vector<Point_2> fig3 = {Point_2(0, 0), Point_2(2, -0.3), Point_2(3.2, 1.1), Point_2(2.2, 2.6),
-                                     Point_2(0.6, 2.2), Point_2(-0.4, 1.0)};
+  // Fig. 3: the same closed points, uniform weights 0.6, 1, 2 and automatic weights (top row: a
+  // kite; bottom row: four non-uniformly spaced points on a circle, reproduced by the automatic
+  // weights).
+  const std::vector<Point_2> kite = {Point_2(0, 0), Point_2(2, -1), Point_2(4, 0), Point_2(2, 3)};
   for (double w : {0.6, 1.0, 2.0}) {
     fair::Kappa_curve_options o;
     o.closed = true;
     o.weights = w == 1.0 ? fair::Kappa_weights::UNIT : fair::Kappa_weights::FIXED;
-    o.fixed_weights.assign(fig3.size(), w);
-    add_kappa_case(gallery, fig3, o, "Fig. 3: weights " + fair_curves::format_number(w, 2),
+    o.fixed_weights.assign(kite.size(), w);
+    add_kappa_case(gallery, kite, o, "Fig. 3: weights " + fair_curves::format_number(w, 2),
                    "Every weight w_i = " + fair_curves::format_number(w, 2) +
                        (w == 1.0 ? ": the polynomial kappa-curve." : ". Larger weights give sharper corners."));
+  }
+  const std::vector<Point_2> circle4 = on_circle({0, 80, 170, 260});
+  for (int k = 0; k < 2; ++k) {
+    fair::Kappa_curve_options o;
+    o.closed = true;
+    o.weights = fair::Kappa_weights::AUTOMATIC;
+    add_kappa_case(gallery, k == 0 ? kite : circle4, o,
+                   std::string("Fig. 3: automatic weights") + (k == 0 ? "" : ", co-circular points"),
+                   k == 0 ? "Clamped minimum-eccentricity weights (eq. 16, tension 1, clamp 1/2), chosen by the solver."
+                          : "Four non-uniformly spaced points on the unit circle (0, 80, 170, 260 degrees): the "
+                            "automatic weights reproduce the circle.");
   }
   {
     fair::Kappa_curve_options o;
     o.closed = true;
-    o.weights = fair::Kappa_weights::AUTOMATIC;
-    add_kappa_case(gallery, fig3, o, "Fig. 3: automatic weights",
-                   "Clamped minimum-eccentricity weights (eq. 16, tension 1, clamp 1/2), chosen by the solver.");
+    add_kappa_case(gallery, circle4, o, "Fig. 3: weights 1, co-circular points",
+                   "The same four co-circular points with unit weights (polynomial kappa-curve): not a circle.");
   }
   // Fig. 9: the 2nd and 4th points approach each other: a cusp forms at the 3rd (an input point).
   for (double d : {0.6, 0.15, 0.02}) {
