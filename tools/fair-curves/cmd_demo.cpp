@@ -5,12 +5,15 @@
 
 #include "registry.h"
 
+#include <fair/Errors.h>
 #include <fair/io/gallery.h>
 
 #include <algorithm>
+#include <exception>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -35,10 +38,25 @@ void run_demo(const Demo_options& o) {
       "polygons (grey, dashed), its curvature comb (orange, teeth pointing away from the centre of curvature), the "
       "input points (black) and marked points (red), then its signed curvature against arc length (piece joins "
       "dashed), and a table of measured figures.");
-  for (const fair_curves::Demo_entry& e : entries) e.add(gallery);
+  // A failing method must not take the whole gallery down: its error is shown in the page and
+  // on stderr, the other sections are written, and the exit code is 1.
+  std::vector<std::string> failures;
+  for (const fair_curves::Demo_entry& e : entries) {
+    try {
+      e.add(gallery);
+    } catch (const std::exception& x) {
+      failures.push_back(e.name + ": " + x.what());
+      gallery.add_section("Failed: " + e.name, std::string("This section could not be computed: ") + x.what());
+    }
+  }
   gallery.write(o.out, o.inline_svg);
   std::cout << "fair-curves demo: wrote " << o.out << "/index.html: " << gallery.section_count() << " sections, "
             << gallery.case_count() << " cases\n";
+  if (!failures.empty()) {
+    std::string all;
+    for (const std::string& f : failures) all += (all.empty() ? "" : "; ") + f;
+    throw fair::Error("demo: " + std::to_string(failures.size()) + " section(s) failed: " + all);
+  }
 }
 
 } // namespace
