@@ -61,9 +61,14 @@ struct Generic_piece {
   typedef Kd::Point_2 Point_2;
   typedef Kd::Vector_2 Vector_2;
   fair::Bezier_2<Kd> b;
-  Point_2 point(double t) const { return b.point(t); }
-  Vector_2 derivative(double t) const { return b.derivative(t); }
-  Vector_2 second_derivative(double t) const { return b.second_derivative(t); }
+  // Like the library's pieces, it rejects parameters outside [0,1]: the metrics must not ask.
+  static double check(double t) {
+    fair::internal::require(t >= 0 && t <= 1, "Generic_piece: t = ", t, " outside [0,1]");
+    return t;
+  }
+  Point_2 point(double t) const { return b.point(check(t)); }
+  Vector_2 derivative(double t) const { return b.derivative(check(t)); }
+  Vector_2 second_derivative(double t) const { return b.second_derivative(check(t)); }
   double curvature(double t) const { return b.curvature(t); }
   std::vector<Point_2> control_points() const { return b.control_points(); }
 };

@@ -206,11 +206,27 @@ public:
       j.x = CGAL::to_double(p.x()); j.y = CGAL::to_double(p.y());
       j.x1 = CGAL::to_double(d1.x()); j.y1 = CGAL::to_double(d1.y());
       j.x2 = CGAL::to_double(d2.x()); j.y2 = CGAL::to_double(d2.y());
+      // Second-order differences that stay inside [0,1] (pieces may reject other parameters):
+      // central inside, one-sided three-point formulas within h of an end.
       const double h = 1e-4;
-      const auto a = piece_->second_derivative(FT(t - h));
-      const auto b = piece_->second_derivative(FT(t + h));
-      j.x3 = (CGAL::to_double(b.x()) - CGAL::to_double(a.x())) / (2 * h);
-      j.y3 = (CGAL::to_double(b.y()) - CGAL::to_double(a.y())) / (2 * h);
+      auto second = [&](double u, double& x, double& y) {
+        const auto v = piece_->second_derivative(FT(u));
+        x = CGAL::to_double(v.x());
+        y = CGAL::to_double(v.y());
+      };
+      double ax, ay, bx, by, cx, cy;
+      if (t - h >= 0 && t + h <= 1) {
+        second(t - h, ax, ay);
+        second(t + h, bx, by);
+        j.x3 = (bx - ax) / (2 * h);
+        j.y3 = (by - ay) / (2 * h);
+      } else {
+        const double s = (t - h < 0) ? h : -h; // step into the interval
+        second(t + s, bx, by);
+        second(t + 2 * s, cx, cy);
+        j.x3 = (-3 * j.x2 + 4 * bx - cx) / (2 * s);
+        j.y3 = (-3 * j.y2 + 4 * by - cy) / (2 * s);
+      }
     }
     return j;
   }
