@@ -111,7 +111,7 @@ optimal_cardinal_parameters(const std::vector<Point_2>& p, bool closed = false) 
   if (!CGAL::is_positive(alpha))
     throw Invalid_input_error(internal::message(
         method, ": the optimal parameter of eq. 18 is alpha* = ", CGAL::to_double(alpha),
-        " <= 0 (sum d_i.m_i = ", CGAL::to_double(M), ", sum |d_i|^2 = ", CGAL::to_double(D),
+        " <= 0 (sum d_i.m_i / sum |d_i|^2 = ", CGAL::to_double(M) / CGAL::to_double(D),
         "): the data fold back on themselves and no Cardinal spline with alpha > 0 minimises eq. 10; "
         "use a fixed alpha such as 1/2 (Catmull-Rom)"));
   Cardinal_parameters<K> out{alpha, p.front(), p.back(), s.energy(alpha), closed};

@@ -18,6 +18,8 @@
 #include <CGAL/Lazy_exact_nt.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <type_traits>
 #include <vector>
@@ -73,11 +75,21 @@ public:
   FT M() const { return Acc::wrap(M_); }
   FT S() const { return Acc::wrap(S_); }
 
-  /// The energy of eq. 10 for the parameter alpha.
-  FT energy(const FT& alpha) const { return FT(36) * alpha * alpha * D() + FT(144) * alpha * M() + FT(144) * S(); }
+  /// The energy of eq. 10 for the parameter alpha (of the original, unscaled points).
+  FT energy(const FT& alpha) const {
+    const FT e = FT(36) * alpha * alpha * D() + FT(144) * alpha * M() + FT(144) * S();
+    if constexpr (std::is_floating_point<FT>::value) return std::ldexp(e, 2 * exponent_); // exact, no NaN
+    else return e;
+  }
+
+  /// The points were multiplied by 2^-exponent before add() (floating point only): D, M, S are
+  /// 2^(-2 exponent) times those of the original points (alpha* = -2M/D is unchanged) and
+  /// energy() undoes the scaling.
+  void set_scale_exponent(int exponent) { exponent_ = exponent; }
 
 private:
   AT D_ = AT(0), M_ = AT(0), S_ = AT(0);
+  int exponent_ = 0;
 };
 
 /// The sums over the interior segments i = 0..n-3 of an open curve (the ones that do not touch an
@@ -88,6 +100,32 @@ Cardinal_sums<FT> cardinal_interior_sums(const std::vector<Point_2>& p, bool clo
   typedef typename Cardinal_sums<FT>::AT AT;
   Cardinal_sums<FT> s;
   const std::size_t N = p.size();
+  if constexpr (std::is_floating_point<FT>::value) {
+    // Floating point: alpha* is invariant under translation and scaling, so the sums are taken on
+    // the points translated to p_0 and scaled by a power of two (exact) that brings their extent
+    // to [1/2, 1): huge coordinates cannot overflow |d|^2 nor tiny ones underflow it.
+    double extent = 0;
+    for (const Point_2& q : p)
+      extent = std::max({extent, std::fabs(double(q.x() - p[0].x())), std::fabs(double(q.y() - p[0].y()))});
+    if (extent > 0 && std::isfinite(extent)) {
+      int e = 0;
+      std::frexp(extent, &e);
+      // 2^-e in two factors: 2^1074 (subnormal extents) is not a double.
+      const int e1 = e / 2, e2 = e - e1;
+      std::vector<Point_2> q;
+      q.reserve(N);
+      for (const Point_2& r : p)
+        q.push_back(Point_2(std::ldexp(std::ldexp(double(r.x() - p[0].x()), -e1), -e2),
+                            std::ldexp(std::ldexp(double(r.y() - p[0].y()), -e1), -e2)));
+      if (closed) {
+        for (std::size_t i = 0; i < N; ++i) s.add(q[(i + N - 1) % N], q[i], q[(i + 1) % N], q[(i + 2) % N]);
+      } else {
+        for (std::size_t i = 0; i + 3 < N; ++i) s.add(q[i], q[i + 1], q[i + 2], q[i + 3]);
+      }
+      s.set_scale_exponent(e);
+      return s;
+    }
+  }
   if (std::is_same<AT, FT>::value) {
     if (closed) {
       for (std::size_t i = 0; i < N; ++i) s.add(p[(i + N - 1) % N], p[i], p[(i + 1) % N], p[(i + 2) % N]);
