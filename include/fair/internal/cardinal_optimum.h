@@ -104,23 +104,37 @@ Cardinal_sums<FT> cardinal_interior_sums(const std::vector<Point_2>& p, bool clo
     // Floating point: alpha* is invariant under translation and scaling, so the sums are taken on
     // the points translated to p_0 and scaled by a power of two (exact) that brings their extent
     // to [1/2, 1): huge coordinates cannot overflow |d|^2 nor tiny ones underflow it.
+    const double x0 = double(p[0].x()), y0 = double(p[0].y());
     double extent = 0;
-    for (const Point_2& q : p)
-      extent = std::max({extent, std::fabs(double(q.x() - p[0].x())), std::fabs(double(q.y() - p[0].y()))});
+    for (const Point_2& q : p) {
+      const double ax = std::fabs(double(q.x()) - x0), ay = std::fabs(double(q.y()) - y0);
+      if (ax > extent) extent = ax;
+      if (ay > extent) extent = ay;
+    }
     if (extent > 0 && std::isfinite(extent)) {
       int e = 0;
       std::frexp(extent, &e);
-      // 2^-e in two factors: 2^1074 (subnormal extents) is not a double.
+      // 2^-e as two exact factors: 2^1074 (subnormal extents) is not a double.
       const int e1 = e / 2, e2 = e - e1;
-      std::vector<Point_2> q;
-      q.reserve(N);
-      for (const Point_2& r : p)
-        q.push_back(Point_2(std::ldexp(std::ldexp(double(r.x() - p[0].x()), -e1), -e2),
-                            std::ldexp(std::ldexp(double(r.y() - p[0].y()), -e1), -e2)));
+      const double f1 = std::ldexp(1.0, -e1), f2 = std::ldexp(1.0, -e2);
+      auto X = [&](std::size_t k) { return ((double(p[k].x()) - x0) * f1) * f2; };
+      auto Y = [&](std::size_t k) { return ((double(p[k].y()) - y0) * f1) * f2; };
       if (closed) {
-        for (std::size_t i = 0; i < N; ++i) s.add(q[(i + N - 1) % N], q[i], q[(i + 1) % N], q[(i + 2) % N]);
+        for (std::size_t i = 0; i < N; ++i) {
+          const std::size_t a = (i + N - 1) % N, b = (i + 1) % N, c = (i + 2) % N;
+          s.add_values(X(a), Y(a), X(i), Y(i), X(b), Y(b), X(c), Y(c));
+        }
       } else {
-        for (std::size_t i = 0; i + 3 < N; ++i) s.add(q[i], q[i + 1], q[i + 2], q[i + 3]);
+        // Sliding window: every point is scaled once.
+        double wx[4], wy[4];
+        for (std::size_t k = 0; k < 3 && k < N; ++k) { wx[k] = X(k); wy[k] = Y(k); }
+        for (std::size_t i = 0; i + 3 < N; ++i) {
+          wx[3] = X(i + 3);
+          wy[3] = Y(i + 3);
+          s.add_values(wx[0], wy[0], wx[1], wy[1], wx[2], wy[2], wx[3], wy[3]);
+          wx[0] = wx[1]; wx[1] = wx[2]; wx[2] = wx[3];
+          wy[0] = wy[1]; wy[1] = wy[2]; wy[2] = wy[3];
+        }
       }
       s.set_scale_exponent(e);
       return s;
