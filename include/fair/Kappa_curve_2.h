@@ -509,9 +509,10 @@ Kappa_certificate certify(const Kappa_curve_2<K>& curve) {
       jn.piece = j;
       jn.c0 = cert.exact_pieces[a].target() == cert.exact_pieces[j].source();
       jn.g1 = orient(P[a], E[j], P[j]) == CGAL::COLLINEAR && lam[j] > 0 && lam[j] < 1;
-      const Q k1 = cert.exact_pieces[a].squared_curvature_at_target();
-      const Q k2 = cert.exact_pieces[j].squared_curvature_at_source();
-      internal::kappa::relative_mismatch_interval(k1 / k2, jn.kappa_mismatch_lower, jn.kappa_mismatch_upper);
+      const Q A[2] = {E[a].x(), E[a].y()}, Pa[2] = {px[a], py[a]}, Ej[2] = {E[j].x(), E[j].y()};
+      const Q Pj[2] = {px[j], py[j]}, B[2] = {E[j + 1].x(), E[j + 1].y()};
+      internal::kappa::relative_mismatch_interval(A, Pa, Ej, Pj, B, w[a], w[j], jn.kappa_mismatch_lower,
+                                                  jn.kappa_mismatch_upper);
       cert.joins.push_back(jn);
     }
   }

@@ -81,13 +81,25 @@ inline void exact_eq18(bool closed, const std::vector<CGAL::Gmpq>& qx, const std
   }
 }
 
-/// Certified enclosure of (rho - 1)/(rho + 1) with rho = sqrt(x), x >= 0 exact.
-inline void relative_mismatch_interval(const CGAL::Gmpq& x, double& lo, double& hi) {
-  CGAL::Protect_FPU_rounding<true> guard;
+/// Certified enclosure of the relative |kappa| mismatch (|k1| - |k2|) / (|k1| + |k2|) at the
+/// join E of the exact pieces (A, P, E, wa) and (E, R, B, wb), by interval arithmetic on
+/// enclosures of the exact coordinates (eq. 5: |kappa(1)| of the first piece is
+/// |Delta(A,P,E)| / (wa^2 |E-P|^3), |kappa(0)| of the second |Delta(E,R,B)| / (wb^2 |R-E|^3)).
+/// Cheaper than exact rationals, whose lengths grow along the curve.
+inline void relative_mismatch_interval(const CGAL::Gmpq* a, const CGAL::Gmpq* p, const CGAL::Gmpq* e,
+                                       const CGAL::Gmpq* r, const CGAL::Gmpq* b, const CGAL::Gmpq& wa,
+                                       const CGAL::Gmpq& wb, double& lo, double& hi) {
   typedef CGAL::Interval_nt<false> I;
-  const std::pair<double, double> xi = CGAL::to_interval(x);
-  const I r = CGAL::sqrt(I(xi.first, xi.second));
-  const I m = (r - I(1)) / (r + I(1));
+  CGAL::Protect_FPU_rounding<true> guard;
+  auto iv = [](const CGAL::Gmpq& q) { const std::pair<double, double> x = CGAL::to_interval(q); return I(x.first, x.second); };
+  const I ax = iv(a[0]), ay = iv(a[1]), px = iv(p[0]), py = iv(p[1]), ex = iv(e[0]), ey = iv(e[1]);
+  const I rx = iv(r[0]), ry = iv(r[1]), bx = iv(b[0]), by = iv(b[1]), Wa = iv(wa), Wb = iv(wb);
+  const I d1 = CGAL::abs((px - ax) * (ey - py) - (py - ay) * (ex - px));
+  const I d2 = CGAL::abs((rx - ex) * (by - ry) - (ry - ey) * (bx - rx));
+  const I l1 = CGAL::sqrt(CGAL::square(ex - px) + CGAL::square(ey - py));
+  const I l2 = CGAL::sqrt(CGAL::square(rx - ex) + CGAL::square(ry - ey));
+  const I k1 = d1 / (Wa * Wa * l1 * l1 * l1), k2 = d2 / (Wb * Wb * l2 * l2 * l2);
+  const I m = (k1 - k2) / (k1 + k2);
   lo = m.inf();
   hi = m.sup();
 }
