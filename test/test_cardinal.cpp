@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <cmath>
 #include <limits>
 #include <random>
@@ -19,15 +21,7 @@
 
 namespace {
 
-typedef CGAL::Simple_cartesian<double> Kd;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
-typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
-typedef CGAL::Simple_cartesian<CGAL::Gmpq> Kq;
-
-template <class K>
-bool is_exact() {
-  return !std::is_same<typename K::FT, double>::value;
-}
+using namespace fair_test;
 
 template <class K>
 std::vector<typename K::Point_2> data_set_1() { // Li, Section 2 / Figures 1-3
@@ -52,8 +46,7 @@ double d(const typename K::FT& x) {
 
 template <class K>
 class Cardinal_typed : public ::testing::Test {};
-typedef ::testing::Types<Kd, Epick, Epeck, Kq> Kernels;
-TYPED_TEST_SUITE(Cardinal_typed, Kernels);
+TYPED_TEST_SUITE(Cardinal_typed, All_kernels);
 
 // ----------------------------------------------------------------------------------- Table 1
 TYPED_TEST(Cardinal_typed, PaperTable1) {
@@ -299,7 +292,7 @@ TYPED_TEST(Cardinal_typed, RandomOptimumIsTheMinimum) {
 
 TEST(Cardinal, ClosedRegularPolygons) {
   for (int N : {5, 6, 8, 12}) {
-    std::vector<Kd::Point_2> p;
+    std::vector<SC_double::Point_2> p;
     const double pi = std::acos(-1.0), th = 2 * pi / N;
     for (int i = 0; i < N; ++i) p.emplace_back(2 * std::cos(th * i), 2 * std::sin(th * i));
     const auto o = fair::optimal_cardinal_parameters(p, true);
@@ -309,10 +302,10 @@ TEST(Cardinal, ClosedRegularPolygons) {
 }
 
 TEST(Cardinal, HugeAndTinyCoordinates) {
-  const auto base = fair::optimal_cardinal_parameters(data_set_1<Kd>());
+  const auto base = fair::optimal_cardinal_parameters(data_set_1<SC_double>());
   for (double s : {1e100, 1e-100, 1e300, 1e-300, 3e-320}) {
-    std::vector<Kd::Point_2> p;
-    for (const auto& x : data_set_1<Kd>()) p.emplace_back(s * x.x(), s * x.y());
+    std::vector<SC_double::Point_2> p;
+    for (const auto& x : data_set_1<SC_double>()) p.emplace_back(s * x.x(), s * x.y());
     const auto o = fair::optimal_cardinal_parameters(p);
     EXPECT_NEAR(o.alpha, base.alpha, s < 1e-300 ? 1e-2 : 1e-14); // 3e-320 is subnormal: ~4 digits
     if (s >= 1e-300) {
@@ -327,15 +320,15 @@ TEST(Cardinal, HugeAndTinyCoordinates) {
 }
 
 TEST(Cardinal, NonFiniteInput) {
-  typedef Kd::Point_2 P;
+  typedef SC_double::Point_2 P;
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
   EXPECT_THROW(fair::optimal_cardinal_parameters(std::vector<P>{P(0, 0), P(nan, 0), P(1, 1), P(2, 0)}),
                fair::Invalid_input_error);
   EXPECT_THROW(fair::optimal_cardinal_parameters(std::vector<P>{P(0, 0), P(1, 0), P(1, inf), P(2, 0)}, true),
                fair::Invalid_input_error);
-  EXPECT_THROW(fair::Cardinal_spline_2<Kd>(std::vector<P>{P(0, 0), P(1, 0)}, 0.5, P(inf, 0), P(0, 0)),
+  EXPECT_THROW(fair::Cardinal_spline_2<SC_double>(std::vector<P>{P(0, 0), P(1, 0)}, 0.5, P(inf, 0), P(0, 0)),
                fair::Invalid_input_error);
-  EXPECT_THROW(fair::Cardinal_spline_2<Kd>(std::vector<P>{P(0, 0), P(1, 0), P(2, 1)}, nan, true),
+  EXPECT_THROW(fair::Cardinal_spline_2<SC_double>(std::vector<P>{P(0, 0), P(1, 0), P(2, 1)}, nan, true),
                fair::Precondition_error);
 }
 
@@ -344,10 +337,10 @@ TEST(Cardinal, TrueCurvatureVariation) {
   // The optimum of eq. 10 also has a lower true curvature variation than Catmull-Rom on both data
   // sets (eq. 5 per segment, and int (dkappa/ds)^2 ds).
   for (int set = 0; set < 2; ++set) {
-    const auto p = set == 0 ? data_set_1<Kd>() : half_circle<Kd>();
+    const auto p = set == 0 ? data_set_1<SC_double>() : half_circle<SC_double>();
     const auto o = fair::optimal_cardinal_parameters(p);
-    const auto best = fair::Cardinal_spline_2<Kd>::optimal(p);
-    const auto cr = fair::Cardinal_spline_2<Kd>::catmull_rom(p, o.aux_start, o.aux_end);
+    const auto best = fair::Cardinal_spline_2<SC_double>::optimal(p);
+    const auto cr = fair::Cardinal_spline_2<SC_double>::catmull_rom(p, o.aux_start, o.aux_end);
     for (auto m : {fair::Energy_measure::parameter, fair::Energy_measure::arc_length}) {
       const fair::Quadrature_estimate eb = best.curvature_variation_energy(m), ec = cr.curvature_variation_energy(m);
       EXPECT_LE(eb.error_bound, 1e-9 * eb.value + 1e-13);
@@ -357,9 +350,9 @@ TEST(Cardinal, TrueCurvatureVariation) {
   // A unit-speed-free check of the quadrature: a parabolic end segment y = x^2 has
   // kappa = 2 / (1 + 4x^2)^(3/2); for the segment of the collinear-free data below compare with the
   // closed form int (dkappa/ds)^2 ds computed by high-order Simpson on the closed form.
-  typedef Kd::Point_2 P;
-  const fair::Bezier_2<Kd> parabola(std::vector<P>{P(-1, 1), P(0, -1), P(1, 1)});
-  const auto e = fair::curvature_variation_energy(std::vector<fair::Bezier_2<Kd>>{parabola});
+  typedef SC_double::Point_2 P;
+  const fair::Bezier_2<SC_double> parabola(std::vector<P>{P(-1, 1), P(0, -1), P(1, 1)});
+  const auto e = fair::curvature_variation_energy(std::vector<fair::Bezier_2<SC_double>>{parabola});
   // dkappa/ds = dkappa/dx / sqrt(1+4x^2) = -24x / (1+4x^2)^3; int over x in [-1,1] of
   // (dkappa/ds)^2 sqrt(1+4x^2) dx = int 576 x^2 (1+4x^2)^(-11/2) dx.
   double ref = 0;

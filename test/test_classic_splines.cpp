@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -20,45 +22,10 @@
 
 namespace {
 
-typedef CGAL::Simple_cartesian<double> SC_double;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel EPICK;
-typedef CGAL::Exact_predicates_exact_constructions_kernel EPECK;
-typedef CGAL::Simple_cartesian<CGAL::Gmpq> SC_gmpq;
+using namespace fair_test;
 
-template <class K>
-constexpr bool is_exact() {
-  return CGAL::Algebraic_structure_traits<typename K::FT>::Is_exact::value;
-}
-
-// a == b exactly in an exact kernel, to a relative 1e-11 otherwise.
-template <class K>
-void expect_equal(const typename K::FT& a, const typename K::FT& b, const char* what) {
-  if (is_exact<K>()) {
-    EXPECT_TRUE(a == b) << what << ": " << CGAL::to_double(a) << " != " << CGAL::to_double(b);
-  } else {
-    const double x = CGAL::to_double(a), y = CGAL::to_double(b);
-    EXPECT_NEAR(x, y, 1e-11 * (1 + std::max(std::fabs(x), std::fabs(y)))) << what;
-  }
-}
-template <class K, class P>
-void expect_equal_xy(const P& a, const P& b, const char* what) {
-  expect_equal<K>(a.x(), b.x(), what);
-  expect_equal<K>(a.y(), b.y(), what);
-}
-
-// Random points with coordinates k/8, |k| <= 800: exactly representable in double, so every
-// kernel sees the same data. Consecutive points are distinct by construction.
-template <class K>
-std::vector<typename K::Point_2> random_points(std::mt19937& rng, std::size_t n) {
-  std::uniform_int_distribution<int> d(-800, 800);
-  std::vector<typename K::Point_2> p;
-  while (p.size() < n) {
-    typename K::Point_2 q(typename K::FT(d(rng)) / 8, typename K::FT(d(rng)) / 8);
-    if (!p.empty() && (q == p.back() || (p.size() + 1 == n && q == p.front()))) continue;
-    p.push_back(q);
-  }
-  return p;
-}
+const fair::Knot_spacing all_spacings[] = {fair::Knot_spacing::uniform, fair::Knot_spacing::centripetal,
+                                           fair::Knot_spacing::chordal};
 
 // Interpolation, and C1/C2 continuity in the knot parameter u: piece i has local parameter
 // t = (u - u_i)/h_i, so d/du = (1/h_i) d/dt and d2/du2 = (1/h_i^2) d2/dt2.
@@ -94,8 +61,7 @@ void check_interpolation_and_continuity(const Curve& c, int order) {
 
 template <class K>
 class Classic_splines : public ::testing::Test {};
-typedef ::testing::Types<SC_double, EPICK, EPECK, SC_gmpq> Kernels;
-TYPED_TEST_SUITE(Classic_splines, Kernels);
+TYPED_TEST_SUITE(Classic_splines, All_kernels);
 
 // ---------------------------------------------------------------------------------------------
 // Cubic_interpolating_spline_2
@@ -152,8 +118,7 @@ TYPED_TEST(Classic_splines, NaturalClampedPeriodicOnRandomData) {
   for (int trial = 0; trial < trials; ++trial) {
     const std::size_t n = 2 + static_cast<std::size_t>(trial % 9);
     const auto p = random_points<K>(rng, n);
-    for (fair::Knot_spacing sp :
-         {fair::Knot_spacing::uniform, fair::Knot_spacing::centripetal, fair::Knot_spacing::chordal}) {
+    for (fair::Knot_spacing sp : all_spacings) {
       fair::Cubic_interpolating_spline_2<K> nat(p, fair::Spline_end_condition::natural, sp);
       check_interpolation_and_continuity<K>(nat, 2);
       // Natural ends: zero second derivative.
@@ -252,7 +217,7 @@ TYPED_TEST(Classic_splines, TinyAndHugeCoordinates) {
   for (double scale : {1e-150, 1e150}) {
     std::vector<P> p;
     for (const P& q : base) p.push_back(P(q.x() * scale, q.y() * scale));
-    for (fair::Knot_spacing sp : {fair::Knot_spacing::uniform, fair::Knot_spacing::centripetal, fair::Knot_spacing::chordal}) {
+    for (fair::Knot_spacing sp : all_spacings) {
       fair::Cubic_interpolating_spline_2<K> s0(base, fair::Spline_end_condition::natural, sp);
       fair::Cubic_interpolating_spline_2<K> s1(p, fair::Spline_end_condition::natural, sp);
       fair::Catmull_rom_2<K> c0(base, true, sp), c1(p, true, sp);
@@ -374,8 +339,7 @@ TYPED_TEST(Classic_splines, CatmullRomRandomOpenClosedAndAuxiliaryPoints) {
   for (int trial = 0; trial < trials; ++trial) {
     const std::size_t n = 3 + static_cast<std::size_t>(trial % 8);
     const auto p = random_points<K>(rng, n);
-    for (fair::Knot_spacing sp :
-         {fair::Knot_spacing::uniform, fair::Knot_spacing::centripetal, fair::Knot_spacing::chordal}) {
+    for (fair::Knot_spacing sp : all_spacings) {
       check_interpolation_and_continuity<K>(fair::Catmull_rom_2<K>(p, false, sp), 1);
       check_interpolation_and_continuity<K>(fair::Catmull_rom_2<K>(p, true, sp), 1);
     }

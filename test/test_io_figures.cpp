@@ -15,6 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -28,10 +30,7 @@
 
 namespace {
 
-typedef CGAL::Simple_cartesian<double> SC_double;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
-typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
-typedef CGAL::Simple_cartesian<CGAL::Gmpq> SC_gmpq;
+using namespace fair_test;
 
 const double pi = 3.14159265358979323846;
 
@@ -48,8 +47,7 @@ fair::Bezier_2<K> unit_parabola(double scale = 1) {
 
 template <class K>
 class SamplingKernels : public ::testing::Test {};
-typedef ::testing::Types<SC_double, Epick, Epeck, SC_gmpq> Kernels;
-TYPED_TEST_SUITE(SamplingKernels, Kernels);
+TYPED_TEST_SUITE(SamplingKernels, All_kernels);
 
 TYPED_TEST(SamplingKernels, ParabolaArcLengthCurvatureAndNormalsMatchClosedForms) {
   typedef TypeParam K;
@@ -222,7 +220,7 @@ TEST(Svg, ScaleInvariantAndRobustToHugeAndTinyCoordinates) {
   expect_clean_svg(parabola_figure<SC_double>(1e300));
   expect_clean_svg(parabola_figure<SC_double>(1e-300));
   expect_clean_svg(parabola_figure<SC_double>(1e-10, 1e8));
-  expect_clean_svg(parabola_figure<Epeck>(1e-5, 3));
+  expect_clean_svg(parabola_figure<EPECK>(1e-5, 3));
 }
 
 TEST(Svg, RefusesNonFiniteInput) {
