@@ -118,21 +118,31 @@ public:
 
   /// In-place Cholesky A = L L^T. Returns false if a pivot is not positive (not SPD in floating
   /// point); the content is then unusable.
+  /// Right-looking (outer-product) order: column k is scaled, then the trailing h x h triangle
+  /// gets the rank-1 update A(i,j) -= L(i,k) L(j,k), whose inner loop runs along a stored row
+  /// with independent operations (vectorised, throughput bound), unlike the row-by-row order
+  /// whose dot products and divisions form one serial dependency chain. Same flops (N h^2 / 2),
+  /// same rounding error bound.
   bool factor() {
-    for (std::size_t i = 0; i < n_; ++i) {
-      const std::size_t j0 = i > h_ ? i - h_ : 0;
-      double* Li = &a_[i * w_ + (h_ - i)];  // Li[j] = L(i,j)
-      for (std::size_t j = j0; j <= i; ++j) {
-        const double* Lj = &a_[j * w_ + (h_ - j)];
-        const std::size_t k0 = std::max(j0, j > h_ ? j - h_ : 0);
-        double s = Li[j];
-        for (std::size_t k = k0; k < j; ++k) s -= Li[k] * Lj[k];
-        if (j == i) {
-          if (!(s > 0.0) || !std::isfinite(s)) return false;
-          Li[i] = std::sqrt(s);
-        } else {
-          Li[j] = s / Lj[j];
-        }
+    col_.resize(h_ + 1);
+    for (std::size_t k = 0; k < n_; ++k) {
+      double* Rk = row(k);
+      const double d = Rk[k];
+      if (!(d > 0.0) || !std::isfinite(d)) return false;
+      const double l = std::sqrt(d), inv = 1.0 / l;
+      Rk[k] = l;
+      const std::size_t iend = std::min(n_ - 1, k + h_);
+      double* c = col_.data();  // c[i - k - 1] = L(i,k), k < i <= iend
+      for (std::size_t i = k + 1; i <= iend; ++i) {
+        double& a = row(i)[k];
+        a *= inv;
+        c[i - k - 1] = a;
+      }
+      for (std::size_t i = k + 1; i <= iend; ++i) {
+        double* Ri = row(i) + (k + 1);
+        const double lik = c[i - k - 1];
+        const std::size_t len = i - k;
+        for (std::size_t j = 0; j < len; ++j) Ri[j] -= lik * c[j];
       }
     }
     return true;
@@ -157,8 +167,10 @@ public:
   }
 
 private:
+  double* row(std::size_t i) { return a_.data() + i * w_ + h_ - i; }  // row(i)[j] = A(i,j)
+
   std::size_t n_ = 0, h_ = 0, w_ = 1;
-  std::vector<double> a_;
+  std::vector<double> a_, col_;
 };
 
 } // namespace kappa
