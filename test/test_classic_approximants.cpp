@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -22,42 +24,7 @@
 
 namespace {
 
-typedef CGAL::Simple_cartesian<double> SC_double;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel EPICK;
-typedef CGAL::Exact_predicates_exact_constructions_kernel EPECK;
-typedef CGAL::Simple_cartesian<CGAL::Gmpq> SC_gmpq;
-
-template <class K>
-constexpr bool is_exact() {
-  return CGAL::Algebraic_structure_traits<typename K::FT>::Is_exact::value;
-}
-
-template <class K>
-void expect_equal(const typename K::FT& a, const typename K::FT& b, const char* what) {
-  if (is_exact<K>()) {
-    EXPECT_TRUE(a == b) << what << ": " << CGAL::to_double(a) << " != " << CGAL::to_double(b);
-  } else {
-    const double x = CGAL::to_double(a), y = CGAL::to_double(b);
-    EXPECT_NEAR(x, y, 1e-11 * (1 + std::max(std::fabs(x), std::fabs(y)))) << what;
-  }
-}
-template <class K, class P>
-void expect_equal_xy(const P& a, const P& b, const char* what) {
-  expect_equal<K>(a.x(), b.x(), what);
-  expect_equal<K>(a.y(), b.y(), what);
-}
-
-template <class K>
-std::vector<typename K::Point_2> random_points(std::mt19937& rng, std::size_t n) {
-  std::uniform_int_distribution<int> d(-800, 800);
-  std::vector<typename K::Point_2> p;
-  while (p.size() < n) {
-    typename K::Point_2 q(typename K::FT(d(rng)) / 8, typename K::FT(d(rng)) / 8);
-    if (!p.empty() && (q == p.back() || (p.size() + 1 == n && q == p.front()))) continue;
-    p.push_back(q);
-  }
-  return p;
-}
+using namespace fair_test;
 
 // C2 at every join of a sequence of pieces on uniform knots (all pieces have h = 1).
 template <class K, class Piece>
@@ -88,8 +55,7 @@ typename K::Vector_2 fourth_difference(const std::vector<typename K::Point_2>& p
 
 template <class K>
 class Classic_approximants : public ::testing::Test {};
-typedef ::testing::Types<SC_double, EPICK, EPECK, SC_gmpq> Kernels;
-TYPED_TEST_SUITE(Classic_approximants, Kernels);
+TYPED_TEST_SUITE(Classic_approximants, All_kernels);
 
 // ---------------------------------------------------------------------------------------------
 // Cubic_bspline_2
