@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -23,18 +25,9 @@
 
 namespace {
 
-typedef CGAL::Simple_cartesian<double> SC_double;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
-typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
-typedef CGAL::Simple_cartesian<CGAL::Gmpq> SC_gmpq;
+using namespace fair_test;
 
 const std::string data_dir = std::string(FAIR_TEST_DATA_DIR) + "/io/";
-
-template <class K>
-bool is_exact_kernel() {
-  return CGAL::Algebraic_structure_traits<typename K::FT>::Is_exact::value &&
-         !std::is_floating_point<typename K::FT>::value;
-}
 
 // Expects `f` to throw Parse_error at `line`, naming `file`; returns the message.
 template <class F>
@@ -55,6 +48,12 @@ std::string expect_parse_error(F f, const std::string& file, std::size_t line) {
   ADD_FAILURE() << "expected Parse_error at " << file << ":" << line << ", nothing thrown";
   return std::string();
 }
+
+// A malformed text and the line its Parse_error must name (0: the whole file).
+struct Parse_case {
+  const char* text;
+  std::size_t line;
+};
 
 // ------------------------------------------------------------------ number parsing
 
@@ -112,7 +111,7 @@ TEST(IoNumbers, Rationals) {
   EXPECT_EQ(q, CGAL::Gmpq(-9192, 12241));
   // An exact FT gets the exact value even for digits beyond double precision.
   const auto big = fair::io::internal::parse_number("123456789012345678901234567891/7", "f", 1, "x");
-  const Epeck::FT e = fair::io::internal::to_ft<Epeck::FT>(big);
+  const EPECK::FT e = fair::io::internal::to_ft<EPECK::FT>(big);
   std::ostringstream exact;
   exact << e.exact();
   EXPECT_EQ(exact.str(), "123456789012345678901234567891/7");
@@ -125,8 +124,7 @@ TEST(IoNumbers, Rationals) {
 
 template <class K>
 class IoKernels : public ::testing::Test {};
-typedef ::testing::Types<SC_double, Epick, Epeck, SC_gmpq> Kernels;
-TYPED_TEST_SUITE(IoKernels, Kernels);
+TYPED_TEST_SUITE(IoKernels, All_kernels);
 
 TYPED_TEST(IoKernels, ReadsCsvWithHeaderCommentsBlankLinesCrlfAndRationals) {
   typedef TypeParam K;
@@ -141,7 +139,7 @@ TYPED_TEST(IoKernels, ReadsCsvWithHeaderCommentsBlankLinesCrlfAndRationals) {
   EXPECT_EQ(f.points[2], typename K::Point_2(3, 1));
   EXPECT_EQ(f.points[3], typename K::Point_2(-0.25, 4));
   // "9192/12241": exact in an exact kernel, the correctly rounded quotient otherwise.
-  if (is_exact_kernel<K>())
+  if (is_exact<K>())
     EXPECT_TRUE(f.points[4].x() * FT(12241) == FT(9192));
   else
     EXPECT_EQ(CGAL::to_double(f.points[4].x()), 9192.0 / 12241.0);
@@ -163,7 +161,7 @@ TYPED_TEST(IoKernels, ReadsJsonObjectAndBareArray) {
   ASSERT_EQ(bare.points.size(), 3u);
   EXPECT_FALSE(bare.closed_given);
   EXPECT_EQ(bare.points[0], typename K::Point_2(0.1, 0.2));  // through the nearest double
-  if (is_exact_kernel<K>()) {
+  if (is_exact<K>()) {
     EXPECT_TRUE(bare.points[1].x() * FT(3) == FT(1));
     EXPECT_TRUE(bare.points[1].y() * FT(7) == FT(-2));
   } else {
@@ -206,7 +204,7 @@ TYPED_TEST(IoKernels, JsonRoundTripIsExact) {
   std::uniform_real_distribution<double> u(-1e6, 1e6);
   std::vector<Point_2> points;
   for (int i = 0; i < 50; ++i) points.push_back(Point_2(u(rng), std::ldexp(u(rng), -40)));
-  if (is_exact_kernel<K>()) {
+  if (is_exact<K>()) {
     // Values that are not doubles travel as exact "p/q" strings.
     points.push_back(Point_2(FT(1) / FT(3), FT(-22) / FT(7)));
   }
@@ -229,11 +227,7 @@ TYPED_TEST(IoKernels, JsonRoundTripIsExact) {
 
 TEST(IoCsv, MalformedLinesInMemory) {
   typedef SC_double K;
-  struct Case {
-    const char* text;
-    std::size_t line;
-  };
-  const Case cases[] = {
+  const Parse_case cases[] = {
       {"", 0},                          // empty
       {"\n\n  \n", 0},                  // blank only
       {"x,y\n", 0},                     // header only
@@ -251,17 +245,13 @@ TEST(IoCsv, MalformedLinesInMemory) {
       {"x,1\n", 1},                     // not a header: one numeric field
       {"nan,inf\n", 1},                 // NaN spellings are not column names
   };
-  for (const Case& c : cases)
+  for (const Parse_case& c : cases)
     expect_parse_error([&] { fair::io::parse_points_csv<K>(c.text, "m.csv"); }, "m.csv", c.line);
 }
 
 TEST(IoJson, MalformedJsonInMemory) {
   typedef SC_double K;
-  struct Case {
-    const char* text;
-    std::size_t line;
-  };
-  const Case cases[] = {
+  const Parse_case cases[] = {
       {"", 0},
       {"  \n ", 0},
       {"{\n\"points\": [[0, 0]\n", 2},            // unterminated array (end of file on line 2)
@@ -282,7 +272,7 @@ TEST(IoJson, MalformedJsonInMemory) {
       {"{\"a\": \"\\q\"}", 1},                    // bad escape
       {"[\"unterminated]", 1},
   };
-  for (const Case& c : cases)
+  for (const Parse_case& c : cases)
     expect_parse_error([&] { fair::io::parse_points_json<K>(c.text, "m.json"); }, "m.json", c.line);
   // Deep nesting is refused, not a stack overflow.
   std::string deep(100000, '[');
@@ -372,5 +362,6 @@ TEST(IoWriters, NeverWriteNonFiniteNumbers) {
   EXPECT_TRUE(out.str().empty());
   EXPECT_THROW(fair::io::write_json_file("/nonexistent-dir/x.json", nlohmann::json::object()), fair::Error);
 }
+
 
 } // namespace
