@@ -12,32 +12,15 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <cmath>
 #include <random>
 #include <vector>
 
 namespace {
 
-typedef CGAL::Simple_cartesian<double> Kd;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
-typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
-typedef CGAL::Simple_cartesian<CGAL::Gmpq> Kq;
-
-template <class K>
-bool is_exact() {
-  return !std::is_same<typename K::FT, double>::value;
-}
-
-// Equality, exact in exact kernels and to a relative tolerance in double.
-template <class K, class T>
-void expect_same(const T& a, const T& b, double tol = 1e-12) {
-  if (is_exact<K>()) {
-    EXPECT_TRUE(a == b) << a << " vs " << b;
-  } else {
-    EXPECT_NEAR(CGAL::to_double(a.x()), CGAL::to_double(b.x()), tol * (1 + std::fabs(CGAL::to_double(a.x()))));
-    EXPECT_NEAR(CGAL::to_double(a.y()), CGAL::to_double(b.y()), tol * (1 + std::fabs(CGAL::to_double(a.y()))));
-  }
-}
+using namespace fair_test;
 
 // Binomial-sum (power of t, 1-t) evaluation: an independent formula for c(t).
 template <class K>
@@ -58,8 +41,7 @@ typename K::Point_2 bernstein_sum(const std::vector<typename K::Point_2>& P, con
 
 template <class K>
 class Bezier_typed : public ::testing::Test {};
-typedef ::testing::Types<Kd, Epick, Epeck, Kq> Kernels;
-TYPED_TEST_SUITE(Bezier_typed, Kernels);
+TYPED_TEST_SUITE(Bezier_typed, All_kernels);
 
 TYPED_TEST(Bezier_typed, ExactIdentitiesOnRandomPieces) {
   typedef TypeParam K;
@@ -141,9 +123,9 @@ TEST(Bezier, DerivativesMatchFiniteDifferences) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1e3, 1e3);
   for (int trial = 0; trial < 20; ++trial) {
-    std::vector<Kd::Point_2> cp;
+    std::vector<SC_double::Point_2> cp;
     for (int i = 0; i < 6; ++i) cp.emplace_back(u(rng), u(rng));
-    const fair::Bezier_2<Kd> c(cp);
+    const fair::Bezier_2<SC_double> c(cp);
     const double t = 0.37, h = 1e-5;
     const auto fd = (c.point(t + h) - c.point(t - h)) / (2 * h);
     const auto d = c.derivative(t);
@@ -157,10 +139,11 @@ TEST(Bezier, DerivativesMatchFiniteDifferences) {
 }
 
 TEST(Bezier, HugeAndTinyCoordinates) {
+  typedef SC_double::Point_2 P;
   for (double s : {1e150, 1e-150}) {
-    const fair::Bezier_2<Kd> c(Kd::Point_2(0, 0), Kd::Point_2(s, 0), Kd::Point_2(s, s), Kd::Point_2(0, s));
+    const fair::Bezier_2<SC_double> c(P(0, 0), P(s, 0), P(s, s), P(0, s));
     // Curvature scales as 1/s.
-    const fair::Bezier_2<Kd> unit(Kd::Point_2(0, 0), Kd::Point_2(1, 0), Kd::Point_2(1, 1), Kd::Point_2(0, 1));
+    const fair::Bezier_2<SC_double> unit(P(0, 0), P(1, 0), P(1, 1), P(0, 1));
     EXPECT_NEAR(c.curvature(0.4) * s, unit.curvature(0.4), 1e-12);
     EXPECT_NEAR(c.point(0.5).y() / s, 0.5, 1e-15);
   }
