@@ -287,6 +287,40 @@ TEST(Kappa, WarmStartAfterMovingOnePoint) {
   EXPECT_LE(check_curve(c).interpolation, 1e-12);
 }
 
+// Moving one point of a long curve: the warm start solves locally (blocks near the moved point,
+// the rest fixed), accepts only a root of the whole system, and needs no refinement passes and
+// only a few Levenberg-Marquardt iterations. The result must be the cold solution (the root is
+// locally unique). Closed and open curves; for the open one also its first and last point.
+TEST(Kappa, WarmStartIsLocalAndAgreesWithColdSolve) {
+  for (const bool closed : {true, false}) {
+    std::mt19937 g(1234);
+    std::vector<Pd> p = spiky_star(g, 300, 0.05);
+    fair::Kappa_curve_options o;
+    o.closed = closed;
+    fair::Kappa_curve_2<Kd> c(p, o);
+    ASSERT_TRUE(c.report().converged) << c.report();
+    for (const std::size_t i : {std::size_t(0), std::size_t(150), p.size() - 1}) {
+      p[i] = Pd(p[i].x() * 1.01 + 1e-3, p[i].y() * 0.99);
+      c.move_point(i, p[i]);
+      ASSERT_TRUE(c.report().converged) << "closed " << closed << " i " << i << " " << c.report();
+      EXPECT_TRUE(c.report().warm_started);
+      EXPECT_EQ(c.report().refinement_passes, 0u);
+      EXPECT_LE(c.report().iterations, 12u) << "closed " << closed << " i " << i;
+      const fair::Kappa_curve_2<Kd> cold(p, o);
+      ASSERT_TRUE(cold.report().converged);
+      ASSERT_EQ(c.number_of_pieces(), cold.number_of_pieces());
+      double dev = 0;
+      for (std::size_t j = 0; j < c.number_of_pieces(); ++j) {
+        dev = std::max(dev, std::abs(c.t(j) - cold.t(j)));
+        dev = std::max(dev, std::abs(c.piece(j).control_point(1).x() - cold.piece(j).control_point(1).x()));
+        dev = std::max(dev, std::abs(c.piece(j).control_point(0).y() - cold.piece(j).control_point(0).y()));
+      }
+      EXPECT_LE(dev, 1e-8) << "closed " << closed << " i " << i;
+      EXPECT_LE(check_curve(c).interpolation, 1e-12);
+    }
+  }
+}
+
 // ------------------------------------------------------------------ bad and hard input
 
 template <class F>

@@ -89,7 +89,18 @@ struct Solve_settings {
   std::size_t max_iterations = 200;    // Levenberg-Marquardt iterations
   double tolerance = 1e-12;            // on max |r|
   bool warm = false;                   // skip the initial guess, start from the given state
+  /// Warm start after a change of Q_moved only (block index; n or more: unknown): try local
+  /// solves first, see solve().
+  std::size_t moved = static_cast<std::size_t>(-1);
 };
+
+/// The blocks a (local) Levenberg-Marquardt solve works on: all, or the cyclic (closed) /
+/// clipped (open) range first, first+1, ..., first+count-1. In a range solve only the unknowns
+/// of these blocks vary and only their residuals are minimised; the others stay fixed.
+struct Block_range {
+  bool all = true;
+  std::size_t first = 0, count = 0;
+}; 
 
 struct Solve_result {
   std::size_t refinement_passes = 0;
@@ -431,22 +442,32 @@ inline void project_bounds(State& st) {
 /// Assembles J^T J (into `chol`, reset to half bandwidth h) and g = J^T F, in block order
 /// `cyclic_position` for closed curves.
 inline void assemble_normal_equations(const Problem& pb, const State& st, Banded_cholesky& chol,
-                                      std::vector<double>& g, std::size_t h) {
-  const std::size_t n = pb.n, N = 4 * n;
-  auto pos = [&](std::size_t j) { return pb.closed ? cyclic_position(j, n) : j; };
+                                      std::vector<double>& g, std::size_t h, const Block_range& range = {}) {
+  const std::size_t n = pb.n;
+  const std::size_t na = range.all ? n : range.count, N = 4 * na;
+  const std::size_t none = static_cast<std::size_t>(-1);
+  // Position of block j among the unknowns (none: held fixed).
+  auto pos = [&](std::size_t j) -> std::size_t {
+    if (range.all) return pb.closed ? cyclic_position(j, n) : j;
+    const std::size_t k = pb.closed ? (j + n - range.first) % n : j - range.first;  // wraps when j < first
+    return k < range.count ? k : none;
+  };
   chol.reset(N, h);
   g.assign(N, 0.0);
   Window<Dual<16>> win;
   std::size_t colpos[16];
   int slots[16];
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t ii = 0; ii < na; ++ii) {
+    const std::size_t i = range.all ? ii : (range.first + ii) % n;
     build_window(pb, st, i, win);
     Dual<16> r[4];
     block_residuals(pb, st, i, win, r);
     int m = 0;
     for (int k = 0; k < 4; ++k) {
       if (!win.valid[k]) continue;
-      for (int c = 0; c < 4; ++c) { slots[m] = 4 * k + c; colpos[m] = 4 * pos(win.block[k]) + c; ++m; }
+      const std::size_t p = pos(win.block[k]);
+      if (p == none) continue;
+      for (int c = 0; c < 4; ++c) { slots[m] = 4 * k + c; colpos[m] = 4 * p + c; ++m; }
     }
     // Local 16 x 16 block of J^T J and local gradient, then one scatter into the band.
     double M[16][16] = {};
@@ -477,15 +498,36 @@ inline void assemble_normal_equations(const Problem& pb, const State& st, Banded
 /// Solves the kappa-curve system; `st` holds the initial state when settings.warm.
 /// Levenberg-Marquardt from `st`; returns the final max |r|. Counts iterations in res.
 inline double levenberg_marquardt(const Problem& pb, State& st, const Solve_settings& settings, Solve_result& res,
-                                  std::size_t max_iterations) {
+                                  std::size_t max_iterations, const Block_range& range = {}) {
   const std::size_t n = pb.n;
   project_bounds(st);
-  const std::size_t N = 4 * n;
-  auto pos = [&](std::size_t j) { return pb.closed ? cyclic_position(j, n) : j; };
-  const std::size_t h = normal_bandwidth(pb);
+  const std::size_t na = range.all ? n : range.count, N = 4 * na;
+  // Block of the ii-th active unknown block and its position in the band order.
+  auto block = [&](std::size_t ii) { return range.all ? ii : (range.first + ii) % n; };
+  auto pos = [&](std::size_t ii) { return range.all ? (pb.closed ? cyclic_position(ii, n) : ii) : ii; };
+  // A contiguous range (count <= n - 3 for closed curves) in natural order couples blocks at
+  // distance <= 3 only: half bandwidth 15.
+  const std::size_t h = range.all ? normal_bandwidth(pb) : std::min<std::size_t>(15, N - 1);
+  auto evaluate_active = [&](const State& s, std::vector<double>& Fa) {
+    if (range.all) return evaluate(pb, s, Fa);
+    Fa.resize(N);
+    Window<double> win;
+    double mx = 0;
+    for (std::size_t ii = 0; ii < na; ++ii) {
+      build_window(pb, s, block(ii), win);
+      double r[4];
+      block_residuals(pb, s, block(ii), win, r);
+      for (int c = 0; c < 4; ++c) {
+        Fa[4 * ii + c] = r[c];
+        const double a = std::abs(r[c]);
+        mx = (a > mx || std::isnan(a)) ? a : mx;
+      }
+    }
+    return mx;
+  };
 
   std::vector<double> F, Ftrial, g(N), D(N), delta(N), Abase;
-  double fmax = evaluate(pb, st, F);
+  double fmax = evaluate_active(st, F);
   auto cost_of = [](const std::vector<double>& v) {
     double s = 0;
     for (double x : v) s += x * x;
@@ -508,7 +550,7 @@ inline double levenberg_marquardt(const Problem& pb, State& st, const Solve_sett
     }
     ++iterations;
     ++res.iterations;
-    assemble_normal_equations(pb, st, chol, g, h);
+    assemble_normal_equations(pb, st, chol, g, h, range);
     double maxdiag = 0;
     for (std::size_t k = 0; k < N; ++k) maxdiag = std::max(maxdiag, chol.diagonal(k));
     if (!(maxdiag > 0) || !std::isfinite(maxdiag)) break;
@@ -523,15 +565,15 @@ inline double levenberg_marquardt(const Problem& pb, State& st, const Solve_sett
       for (std::size_t k = 0; k < N; ++k) delta[k] = -g[k];
       chol.solve(delta.data());
       trial = st;
-      for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t p = 4 * pos(i);
+      for (std::size_t ii = 0; ii < na; ++ii) {
+        const std::size_t i = block(ii), p = 4 * pos(ii);
         trial.dx[i] += delta[p];
         trial.dy[i] += delta[p + 1];
         trial.lambda[i] += delta[p + 2];
         trial.t[i] += delta[p + 3];
       }
       project_bounds(trial);
-      const double fm = evaluate(pb, trial, Ftrial);
+      const double fm = evaluate_active(trial, Ftrial);
       const double ct = cost_of(Ftrial);
       double pred = 0;
       for (std::size_t k = 0; k < N; ++k) pred += delta[k] * (mu * D[k] * delta[k] - g[k]);
@@ -584,7 +626,37 @@ inline Solve_result solve(const Problem& pb, State& st, const Solve_settings& se
     initial_guess(pb, st);
     refine(pb, st, settings.refinement_passes, 1e-3, res);
   }
-  double fmax = levenberg_marquardt(pb, st, settings, res, settings.max_iterations);
+  double fmax = std::numeric_limits<double>::infinity();
+  bool local_done = false;
+  if (settings.warm && st.t.size() == n && settings.moved < n) {
+    // Local warm start: the change of one Q_i perturbs the solution by amounts that decay
+    // geometrically along the curve, so first solve only for the blocks within distance R of
+    // the moved one (the others held fixed; a square 4(2R+1) system, O(R) per iteration) and
+    // accept the result iff the residual of the WHOLE system is within the tolerance; R = 8,
+    // 32, then the global solve. The accepted state is a root of the full system to the same
+    // tolerance as a global solve.
+    std::vector<double> F;
+    for (std::size_t R = 8; R <= 32 && !local_done; R *= 4) {
+      Block_range range;
+      range.all = false;
+      if (pb.closed) {
+        if (2 * R + 1 + 3 > n) break;
+        range.first = (settings.moved + n - R) % n;
+        range.count = 2 * R + 1;
+      } else {
+        range.first = settings.moved > R ? settings.moved - R : 0;
+        range.count = std::min(n, settings.moved + R + 1) - range.first;
+        if (range.count >= n) break;
+      }
+      State trial = st;
+      Solve_result sub;
+      levenberg_marquardt(pb, trial, settings, sub, settings.max_iterations, range);
+      res.iterations += sub.iterations;
+      const double fm = evaluate(pb, trial, F);
+      if (fm <= settings.tolerance) { st = trial; fmax = fm; local_done = true; }
+    }
+  }
+  if (!local_done) fmax = levenberg_marquardt(pb, st, settings, res, settings.max_iterations);
   if (!(fmax <= settings.tolerance) && res.iterations < settings.max_iterations && settings.refinement_passes > 0) {
     State best = st;
     refine(pb, st, 4 * settings.refinement_passes, 1e-7, res);
