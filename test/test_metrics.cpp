@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <cmath>
 #include <limits>
 #include <random>
@@ -23,10 +25,7 @@
 
 namespace {
 
-typedef CGAL::Simple_cartesian<double> Kd;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
-typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
-typedef CGAL::Simple_cartesian<CGAL::Gmpq> Kq;
+using namespace fair_test;
 
 // A rational Bezier piece private to this test (control_points() + weights() is what the metrics
 // look for), so that the rational path is tested independently of the library's rational types.
@@ -56,11 +55,11 @@ Test_rational_piece<K> circle_arc(int r) {
 
 // A piece that only offers the CurvePiece_2 concept (no Bernstein form visible to the metrics).
 struct Generic_piece {
-  typedef Kd Kernel;
+  typedef SC_double Kernel;
   typedef double FT;
-  typedef Kd::Point_2 Point_2;
-  typedef Kd::Vector_2 Vector_2;
-  fair::Bezier_2<Kd> b;
+  typedef SC_double::Point_2 Point_2;
+  typedef SC_double::Vector_2 Vector_2;
+  fair::Bezier_2<SC_double> b;
   // Like the library's pieces, it rejects parameters outside [0,1]: the metrics must not ask.
   static double check(double t) {
     fair::internal::require(t >= 0 && t <= 1, "Generic_piece: t = ", t, " outside [0,1]");
@@ -88,8 +87,7 @@ fair::Bezier_2<K> cubic_x3() { // y = x^3, x = 2t - 1 (Bernstein coefficients of
 
 template <class K>
 class Metrics_typed : public ::testing::Test {};
-typedef ::testing::Types<Kd, Epick, Epeck, Kq> Kernels;
-TYPED_TEST_SUITE(Metrics_typed, Kernels);
+TYPED_TEST_SUITE(Metrics_typed, All_kernels);
 
 TYPED_TEST(Metrics_typed, ParabolaVertexIsTheOnlyCurvatureExtremum) {
   typedef TypeParam K;
@@ -187,15 +185,15 @@ TEST(Metrics, RandomCubicsCertifiedCountsAreConsistent) {
   std::mt19937 rng(424242);
   std::uniform_int_distribution<int> coord(-30, 30);
   for (int trial = 0; trial < 60; ++trial) {
-    std::vector<Kq::Point_2> q;
-    std::vector<Kd::Point_2> p;
+    std::vector<SC_gmpq::Point_2> q;
+    std::vector<SC_double::Point_2> p;
     for (int i = 0; i < 4; ++i) {
       const int x = coord(rng), y = coord(rng);
       q.emplace_back(x, y);
       p.emplace_back(x, y);
     }
-    const std::vector<fair::Bezier_2<Kq>> cq{fair::Bezier_2<Kq>(q)};
-    const std::vector<fair::Bezier_2<Kd>> cd{fair::Bezier_2<Kd>(p)};
+    const std::vector<fair::Bezier_2<SC_gmpq>> cq{fair::Bezier_2<SC_gmpq>(q)};
+    const std::vector<fair::Bezier_2<SC_double>> cd{fair::Bezier_2<SC_double>(p)};
     const auto h = fair::internal::homogeneous_exact(cq[0]);
     const auto D = fair::internal::curvature_sign_polynomial(h);
     if (fair::internal::is_zero_polynomial(D)) continue;
@@ -230,18 +228,18 @@ TEST(Metrics, RandomCubicsCertifiedCountsAreConsistent) {
 TEST(Metrics, ConicPiecesUseTheirOwnCertifiedExtrema) {
   // fair::Rational_quadratic_bezier_2 certifies its curvature extrema itself (eq. 4 of Yan,
   // Schiller, Schaefer); the homogeneous construction here must find the same points.
-  typedef fair::Rational_quadratic_bezier_2<Kq> Conic;
-  typedef Kq::Point_2 P;
+  typedef fair::Rational_quadratic_bezier_2<SC_gmpq> Conic;
+  typedef SC_gmpq::Point_2 P;
   static_assert(fair::internal::Has_own_curvature_extrema<Conic>::value, "the conic's own extrema are used");
-  static_assert(!fair::internal::Has_own_curvature_extrema<Test_rational_piece<Kq>>::value, "");
+  static_assert(!fair::internal::Has_own_curvature_extrema<Test_rational_piece<SC_gmpq>>::value, "");
   EXPECT_EQ(fair::curvature_extrema(std::vector<Conic>{Conic(P(3, 0), P(0, 3), P(0, 0), CGAL::Gmpq(3, 10))}).count(), 2u);
   for (const CGAL::Gmpq& w : {CGAL::Gmpq(3, 10), CGAL::Gmpq(1, 2), CGAL::Gmpq(1), CGAL::Gmpq(2)}) {
     const Conic c(P(3, 0), P(0, 3), P(0, 0), w);
-    Test_rational_piece<Kq> h;
+    Test_rational_piece<SC_gmpq> h;
     h.cp = {P(3, 0), P(0, 3), P(0, 0)};
     h.w = {CGAL::Gmpq(1), w, CGAL::Gmpq(1)};
     const fair::Feature_report own = fair::curvature_extrema(std::vector<Conic>{c});
-    const fair::Feature_report hom = fair::curvature_extrema(std::vector<Test_rational_piece<Kq>>{h});
+    const fair::Feature_report hom = fair::curvature_extrema(std::vector<Test_rational_piece<SC_gmpq>>{h});
     EXPECT_TRUE(own.certified);
     ASSERT_EQ(own.count(), hom.count()) << w;
     for (std::size_t k = 0; k < own.count(); ++k) {
@@ -255,11 +253,11 @@ TEST(Metrics, ConicPiecesUseTheirOwnCertifiedExtrema) {
 TEST(Metrics, LibraryRationalPieces) {
   // fair::Rational_bezier_2 with equal weights is the polynomial cubic y = x^3: same certified
   // features (exactly at t = 1/2 for the inflection) and the same energies.
-  typedef Kq::Point_2 P;
-  const auto b = cubic_x3<Kq>();
-  const fair::Rational_bezier_2<Kq> r(b.control_points(), std::vector<CGAL::Gmpq>(4, CGAL::Gmpq(2)));
-  const std::vector<fair::Rational_bezier_2<Kq>> rc{r};
-  const std::vector<fair::Bezier_2<Kq>> bc{b};
+  typedef SC_gmpq::Point_2 P;
+  const auto b = cubic_x3<SC_gmpq>();
+  const fair::Rational_bezier_2<SC_gmpq> r(b.control_points(), std::vector<CGAL::Gmpq>(4, CGAL::Gmpq(2)));
+  const std::vector<fair::Rational_bezier_2<SC_gmpq>> rc{r};
+  const std::vector<fair::Bezier_2<SC_gmpq>> bc{b};
   const fair::Feature_report in = fair::inflections(rc);
   ASSERT_EQ(in.count(), 1u);
   EXPECT_TRUE(in.features[0].interval.is_point() && in.features[0].interval.lower == CGAL::Gmpq(1, 2));
@@ -268,8 +266,8 @@ TEST(Metrics, LibraryRationalPieces) {
   EXPECT_NEAR(fair::curvature_variation_energy(rc).value, fair::curvature_variation_energy(bc).value,
               1e-10 * fair::curvature_variation_energy(bc).value);
   // The exact circular arc as a library rational piece: constant curvature decided exactly.
-  const Test_rational_piece<Kq> a = circle_arc<Kq>(1);
-  const std::vector<fair::Rational_bezier_2<Kq>> arc{fair::Rational_bezier_2<Kq>(a.cp, a.w)};
+  const Test_rational_piece<SC_gmpq> a = circle_arc<SC_gmpq>(1);
+  const std::vector<fair::Rational_bezier_2<SC_gmpq>> arc{fair::Rational_bezier_2<SC_gmpq>(a.cp, a.w)};
   EXPECT_EQ(fair::curvature_extrema(arc).degenerate_pieces.size(), 1u);
   EXPECT_NEAR(fair::bending_energy(arc).value, 2 * std::acos(0.6), 1e-12);
   EXPECT_LT(fair::max_circle_deviation(arc, P(0, 0), 1.0).max_deviation, 1e-15);
@@ -279,9 +277,9 @@ TEST(Metrics, CircleDeviationOfTheCubicQuarterCircle) {
   // The classic cubic approximation of a quarter circle, handle k = 4 (sqrt 2 - 1) / 3: the radial
   // error peaks at about 2.7e-4. The certified candidates must dominate a dense sampling.
   const double k = 4 * (std::sqrt(2.0) - 1) / 3;
-  const std::vector<fair::Bezier_2<Kd>> c{
-      fair::Bezier_2<Kd>(Kd::Point_2(1, 0), Kd::Point_2(1, k), Kd::Point_2(k, 1), Kd::Point_2(0, 1))};
-  const auto dev = fair::max_circle_deviation(c, Kd::Point_2(0, 0), 1.0);
+  typedef SC_double::Point_2 P;
+  const std::vector<fair::Bezier_2<SC_double>> c{fair::Bezier_2<SC_double>(P(1, 0), P(1, k), P(k, 1), P(0, 1))};
+  const auto dev = fair::max_circle_deviation(c, P(0, 0), 1.0);
   double sampled = 0;
   for (int i = 0; i <= 100000; ++i) {
     const auto p = c[0].point(i / 100000.0);
@@ -295,14 +293,14 @@ TEST(Metrics, CircleDeviationOfTheCubicQuarterCircle) {
 
 TEST(Metrics, HausdorffDistance) {
   // Concentric arcs of radii 3 and 3.3 over the same angles: Hausdorff distance 0.3.
-  typedef Kd::Point_2 P;
-  Test_rational_piece<Kd> a = circle_arc<Kd>(3), b = a;
+  typedef SC_double::Point_2 P;
+  Test_rational_piece<SC_double> a = circle_arc<SC_double>(3), b = a;
   for (auto& x : b.cp) x = P(1.1 * x.x(), 1.1 * x.y());
-  const std::vector<Test_rational_piece<Kd>> A{a}, B{b};
+  const std::vector<Test_rational_piece<SC_double>> A{a}, B{b};
   EXPECT_NEAR(fair::hausdorff_distance(A, B, 1e-3), 0.3, 1e-3);
   // A segment and its translate along itself by 0.25: distance 0.25; symmetric.
-  const std::vector<fair::Bezier_2<Kd>> s{fair::Bezier_2<Kd>(std::vector<P>{P(0, 0), P(1, 0)})};
-  const std::vector<fair::Bezier_2<Kd>> t{fair::Bezier_2<Kd>(std::vector<P>{P(0.25, 0), P(1.25, 0)})};
+  const std::vector<fair::Bezier_2<SC_double>> s{fair::Bezier_2<SC_double>(std::vector<P>{P(0, 0), P(1, 0)})};
+  const std::vector<fair::Bezier_2<SC_double>> t{fair::Bezier_2<SC_double>(std::vector<P>{P(0.25, 0), P(1.25, 0)})};
   EXPECT_NEAR(fair::hausdorff_distance(s, t, 1e-3), 0.25, 1e-12);
   EXPECT_NEAR(fair::hausdorff_distance(t, s, 1e-3), 0.25, 1e-12);
   EXPECT_EQ(fair::hausdorff_distance(s, s, 1e-3), 0.0);
@@ -310,9 +308,9 @@ TEST(Metrics, HausdorffDistance) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1, 1);
   for (int trial = 0; trial < 5; ++trial) {
-    std::vector<fair::Bezier_2<Kd>> c[3];
+    std::vector<fair::Bezier_2<SC_double>> c[3];
     for (auto& curve : c)
-      curve.push_back(fair::Bezier_2<Kd>(P(u(rng), u(rng)), P(u(rng), u(rng)), P(u(rng), u(rng)), P(u(rng), u(rng))));
+      curve.push_back(fair::Bezier_2<SC_double>(P(u(rng), u(rng)), P(u(rng), u(rng)), P(u(rng), u(rng)), P(u(rng), u(rng))));
     const double tol = 1e-3;
     EXPECT_LE(fair::hausdorff_distance(c[0], c[2], tol),
               fair::hausdorff_distance(c[0], c[1], tol) + fair::hausdorff_distance(c[1], c[2], tol) + 2 * tol);
@@ -322,9 +320,9 @@ TEST(Metrics, HausdorffDistance) {
 }
 
 TEST(Metrics, ProfileAndLengthOfAStraightPiece) {
-  typedef Kd::Point_2 P;
-  const std::vector<fair::Bezier_2<Kd>> line{fair::Bezier_2<Kd>(P(0, 0), P(1, 0), P(5, 0), P(6, 0)),
-                                             fair::Bezier_2<Kd>(std::vector<P>{P(6, 0), P(6, 4)})};
+  typedef SC_double::Point_2 P;
+  const std::vector<fair::Bezier_2<SC_double>> line{fair::Bezier_2<SC_double>(P(0, 0), P(1, 0), P(5, 0), P(6, 0)),
+                                             fair::Bezier_2<SC_double>(std::vector<P>{P(6, 0), P(6, 4)})};
   EXPECT_NEAR(fair::arc_length(line).value, 10.0, 1e-12);
   EXPECT_EQ(fair::bending_energy(line).value, 0.0);
   const auto prof = fair::curvature_profile(line, 8);
@@ -337,8 +335,8 @@ TEST(Metrics, ProfileAndLengthOfAStraightPiece) {
 }
 
 TEST(Metrics, GenericPiecesFallBackToSampling) {
-  const std::vector<Generic_piece> g{Generic_piece{cubic_x3<Kd>()}};
-  const std::vector<fair::Bezier_2<Kd>> b{cubic_x3<Kd>()};
+  const std::vector<Generic_piece> g{Generic_piece{cubic_x3<SC_double>()}};
+  const std::vector<fair::Bezier_2<SC_double>> b{cubic_x3<SC_double>()};
   const fair::Feature_report in = fair::inflections(g);
   EXPECT_FALSE(in.certified);
   EXPECT_EQ(in.count(), 1u);
@@ -347,7 +345,7 @@ TEST(Metrics, GenericPiecesFallBackToSampling) {
   // The generic third derivative is a central difference: agreement to about 1e-8 relative.
   const double eg = fair::curvature_variation_energy(g).value, eb = fair::curvature_variation_energy(b).value;
   EXPECT_NEAR(eg, eb, 1e-7 * eb);
-  EXPECT_FALSE(fair::max_circle_deviation(g, Kd::Point_2(0, 0), 1.0).certified);
+  EXPECT_FALSE(fair::max_circle_deviation(g, SC_double::Point_2(0, 0), 1.0).certified);
 }
 
 TEST(Metrics, QuadratureAccuracyAndCaps) {
@@ -361,17 +359,17 @@ TEST(Metrics, QuadratureAccuracyAndCaps) {
   EXPECT_THROW(fair::internal::adaptive_integral([](double x) { return 1 / std::sqrt(x); }, 0.0, 1.0, o, "test"),
                fair::Non_convergence_error);
   // A cusp makes the curvature blow up: reported, never NaN.
-  typedef Kd::Point_2 P;
-  const std::vector<fair::Bezier_2<Kd>> cusp{fair::Bezier_2<Kd>(P(0, 0), P(2, 2), P(-1, 2), P(3, 0))};
+  typedef SC_double::Point_2 P;
+  const std::vector<fair::Bezier_2<SC_double>> cusp{fair::Bezier_2<SC_double>(P(0, 0), P(2, 2), P(-1, 2), P(3, 0))};
   EXPECT_THROW(fair::bending_energy(cusp), fair::Error);
   EXPECT_THROW(fair::curvature_profile(cusp, 2), fair::Precondition_error);
-  EXPECT_THROW(fair::arc_length(std::vector<fair::Bezier_2<Kd>>{}), fair::Precondition_error);
+  EXPECT_THROW(fair::arc_length(std::vector<fair::Bezier_2<SC_double>>{}), fair::Precondition_error);
   EXPECT_THROW(fair::max_circle_deviation(cusp, P(0, 0), -1.0), fair::Precondition_error);
 }
 
 TEST(Metrics, FairnessReportAgreesWithTheParts) {
-  typedef Kd::Point_2 P;
-  const std::vector<fair::Bezier_2<Kd>> c{cubic_x3<Kd>(), fair::Bezier_2<Kd>(P(1, 1), P(5.0 / 3, 3), P(3, 4), P(4, 4))};
+  typedef SC_double::Point_2 P;
+  const std::vector<fair::Bezier_2<SC_double>> c{cubic_x3<SC_double>(), fair::Bezier_2<SC_double>(P(1, 1), P(5.0 / 3, 3), P(3, 4), P(4, 4))};
   const fair::Fairness_report r = fair::fairness_report(c);
   EXPECT_EQ(r.pieces, 2u);
   EXPECT_EQ(r.inflection_count, fair::inflections(c).count());
