@@ -22,16 +22,17 @@
 // The code does not trust the proof: it determines the four signs (by interval arithmetic, or
 // exactly with CGAL::Gmpq when the intervals cannot decide) and counts the variations.
 //
-// Root refinement: safeguarded Newton in double on the bracket [0,1], then certification of a
-// bracket [t_lower, t_upper] a few ulps wide by evaluating f in interval arithmetic
-// (CGAL::Interval_nt, outward rounding) on enclosures of the exact coefficients; when the
-// intervals cannot decide the sign, f is evaluated exactly (CGAL::Gmpq) at double points and the
-// bracket is bisected on the binary representation of doubles (at most 64 exact evaluations).
+// Root refinement: the shared certified-bracket mechanism of the Bernstein internals,
+// fair::internal::tighten_double_bracket (internal/bernstein_unique_root.h), fed with interval
+// ENCLOSURES of the exact coefficients (CGAL::Interval_nt, outward rounding) and an exact
+// fallback that evaluates f exactly (CGAL::Gmpq) at double points: safeguarded Newton in double,
+// a bracket grown by certified interval signs, then shrunk to <= 8 ulps by bisection with the
+// exact fallback where the intervals cannot decide.
 //
 // Guarantee: for the exact values of the double inputs, f(t_lower) < 0 < f(t_upper), or
 // t_lower == t_upper is the exact root (f(t) == 0 exactly). Hence the exact root lies in
-// [t_lower, t_upper]; t is a double inside it. In the filtered path the bracket is usually
-// 2 to 8 ulps wide (relative accuracy ~1e-15 for well-conditioned inputs).
+// [t_lower, t_upper]; t is a double inside it. The bracket is at most 8 ulps wide (relative
+// accuracy ~1e-15 for well-conditioned inputs).
 // Fallback: overflow or underflow of the double enclosures (coordinates beyond ~1e150 or below
 // ~1e-150) only makes the filter fail; the exact stage then decides, so there is no failure mode.
 // Unlike fair::certified_unique_root (Bernstein_root_isolation.h), which certifies the root of
@@ -41,6 +42,7 @@
 #define FAIR_INTERNAL_RATIONAL_QUADRATIC_INTERPOLATION_H
 
 #include <fair/Errors.h>
+#include <fair/internal/bernstein_unique_root.h>
 #include <fair/internal/rational_quadratic_exact.h>
 
 #include <CGAL/FPU.h>
@@ -103,153 +105,32 @@ inline CGAL::Sign quartic_sign_exact(const std::array<CGAL::Gmpq, 5>& b, double 
   return CGAL::sign(v[0]);
 }
 
-/// f(t) in interval arithmetic from the scaled coefficients bs = (b0, 4 b1, 6 b2, 4 b3, b4):
-/// f = b0 s^4 + 4 b1 s^3 t + 6 b2 s^2 t^2 + 4 b3 s t^3 + b4 t^4, s = 1 - t (14 interval products,
-/// fewer than de Casteljau's 20). The caller must hold a CGAL::Protect_FPU_rounding<true>.
-inline Rq_interval quartic_interval(const Rq_interval* bs, double t) {
-  const Rq_interval tt(t), s = Rq_interval(1) - tt;
-  const Rq_interval s2 = s * s, t2 = tt * tt;
-  return bs[0] * (s2 * s2) + bs[1] * (s2 * s * tt) + bs[2] * (s2 * t2) + bs[3] * (s * t2 * tt) + bs[4] * (t2 * t2);
-}
-
-/// f(t) and f'(t) in double by de Casteljau (backward stable).
-inline void quartic_value_and_derivative(const double* c, double t, double& f, double& df) {
-  const double s = 1.0 - t;
-  double v[5] = {c[0], c[1], c[2], c[3], c[4]};
-  for (int r = 1; r <= 3; ++r)
-    for (int i = 0; i + r <= 4; ++i) v[i] = s * v[i] + t * v[i + 1];
-  df = 4.0 * (v[1] - v[0]);
-  f = s * v[0] + t * v[1];
-}
-
-/// Neighbouring doubles for t in [0,1] by stepping the bit pattern (monotone for t >= 0).
-inline double step_ulps(double t, std::int64_t k) {
-  std::uint64_t bits;
-  std::memcpy(&bits, &t, sizeof bits);
-  std::int64_t b = static_cast<std::int64_t>(bits) + k;
-  if (b < 0) b = 0;
-  const std::uint64_t one_bits = 0x3FF0000000000000ULL; // 1.0
-  if (static_cast<std::uint64_t>(b) > one_bits) b = static_cast<std::int64_t>(one_bits);
-  bits = static_cast<std::uint64_t>(b);
-  double out;
-  std::memcpy(&out, &bits, sizeof out);
-  return out;
-}
-
-inline std::uint64_t double_bits(double t) {
-  std::uint64_t bits;
-  std::memcpy(&bits, &t, sizeof bits);
-  return bits;
-}
-
-/// Filtered stage of the certified unique root of a quartic in Bernstein form on [0,1] known to
-/// have a unique simple root in (0,1) with f(0) < 0 < f(1) (one sign variation, b0 < 0 < b4).
-/// `b` encloses the exact coefficients. Safeguarded Newton in double, then a bracket of a few
-/// ulps certified by interval evaluation. Returns true when both ends are certified; otherwise
-/// [cert_lo, cert_hi] is the part certified so far and out.t the Newton estimate.
-/// The caller must hold a CGAL::Protect_FPU_rounding<true> (Newton then runs rounding upward,
-/// which only perturbs the estimate, never the certificate).
-inline bool filtered_unique_root_quartic(const Rq_interval* b, Rational_quadratic_extremum_parameter& out,
-                                         double& cert_lo, double& cert_hi) {
-  double c[5];
-  for (int i = 0; i < 5; ++i) c[i] = 0.5 * (b[i].inf() + b[i].sup());
-  const Rq_interval bs[5] = {b[0], b[1] * 4.0, b[2] * 6.0, b[3] * 4.0, b[4]};
-
-  // Safeguarded Newton on the bracket [lo, hi] with f(lo) < 0 < f(hi) (in double), started at
-  // the crossing of the chord between the end values (regula falsi start).
-  double lo = 0.0, hi = 1.0;
-  double t = c[0] / (c[0] - c[4]);
-  if (!(t > 0.0 && t < 1.0)) t = 0.5;
-  for (int it = 0; it < 100; ++it) {
-    double f, df;
-    quartic_value_and_derivative(c, t, f, df);
-    if (f == 0.0) break;
-    if (f < 0.0) lo = t; else hi = t;
-    double next = t - f / df;
-    if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi); // Newton left the bracket: bisect
-    const double step = std::fabs(next - t);
-    t = next;
-    if (step <= 2.0 * std::numeric_limits<double>::epsilon() * t || hi - lo <= 2.0 * std::numeric_limits<double>::epsilon() * hi)
-      break;
-  }
-  out.t = t;
-
-  // Certify a bracket around t with interval evaluation, widening geometrically.
-  cert_lo = 0.0;
-  cert_hi = 1.0; // certified so far: f(0) < 0 < f(1)
-  bool lo_ok = false, hi_ok = false;
-  for (std::int64_t k = 2; k <= (std::int64_t(1) << 12) && !(lo_ok && hi_ok); k *= 8) {
-    if (!lo_ok) {
-      const double a = step_ulps(t, -k);
-      if (a <= 0.0) lo_ok = true;
-      else if (quartic_interval(bs, a).sup() < 0.0) { cert_lo = a; lo_ok = true; }
-    }
-    if (!hi_ok) {
-      const double z = step_ulps(t, k);
-      if (z >= 1.0) hi_ok = true;
-      else if (quartic_interval(bs, z).inf() > 0.0) { cert_hi = z; hi_ok = true; }
-    }
-  }
-  if (lo_ok && hi_ok) {
-    out.t_lower = cert_lo;
-    out.t_upper = cert_hi;
-    if (out.t < cert_lo || out.t > cert_hi) out.t = 0.5 * (cert_lo + cert_hi);
-    return true;
-  }
-  return false;
-}
-
-/// Exact stage: shrinks [cert_lo, cert_hi] (f(cert_lo) < 0 < f(cert_hi) exactly) around the
-/// estimate out.t with exact signs `exact_sign(t)`, first at ulp neighbours of the estimate,
-/// then by bisection of the binary representation (at most ~64 evaluations).
-template <class Exact_sign>
-void exact_unique_root_quartic(Exact_sign exact_sign, Rational_quadratic_extremum_parameter& out, double cert_lo,
-                               double cert_hi) {
-  const double t = out.t;
-  for (std::int64_t k = 1; k <= 1024; k *= 32) {
-    const double a = step_ulps(t, -k), z = step_ulps(t, k);
-    if (a > cert_lo && a < cert_hi) {
-      ++out.exact_evaluations;
-      const CGAL::Sign s = exact_sign(a);
-      if (s == CGAL::ZERO) { out.t = out.t_lower = out.t_upper = a; return; }
-      if (s == CGAL::NEGATIVE) cert_lo = a; else cert_hi = a;
-    }
-    if (z > cert_lo && z < cert_hi) {
-      ++out.exact_evaluations;
-      const CGAL::Sign s = exact_sign(z);
-      if (s == CGAL::ZERO) { out.t = out.t_lower = out.t_upper = z; return; }
-      if (s == CGAL::POSITIVE) cert_hi = z; else cert_lo = z;
-    }
-    if (double_bits(cert_hi) - double_bits(cert_lo) <= 2 * static_cast<std::uint64_t>(k)) break;
-  }
-  for (int it = 0; it < 70 && double_bits(cert_hi) - double_bits(cert_lo) > 1; ++it) {
-    const std::uint64_t mb = double_bits(cert_lo) + (double_bits(cert_hi) - double_bits(cert_lo)) / 2;
-    double m;
-    std::memcpy(&m, &mb, sizeof m);
-    ++out.exact_evaluations;
-    const CGAL::Sign s = exact_sign(m);
-    if (s == CGAL::ZERO) { out.t = out.t_lower = out.t_upper = m; return; }
-    if (s == CGAL::NEGATIVE) cert_lo = m; else cert_hi = m;
-  }
-  out.t_lower = cert_lo;
-  out.t_upper = cert_hi;
-  if (out.t < cert_lo || out.t > cert_hi) out.t = 0.5 * (cert_lo + cert_hi);
-}
-
 /// Certified root of a quartic in Bernstein form on [0,1] that is known to have a unique simple
-/// root in (0,1) with f(0) < 0 < f(1): the filtered stage, then the exact stage if needed.
-/// `b` encloses the exact coefficients; `exact_sign(t)` returns the exact sign of f at a double t.
-/// See the file comment for the guarantee.
+/// root in (0,1) with f(0) < 0 < f(1). `b` encloses the exact coefficients (intervals);
+/// `exact_sign(t)` returns the exact sign of f at a double t. A thin adapter over the one shared
+/// mechanism, fair::internal::tighten_double_bracket (internal/bernstein_unique_root.h):
+/// safeguarded Newton on the midpoints of the enclosures, started at the chord crossing, then a
+/// bracket grown by interval signs and shrunk to <= 8 ulps with the exact fallback. Since `b`
+/// encloses the EXACT coefficients, the bracket is certified for the exact inputs.
+/// Must be called in round-to-nearest mode (it protects the rounding mode itself).
 template <class Exact_sign>
 Rational_quadratic_extremum_parameter certified_unique_root_quartic(const Rq_interval* b, Exact_sign exact_sign) {
   Rational_quadratic_extremum_parameter out;
-  double lo, hi;
-  bool done;
-  {
-    CGAL::Protect_FPU_rounding<true> guard;
-    done = filtered_unique_root_quartic(b, out, lo, hi);
+  double c[5];
+  for (int i = 0; i < 5; ++i) {
+    const double lo = b[i].inf(), hi = b[i].sup();
+    c[i] = std::isfinite(lo) && std::isfinite(hi) ? lo + (hi - lo) / 2 : (std::isfinite(lo) ? lo : (std::isfinite(hi) ? hi : 0.0));
   }
-  if (!done) exact_unique_root_quartic(exact_sign, out, lo, hi);
+  double start = c[0] / (c[0] - c[4]); // chord crossing (regula falsi start)
+  if (!(start > 0.0 && start < 1.0)) start = 0.5;
+  auto counted = [&](double t) {
+    ++out.exact_evaluations;
+    return int(exact_sign(t));
+  };
+  const Double_bracket r = tighten_double_bracket(b, c, 5, 0.0, 1.0, -1, start, counted);
+  out.t = r.root;
+  out.t_lower = r.lower;
+  out.t_upper = r.upper;
   return out;
 }
 
@@ -270,9 +151,6 @@ rational_quadratic_extremum_parameter(double p0x, double p0y, double qx, double 
 
   Rq_interval b[5];
   int sA, sAB, sBC, sC;
-  Rational_quadratic_extremum_parameter out;
-  double lo = 0, hi = 1;
-  bool done = false;
   {
     CGAL::Protect_FPU_rounding<true> guard;
     const Rq_interval v0x = Rq_interval(p0x) - Rq_interval(qx), v0y = Rq_interval(p0y) - Rq_interval(qy);
@@ -293,9 +171,6 @@ rational_quadratic_extremum_parameter(double p0x, double p0y, double qx, double 
     sAB = uAB.is_certain() ? int(uAB.make_certain()) : 2;
     sBC = uBC.is_certain() ? int(uBC.make_certain()) : 2;
     sC = uC.is_certain() ? int(uC.make_certain()) : 2;
-    // Root filter, valid as soon as the end signs b0 < 0 < b4 are certain (the variation count
-    // is certified below, exactly if need be, before the result is returned).
-    if (sA == 1 && sC == 1) done = filtered_unique_root_quartic(b, out, lo, hi);
   }
   // Exact coefficients, computed only when a sign is uncertain or the filter fails.
   std::optional<std::array<CGAL::Gmpq, 5>> exact; // Gmpq construction allocates: only on demand
@@ -321,11 +196,10 @@ rational_quadratic_extremum_parameter(double p0x, double p0y, double qx, double 
           ": internal error: eq. A.1 has ", variations, " sign variations (signs A ", sA, ", A+B ", sAB,
           ", B+C ", sBC, ", C ", sC, ") for P0 = (", p0x, ", ", p0y, "), Q = (", qx, ", ", qy,
           "), P2 = (", p2x, ", ", p2y, "), w = ", w);
-  if (!done) {
-    // The enclosures of b0, b4 may straddle 0 (underflow) although the exact signs are certain.
-    if (lo == 0 && hi == 1 && !(out.t > 0 && out.t < 1)) out.t = 0.5;
-    exact_unique_root_quartic([&](double t) { return quartic_sign_exact(exact_coefficients(), t); }, out, lo, hi);
-  }
+  // The unique simple root with f(0) < 0 < f(1) exactly (the enclosures of b0, b4 may straddle
+  // 0 after underflow; the shared bracket mechanism then decides by exact signs).
+  Rational_quadratic_extremum_parameter out =
+    certified_unique_root_quartic(b, [&](double t) { return quartic_sign_exact(exact_coefficients(), t); });
   out.exact_evaluations += extra;
   out.sign_variations = variations;
   return out;

@@ -1,0 +1,142 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// Scale-robust double arithmetic for Rational_quadratic_bezier_2 (the curvature, end
+// curvatures of eq. 5, eccentricity and eq.-15 weight of a conic piece).
+//
+// Method. Everything double-valued the piece reports depends on the control points through the
+// edge vectors e1 = P1-P0, e2 = P2-P1, a = P2-P0 only. These are formed once in double (rounded
+// as usual; if a difference overflows, from the halved coordinates), then multiplied by the
+// power of two 2^-k that brings their largest component into [1,2): exact (no rounding), so
+// the scaled vectors carry the same relative accuracy as the unscaled ones, and every product
+// formed from them (D, |V|^3, ...) stays far from overflow and underflow. Results are then
+// rescaled by an exact power of two, tracked as a (mantissa, exponent) pair so that no
+// intermediate overflows or underflows while the true result is representable. When the true
+// result is not representable in double (|result| > DBL_MAX, or so small that it rounds to
+// zero), Precondition_error is thrown with the approximate base-2 exponent; never NaN.
+//
+// The signed double area D = det(e1, e2) is recomputed from the exact rational values of the
+// inputs whenever the double determinant cancels (|D| < 2^-40 max|e|^2): the decision that D is
+// nonzero is exact (the piece's orientation is decided exactly), and this keeps its relative
+// accuracy near 1e-16 even for nearly collinear control points.
+
+#ifndef FAIR_INTERNAL_RATIONAL_QUADRATIC_SCALED_H
+#define FAIR_INTERNAL_RATIONAL_QUADRATIC_SCALED_H
+
+#include <fair/Errors.h>
+
+#include <CGAL/FPU.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Interval_nt.h>
+#include <CGAL/enum.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <gmp.h>
+
+namespace fair {
+namespace internal {
+
+/// A double value m 2^e with m = 0 or 0.5 <= |m| < 1 (never overflows or underflows).
+struct Scaled_double {
+  double m = 0;
+  long e = 0;
+  static Scaled_double of(double x) {
+    Scaled_double r;
+    int ex = 0;
+    r.m = std::frexp(x, &ex);
+    r.e = ex;
+    return r;
+  }
+  Scaled_double& operator*=(const Scaled_double& o) {
+    int ex = 0;
+    m = std::frexp(m * o.m, &ex);
+    e += o.e + ex;
+    return *this;
+  }
+  Scaled_double& operator/=(const Scaled_double& o) {
+    int ex = 0;
+    m = std::frexp(m / o.m, &ex);
+    e += ex - o.e;
+    return *this;
+  }
+  /// The value as a double: throws Precondition_error (message prefixed by `what`) when it is
+  /// not representable (overflow, or a nonzero value below the smallest subnormal).
+  double to_double(const char* what) const {
+    if (m == 0) return 0.0;
+    require(std::isfinite(m), what, " is not representable in double (", m, ")");
+    require(e <= 1024, what, " is not representable in double: |value| ~ 2^", e, " > DBL_MAX");
+    require(e >= -1073, what, " is not representable in double: |value| ~ 2^", e, " underflows to zero");
+    return std::ldexp(m, static_cast<int>(e));
+  }
+};
+
+/// The exact value of a rational as a Scaled_double (rounded to ~53 bits).
+inline Scaled_double scaled_from_gmpq(const CGAL::Gmpq& q) {
+  Scaled_double r;
+  if (CGAL::is_zero(q)) return r;
+  long en = 0, ed = 0;
+  const double n = mpz_get_d_2exp(&en, mpq_numref(q.mpq()));
+  const double d = mpz_get_d_2exp(&ed, mpq_denref(q.mpq()));
+  r = Scaled_double::of(n / d);
+  r.e += en - ed;
+  return r;
+}
+
+/// Exact orientation of three double points: an interval filter (directed rounding, so an
+/// underflowing or overflowing product widens the interval instead of faking a sign), then the
+/// exact determinant over CGAL::Gmpq of the exact dyadic values when the filter fails.
+inline CGAL::Orientation exact_orientation_of_doubles(double x0, double y0, double x1, double y1, double x2,
+                                                      double y2) {
+  {
+    typedef CGAL::Interval_nt<false> I;
+    CGAL::Protect_FPU_rounding<true> guard;
+    const I d = (I(x1) - I(x0)) * (I(y2) - I(y0)) - (I(y1) - I(y0)) * (I(x2) - I(x0));
+    if (d.inf() > 0) return CGAL::LEFT_TURN;
+    if (d.sup() < 0) return CGAL::RIGHT_TURN;
+  }
+  const CGAL::Gmpq X0(x0), Y0(y0), X1(x1), Y1(y1), X2(x2), Y2(y2);
+  return CGAL::sign((X1 - X0) * (Y2 - Y0) - (Y1 - Y0) * (X2 - X0));
+}
+
+/// The edge vectors of a control triangle scaled by an exact power of two:
+/// e[0] = (P1-P0) 2^-k, e[1] = (P2-P1) 2^-k, e[2] = (P2-P0) 2^-k (each rounded once, as the plain
+/// double differences), largest component in [1,2). `degenerate` is true iff all are zero.
+struct Scaled_edges {
+  double ex[3] = {0, 0, 0}, ey[3] = {0, 0, 0};
+  int k = 0;
+  bool degenerate = true;
+
+  Scaled_edges() = default;
+  Scaled_edges(const double* x, const double* y) {
+    const int from[3] = {0, 1, 0}, to[3] = {1, 2, 2};
+    int h = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+      const double f = pass == 0 ? 1.0 : 0.5; // halving: only when a difference overflows
+      bool finite = true;
+      for (int i = 0; i < 3; ++i) {
+        ex[i] = f * x[to[i]] - f * x[from[i]];
+        ey[i] = f * y[to[i]] - f * y[from[i]];
+        finite = finite && std::isfinite(ex[i]) && std::isfinite(ey[i]);
+      }
+      if (finite) break;
+      h = 1;
+    }
+    double m = 0;
+    for (int i = 0; i < 3; ++i) m = std::max({m, std::abs(ex[i]), std::abs(ey[i])});
+    degenerate = m == 0;
+    if (degenerate) return;
+    const int s = std::ilogb(m);
+    for (int i = 0; i < 3; ++i) {
+      ex[i] = std::ldexp(ex[i], -s);
+      ey[i] = std::ldexp(ey[i], -s);
+    }
+    k = s + h;
+  }
+  double squared_length(int i) const { return ex[i] * ex[i] + ey[i] * ey[i]; }
+};
+
+} // namespace internal
+} // namespace fair
+
+#endif // FAIR_INTERNAL_RATIONAL_QUADRATIC_SCALED_H
