@@ -364,4 +364,24 @@ TEST(IoWriters, NeverWriteNonFiniteNumbers) {
 }
 
 
+TEST(IoWriters, NumberTextIsExact) {
+  // Exact rationals: lowest terms, sign on the numerator, integers without "/1".
+  EXPECT_EQ(fair::io::number_text(CGAL::Gmpq(18384, 24482)), "9192/12241"); // Li's alpha*, data set 1
+  EXPECT_EQ(fair::io::number_text(CGAL::Gmpq(-6, 4)), "-3/2");
+  EXPECT_EQ(fair::io::number_text(CGAL::Gmpq(12, 4)), "3");
+  EXPECT_EQ(fair::io::number_text(CGAL::Gmpq(0)), "0");
+  // EPECK's lazy number: the exact value, also after arithmetic (1/3 is not a double).
+  typedef CGAL::Exact_predicates_exact_constructions_kernel::FT Lazy;
+  EXPECT_EQ(fair::io::number_text(Lazy(1) / Lazy(3)), "1/3");
+  EXPECT_EQ(fair::io::number_text(Lazy(9192) / Lazy(12241) * Lazy(2)), "18384/12241");
+  // Doubles: 17 significant digits, which read back as the same double.
+  for (double d : {0.1, -2.5, 1e-300, 123456789.125, 1.0 / 3.0}) {
+    const std::string text = fair::io::number_text(d);
+    EXPECT_EQ(std::stod(text), d) << text;
+  }
+  EXPECT_EQ(fair::io::number_text(-2.5), "-2.5");
+  EXPECT_THROW(fair::io::number_text(std::numeric_limits<double>::quiet_NaN(), "alpha"), fair::Precondition_error);
+  EXPECT_THROW(fair::io::number_text(std::numeric_limits<double>::infinity()), fair::Precondition_error);
+}
+
 } // namespace

@@ -70,6 +70,28 @@ std::string rational_text(const ET& x) {
 
 } // namespace internal
 
+/// The exact text of a number: "p/q" (or "p", lowest terms, sign on p) when FT is an exact
+/// rational type (CGAL::Gmpq, Lazy_exact_nt<Gmpq> as in EPECK, ...); otherwise the value as a
+/// decimal with 17 significant digits, which reads back as the same double. Throws
+/// Precondition_error if the value is not finite; `what` names it in the message.
+template <class FT>
+std::string number_text(const FT& x, const std::string& what = "value") {
+  const double d = CGAL::to_double(x);
+  typedef typename CGAL::Algebraic_structure_traits<FT>::Is_exact Is_exact;
+  if constexpr (Is_exact::value && !std::is_floating_point<FT>::value) {
+    std::string text;
+    if constexpr (internal::Has_exact_member<FT>::value) text = internal::rational_text(x.exact());
+    else text = internal::rational_text(x);
+    if (!text.empty()) return text;
+  }
+  if (!std::isfinite(d))
+    throw Precondition_error(fair::internal::message("fair::io::number_text: the ", what, " is not finite: ", d));
+  std::ostringstream out;
+  out.precision(17);
+  out << d;
+  return out.str();
+}
+
 /// A coordinate as JSON: the nearest double, or "p/q" when FT is exact and the value is not
 /// a double. Throws Precondition_error if the value is not finite; `what` names it.
 template <class FT>
