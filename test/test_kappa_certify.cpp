@@ -3,6 +3,7 @@
 // Exact certification of kappa-curves (fair::certify): the curve rebuilt exactly from its
 // rational lambda_i, t_i, w_i interpolates exactly, is exactly G1, has exactly one curvature
 // maximum per piece near t_i, and matches |kappa| at the joins within a certified interval.
+// fair::certify_pieces: the returned pieces themselves, certified piece by piece in O(n).
 
 #include <fair/Kappa_curve_2.h>
 
@@ -111,3 +112,58 @@ TEST(KappaCertify, NonConvergedCurveFailsTheCertificate) {
 }
 
 } // namespace
+
+// certify_pieces: the pieces RETURNED by an EPECK curve, certified piece by piece. Their E_j
+// are formed exactly from the rounded P_j, so C0 and G1 hold exactly; interpolation holds to
+// the rounding of the solve (certified bound), and the certificate agrees with the global
+// exact rebuild of certify() (same maxima, same |kappa| mismatch up to rounding). The certified
+// exact pieces are the returned pieces themselves.
+TEST(KappaCertify, PiecewiseCertificateOfTheReturnedEpeckPieces) {
+  std::mt19937 g(5);
+  for (const bool closed : {true, false}) {
+    const std::vector<Kd::Point_2> pd = spiky(g, 40, 0.05);
+    std::vector<Epeck::Point_2> q;
+    for (const auto& p : pd) q.push_back(Epeck::Point_2(p.x(), p.y()));
+    fair::Kappa_curve_options o;
+    o.closed = closed;
+    const fair::Kappa_curve_2<Epeck> curve(q, o);
+    ASSERT_TRUE(curve.report().converged) << curve.report();
+    const fair::Kappa_certificate c = fair::certify_pieces(curve);
+    ASSERT_EQ(c.pieces.size(), curve.number_of_pieces());
+    ASSERT_EQ(c.exact_pieces.size(), curve.number_of_pieces());
+    EXPECT_EQ(c.joins.size(), closed ? curve.number_of_pieces() : curve.number_of_pieces() - 1);
+    EXPECT_TRUE(c.all_g1()) << c;
+    EXPECT_TRUE(c.all_unique_maxima()) << c;
+    EXPECT_LE(c.max_interpolation_error(), 1e-13) << c;
+    EXPECT_LE(c.max_kappa_mismatch(), 1e-10) << c;
+    EXPECT_LE(c.max_root_distance(), 1e-9) << c;
+    EXPECT_TRUE(c.valid_within(1e-13, 1e-10, 1e-9)) << c;
+    for (std::size_t j = 0; j < curve.number_of_pieces(); ++j)
+      for (std::size_t k = 0; k < 3; ++k) {
+        const auto& a = c.exact_pieces[j].control_point(k);
+        const auto& b = curve.piece(j).control_point(k);
+        EXPECT_TRUE(a.x() == fair::internal::to_gmpq(b.x()) && a.y() == fair::internal::to_gmpq(b.y()))
+            << "piece " << j << " control point " << k;
+      }
+    const fair::Kappa_certificate global = fair::certify(curve);
+    EXPECT_NEAR(c.max_kappa_mismatch(), global.max_kappa_mismatch(), 1e-11);
+  }
+}
+
+// A double-kernel curve: the rounded E_j are generally not exactly on P_{j-1} P_j, and the
+// piecewise certificate says so instead of pretending G1.
+TEST(KappaCertify, PiecewiseCertificateReportsRoundedDoubleJoins) {
+  std::mt19937 g(6);
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  const fair::Kappa_curve_2<Kd> curve(spiky(g, 30, 0.05), o);
+  ASSERT_TRUE(curve.report().converged);
+  const fair::Kappa_certificate c = fair::certify_pieces(curve);
+  EXPECT_EQ(c.pieces.size(), 30u);
+  EXPECT_LE(c.max_interpolation_error(), 1e-13) << c;
+  EXPECT_TRUE(c.all_unique_maxima()) << c;
+  EXPECT_LE(c.max_kappa_mismatch(), 1e-10) << c;
+  std::size_t c0 = 0;
+  for (const auto& j : c.joins) c0 += j.c0 ? 1 : 0;
+  EXPECT_EQ(c0, 30u);  // the pieces share their join points (same stored point)
+}

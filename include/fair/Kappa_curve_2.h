@@ -132,7 +132,7 @@ public:
     const std::vector<Point_2> backup = q_;
     q_[i] = p;
     try {
-      solve(true);
+      solve(true, i);
     } catch (...) {
       q_ = backup;
       throw;
@@ -226,7 +226,9 @@ private:
           "conic pieces; use the polyline"));
   }
 
-  void solve(bool warm) {
+  /// `moved`: index of the only input point changed since the last solve (enables the local
+  /// warm start of internal::kappa::solve), or q_.size() or more when unknown.
+  void solve(bool warm, std::size_t moved = static_cast<std::size_t>(-1)) {
     validate();
     const std::size_t m = q_.size();
     namespace kp = internal::kappa;
@@ -279,7 +281,11 @@ private:
       const double f = scale_ / scale;  // offsets d_i are relative to Q_i: only the scale changes
       for (std::size_t i = 0; i < pb.n; ++i) { st.dx[i] *= f; st.dy[i] *= f; }
       settings.warm = true;
+      if (moved < m) {  // block of input point `moved`; an open curve's end points belong to its end pieces
+        settings.moved = opt_.closed ? moved : std::min(std::max<std::size_t>(moved, 1) - 1, pb.n - 1);
+      }
       res = kp::solve(pb, st, settings);
+      settings.moved = static_cast<std::size_t>(-1);
       warm_used = true;
       if (!res.converged) {  // fall back to a cold start, keep the better of the two
         kp::State cold;
@@ -293,20 +299,20 @@ private:
     std::vector<Piece> pieces;
     pieces.reserve(pb.n);
     auto to_point = [&](double px, double py) { return Point_2(FT(cx) + FT(scale) * FT(px), FT(cy) + FT(scale) * FT(py)); };
-    auto join = [&](std::size_t j) {  // E_j, start of piece j (normalised)
-      if (!pb.has_start(j)) return std::make_pair(pb.sx, pb.sy);
-      const std::size_t a = (j + pb.n - 1) % pb.n;
-      const double l = st.lambda[j];
-      return std::make_pair((1 - l) * (pb.qx[a] + st.dx[a]) + l * (pb.qx[j] + st.dx[j]),
-                            (1 - l) * (pb.qy[a] + st.dy[a]) + l * (pb.qy[j] + st.dy[j]));
-    };
-    std::vector<Point_2> E(pb.n + 1);
-    for (std::size_t j = 0; j < pb.n; ++j) { const auto e = join(j); E[j] = to_point(e.first, e.second); }
-    E[pb.n] = opt_.closed ? E[0] : to_point(pb.ex, pb.ey);
-    if (!opt_.closed) E[0] = q_[0];
-    if (!opt_.closed) E[pb.n] = q_[m - 1];
+    // The middle control points P_j (rounded to the kernel), then the joins E_j of eq. 9
+    // computed FROM them in the kernel's arithmetic: in an exact kernel the returned pieces are
+    // exactly G1 (E_j on the segment P_{j-1} P_j), which certify_pieces() verifies piece by piece.
+    std::vector<Point_2> Pm(pb.n), E(pb.n + 1);
+    for (std::size_t j = 0; j < pb.n; ++j) Pm[j] = to_point(pb.qx[j] + st.dx[j], pb.qy[j] + st.dy[j]);
     for (std::size_t j = 0; j < pb.n; ++j) {
-      const Point_2 P = to_point(pb.qx[j] + st.dx[j], pb.qy[j] + st.dy[j]);
+      if (!pb.has_start(j)) { E[j] = q_[0]; continue; }
+      const Point_2& A = Pm[(j + pb.n - 1) % pb.n];
+      const FT l(st.lambda[j]), ml = FT(1) - l;
+      E[j] = Point_2(ml * A.x() + l * Pm[j].x(), ml * A.y() + l * Pm[j].y());
+    }
+    E[pb.n] = opt_.closed ? E[0] : q_[m - 1];
+    for (std::size_t j = 0; j < pb.n; ++j) {
+      const Point_2& P = Pm[j];
       const Point_2& A = E[j];
       const Point_2& B = E[j + 1];
       const double w = st.w[j];
@@ -361,6 +367,8 @@ struct Kappa_certificate {
     std::size_t point_index = 0;
     bool valid_piece = false;      ///< exact control points not collinear (a genuine conic arc)
     bool point_on_piece = false;   ///< Q_i == c_i(t_i) exactly
+    /// Certified upper bound on |c_i(t_i) - Q_i| (0 when point_on_piece; infinity if not valid).
+    double interpolation_error = std::numeric_limits<double>::infinity();
     std::size_t extrema = 0;       ///< certified curvature extrema in (0,1) (roots of eq. 4)
     std::size_t maxima = 0;        ///< of which maxima of |kappa|
     bool unique_maximum = false;   ///< exactly one root in (0,1) and it is a maximum
@@ -386,6 +394,19 @@ struct Kappa_certificate {
   bool all_points_on_pieces() const { for (const Piece& p : pieces) if (!p.point_on_piece) return false; return true; }
   bool all_unique_maxima() const { for (const Piece& p : pieces) if (!p.unique_maximum) return false; return true; }
   bool all_g1() const { for (const Join& j : joins) if (!(j.c0 && j.g1)) return false; return true; }
+  /// Largest certified upper bound on |c_i(t_i) - Q_i| over the pieces.
+  double max_interpolation_error() const {
+    double m = 0;
+    for (const Piece& p : pieces) m = std::max(m, p.interpolation_error);
+    return m;
+  }
+  /// As valid(), but interpolation only up to `interpolation_tolerance` (absolute, in the
+  /// curve's coordinates): the criterion for certify_pieces(), whose pieces pass through the
+  /// Q_i up to the rounding of the solver's P_i.
+  bool valid_within(double interpolation_tolerance, double kappa_tolerance = 1e-9, double t_tolerance = 1e-9) const {
+    return max_interpolation_error() <= interpolation_tolerance && all_unique_maxima() && all_g1() &&
+           max_kappa_mismatch() <= kappa_tolerance && max_root_distance() <= t_tolerance;
+  }
   /// Largest |relative |kappa| mismatch| over the joins (certified upper bound).
   double max_kappa_mismatch() const {
     double m = 0;
@@ -420,57 +441,47 @@ struct Kappa_certificate {
   }
 };
 
-/// Certifies `curve` exactly (see internal/kappa_certify.h): the exact curve defined by the
-/// solver's rational lambda_i, t_i, w_i and the exact input points.
-template <class K>
-Kappa_certificate certify(const Kappa_curve_2<K>& curve) {
+namespace internal {
+namespace kappa {
+
+/// The exact checks of certify() and certify_pieces() on exact pieces (E_j, P_j, E_{j+1}, w_j)
+/// (E has n+1 entries, E[n] == E[0] for closed curves) with parameters t_j and points Q_j:
+/// per piece and per join only, O(n) in total for bounded bit lengths.
+inline Kappa_certificate certify_exact(bool closed, const std::vector<std::size_t>& point_index,
+                                       const std::vector<Kappa_certificate::Exact_kernel::Point_2>& E,
+                                       const std::vector<Kappa_certificate::Exact_kernel::Point_2>& P,
+                                       const std::vector<CGAL::Gmpq>& w, const std::vector<double>& tt,
+                                       const std::vector<Kappa_certificate::Exact_kernel::Point_2>& Qp) {
   typedef CGAL::Gmpq Q;
   typedef Kappa_certificate::Exact_kernel EK;
-  typedef EK::Point_2 EP;
-  const internal::kappa::State& st = curve.state();
-  const std::size_t n = curve.number_of_pieces(), m = curve.points().size();
-  const bool closed = curve.is_closed();
-  std::vector<Q> qx(n), qy(n), lam(n), t(n), w(n), px, py;
-  for (std::size_t j = 0; j < n; ++j) {
-    const auto& q = curve.points()[curve.point_index(j)];
-    qx[j] = internal::to_gmpq(q.x());
-    qy[j] = internal::to_gmpq(q.y());
-    lam[j] = Q(st.lambda[j]);
-    t[j] = Q(st.t[j]);
-    w[j] = Q(st.w[j]);
-  }
-  Q sx(0), sy(0), ex(0), ey(0);
-  if (!closed) {
-    sx = internal::to_gmpq(curve.points()[0].x()); sy = internal::to_gmpq(curve.points()[0].y());
-    ex = internal::to_gmpq(curve.points()[m - 1].x()); ey = internal::to_gmpq(curve.points()[m - 1].y());
-  }
-  internal::kappa::exact_eq18(closed, qx, qy, sx, sy, ex, ey, lam, t, w, px, py);
-  std::vector<EP> P(n), E(n + 1);
-  for (std::size_t j = 0; j < n; ++j) P[j] = EP(px[j], py[j]);
-  for (std::size_t j = 0; j < n; ++j) {
-    if (!closed && j == 0) { E[0] = EP(sx, sy); continue; }
-    const std::size_t a = (j + n - 1) % n;
-    E[j] = EP((Q(1) - lam[j]) * px[a] + lam[j] * px[j], (Q(1) - lam[j]) * py[a] + lam[j] * py[j]);
-  }
-  E[n] = closed ? E[0] : EP(ex, ey);
+  const std::size_t n = P.size();
+  std::vector<Q> t(n), px(n), py(n);
+  for (std::size_t j = 0; j < n; ++j) { t[j] = Q(tt[j]); px[j] = P[j].x(); py[j] = P[j].y(); }
   Kappa_certificate cert;
   const EK::Orientation_2 orient;
   for (std::size_t j = 0; j < n; ++j) {
     Kappa_certificate::Piece pc;
-    pc.point_index = curve.point_index(j);
-    pc.t = st.t[j];
+    pc.point_index = point_index[j];
+    pc.t = tt[j];
     pc.valid_piece = E[j] != E[j + 1] && orient(E[j], P[j], E[j + 1]) != CGAL::COLLINEAR && w[j] > 0;
     if (pc.valid_piece) {
       cert.exact_pieces.emplace_back(E[j], P[j], E[j + 1], w[j]);
       const auto& piece = cert.exact_pieces.back();
-      pc.point_on_piece = piece.point(t[j]) == EP(qx[j], qy[j]);
+      const EK::Point_2 c = piece.point(t[j]);
+      pc.point_on_piece = c == Qp[j];
+      if (pc.point_on_piece) {
+        pc.interpolation_error = 0;
+      } else {  // certified upper bound of the distance: sqrt of an upper bound, rounded up
+        const double d2 = CGAL::to_interval(CGAL::squared_distance(c, Qp[j])).second;
+        pc.interpolation_error = std::nextafter(std::sqrt(d2), std::numeric_limits<double>::infinity());
+      }
       // Fast path: interval arithmetic on the exact control points decides most pieces;
       // otherwise the exact certified isolation of Rational_quadratic_bezier_2.
       const Q cx[3] = {E[j].x(), px[j], E[j + 1].x()}, cy[3] = {E[j].y(), py[j], E[j + 1].y()};
       int roots = 0;
       bool is_max = false;
       double lo = 0, hi = 1;
-      if (internal::kappa::fast_eq4_analysis(cx, cy, w[j], st.t[j], roots, is_max, lo, hi)) {
+      if (internal::kappa::fast_eq4_analysis(cx, cy, w[j], tt[j], roots, is_max, lo, hi)) {
         pc.extrema = static_cast<std::size_t>(roots);
         pc.maxima = (roots == 1 && is_max) ? 1 : 0;
         if (roots == 1) {
@@ -508,7 +519,7 @@ Kappa_certificate certify(const Kappa_curve_2<K>& curve) {
       Kappa_certificate::Join jn;
       jn.piece = j;
       jn.c0 = cert.exact_pieces[a].target() == cert.exact_pieces[j].source();
-      jn.g1 = orient(P[a], E[j], P[j]) == CGAL::COLLINEAR && lam[j] > 0 && lam[j] < 1;
+      jn.g1 = orient(P[a], E[j], P[j]) == CGAL::COLLINEAR && CGAL::collinear_are_strictly_ordered_along_line(P[a], E[j], P[j]);
       const Q A[2] = {E[a].x(), E[a].y()}, Pa[2] = {px[a], py[a]}, Ej[2] = {E[j].x(), E[j].y()};
       const Q Pj[2] = {px[j], py[j]}, B[2] = {E[j + 1].x(), E[j + 1].y()};
       internal::kappa::relative_mismatch_interval(A, Pa, Ej, Pj, B, w[a], w[j], jn.kappa_mismatch_lower,
@@ -517,6 +528,80 @@ Kappa_certificate certify(const Kappa_curve_2<K>& curve) {
     }
   }
   return cert;
+}
+
+} // namespace kappa
+} // namespace internal
+
+/// Certifies `curve` exactly (see internal/kappa_certify.h): the exact curve defined by the
+/// solver's rational lambda_i, t_i, w_i and the exact input points.
+template <class K>
+Kappa_certificate certify(const Kappa_curve_2<K>& curve) {
+  typedef CGAL::Gmpq Q;
+  typedef Kappa_certificate::Exact_kernel EK;
+  typedef EK::Point_2 EP;
+  const internal::kappa::State& st = curve.state();
+  const std::size_t n = curve.number_of_pieces(), m = curve.points().size();
+  const bool closed = curve.is_closed();
+  std::vector<Q> qx(n), qy(n), lam(n), t(n), w(n), px, py;
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto& q = curve.points()[curve.point_index(j)];
+    qx[j] = internal::to_gmpq(q.x());
+    qy[j] = internal::to_gmpq(q.y());
+    lam[j] = Q(st.lambda[j]);
+    t[j] = Q(st.t[j]);
+    w[j] = Q(st.w[j]);
+  }
+  Q sx(0), sy(0), ex(0), ey(0);
+  if (!closed) {
+    sx = internal::to_gmpq(curve.points()[0].x()); sy = internal::to_gmpq(curve.points()[0].y());
+    ex = internal::to_gmpq(curve.points()[m - 1].x()); ey = internal::to_gmpq(curve.points()[m - 1].y());
+  }
+  internal::kappa::exact_eq18(closed, qx, qy, sx, sy, ex, ey, lam, t, w, px, py);
+  std::vector<EP> P(n), E(n + 1);
+  for (std::size_t j = 0; j < n; ++j) P[j] = EP(px[j], py[j]);
+  for (std::size_t j = 0; j < n; ++j) {
+    if (!closed && j == 0) { E[0] = EP(sx, sy); continue; }
+    const std::size_t a = (j + n - 1) % n;
+    E[j] = EP((Q(1) - lam[j]) * px[a] + lam[j] * px[j], (Q(1) - lam[j]) * py[a] + lam[j] * py[j]);
+  }
+  E[n] = closed ? E[0] : EP(ex, ey);
+  std::vector<EP> Qp(n);
+  std::vector<std::size_t> index(n);
+  for (std::size_t j = 0; j < n; ++j) { Qp[j] = EP(qx[j], qy[j]); index[j] = curve.point_index(j); }
+  return internal::kappa::certify_exact(closed, index, E, P, w, st.t, Qp);
+}
+
+/// Certifies the pieces that `curve` returns, piece by piece in O(n): their exact control
+/// points (in an exact kernel: P_j the solver's rounded P_{j,1}, E_j = (1 - lambda_j) P_{j-1} +
+/// lambda_j P_j formed exactly, so C0 and G1 hold exactly by construction and are verified),
+/// the parameters t_j, and the exact input points. What is certified, exactly or by outward
+/// rounded intervals: C0 and G1 at every join; |c_j(t_j) - Q_j| <= interpolation_error (not 0:
+/// the P_j carry the rounding of the solve, ~1e-16 relative); the number and kind of curvature
+/// extrema of each piece and the distance of the nearest one to t_j; the relative |kappa|
+/// mismatch at each join. Use Kappa_certificate::valid_within(). With a floating-point kernel
+/// the pieces' E_j are rounded, and G1 generally fails exactly (as it is reported).
+template <class K>
+Kappa_certificate certify_pieces(const Kappa_curve_2<K>& curve) {
+  typedef Kappa_certificate::Exact_kernel EK;
+  typedef EK::Point_2 EP;
+  const std::size_t n = curve.number_of_pieces();
+  auto ex = [](const typename K::Point_2& p) { return EP(internal::to_gmpq(p.x()), internal::to_gmpq(p.y())); };
+  std::vector<EP> E(n + 1), P(n), Qp(n);
+  std::vector<CGAL::Gmpq> w(n);
+  std::vector<double> t(n);
+  std::vector<std::size_t> index(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto& pc = curve.piece(j);
+    E[j] = ex(pc.control_point(0));
+    P[j] = ex(pc.control_point(1));
+    w[j] = internal::to_gmpq(pc.weight());
+    t[j] = curve.t(j);
+    index[j] = curve.point_index(j);
+    Qp[j] = ex(curve.points()[index[j]]);
+  }
+  E[n] = ex(curve.piece(n - 1).control_point(2));
+  return internal::kappa::certify_exact(curve.is_closed(), index, E, P, w, t, Qp);
 }
 
 } // namespace fair
