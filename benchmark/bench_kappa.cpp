@@ -8,6 +8,7 @@
 
 #include <fair/Kappa_curve_2.h>
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <benchmark/benchmark.h>
@@ -99,5 +100,21 @@ void BM_kappa_certify_10000_pieces(benchmark::State& state) {
   state.counters["curves"] = static_cast<double>(curves_count);
 }
 BENCHMARK(BM_kappa_certify_10000_pieces)->Arg(20)->Arg(100)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// O(n) certification of the pieces actually returned (fair::certify_pieces): one closed EPECK
+// curve of 10^4 pieces (its E_j exact from the rounded P_j), certified piece by piece.
+void BM_kappa_certify_pieces_epeck(benchmark::State& state) {
+  typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
+  const std::size_t n = static_cast<std::size_t>(state.range(0));
+  std::vector<EK::Point_2> q;
+  for (const P& p : random_star(n, 7)) q.push_back(EK::Point_2(p.x(), p.y()));
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  const fair::Kappa_curve_2<EK> curve(q, o);
+  bool valid = false;
+  for (auto _ : state) valid = fair::certify_pieces(curve).valid_within(1e-12);
+  state.counters["valid"] = valid ? 1 : 0;
+}
+BENCHMARK(BM_kappa_certify_pieces_epeck)->Arg(10000)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 } // namespace
