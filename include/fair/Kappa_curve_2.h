@@ -25,7 +25,9 @@
 // a solve that stops earlier is reported in report() (converged == false) -- and throws
 // fair::Non_convergence_error when Kappa_curve_options::throw_on_non_convergence is set.
 // In a floating kernel the pieces carry the rounding of the solve; fair::certify() (below)
-// rebuilds the curve exactly from its rational lambda_i, t_i, w_i and certifies it.
+// rebuilds the curve exactly from its rational lambda_i, t_i, w_i and certifies it (global exact
+// solve, O(n^2)); fair::certify_pieces() certifies the returned pieces themselves in O(n) (their
+// joins are formed from the rounded P_{i,1} in the kernel: exactly G1 in an exact kernel).
 
 #ifndef FAIR_KAPPA_CURVE_2_H
 #define FAIR_KAPPA_CURVE_2_H
