@@ -128,15 +128,7 @@ private:
   void assemble(const std::vector<FT>& h, const std::vector<Vector_2>& m) {
     knots_ = internal::classic_cumulative_knots(h);
     derivatives_ = m;
-    const std::size_t n = points_.size();
-    pieces_.clear();
-    pieces_.reserve(h.size());
-    for (std::size_t i = 0; i < h.size(); ++i) {
-      const std::size_t j = (i + 1) % n;
-      pieces_.push_back(internal::classic_hermite_piece<K>(points_[i], m[i].x(), m[i].y(), points_[j], m[j].x(),
-                                                           m[j].y(), h[i]));
-    }
-    internal::classic_check_finite_pieces(pieces_, "Catmull_rom_2");
+    pieces_ = internal::classic_hermite_pieces<K>(points_, m, h, "Catmull_rom_2");
   }
 
   std::vector<Point_2> points_;

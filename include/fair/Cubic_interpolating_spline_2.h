@@ -165,13 +165,7 @@ private:
     derivatives_.clear();
     derivatives_.reserve(n);
     for (std::size_t i = 0; i < n; ++i) derivatives_.push_back(Vector_2(mx[i], my[i]));
-    pieces_.clear();
-    pieces_.reserve(h.size());
-    for (std::size_t i = 0; i < h.size(); ++i) {
-      const std::size_t j = (i + 1) % n;
-      pieces_.push_back(internal::classic_hermite_piece<K>(p[i], mx[i], my[i], p[j], mx[j], my[j], h[i]));
-    }
-    internal::classic_check_finite_pieces(pieces_, method);
+    pieces_ = internal::classic_hermite_pieces<K>(p, derivatives_, h, method);
   }
 
   std::vector<Point_2> points_;

@@ -158,6 +158,25 @@ void classic_check_finite_pieces(const std::vector<Piece>& pieces, const char* m
   for (const Piece& piece : pieces) classic_check_finite_output(piece.control_points(), method);
 }
 
+/// The Hermite interpolant through p_0..p_{n-1} with derivatives m_i = c'(u_i) (d/du) on the
+/// knot intervals h: piece i (classic_hermite_piece) joins p_i to p_{(i+1) mod n}, so h has
+/// n - 1 entries for an open curve and n for a closed one. Throws Invalid_input_error (see
+/// classic_check_finite_output) when a control point is not finite.
+template <class K>
+std::vector<Bezier_2<K>> classic_hermite_pieces(const std::vector<typename K::Point_2>& p,
+                                                const std::vector<typename K::Vector_2>& m,
+                                                const std::vector<typename K::FT>& h, const char* method) {
+  const std::size_t n = p.size();
+  std::vector<Bezier_2<K>> pieces;
+  pieces.reserve(h.size());
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    const std::size_t j = (i + 1) % n;
+    pieces.push_back(classic_hermite_piece<K>(p[i], m[i].x(), m[i].y(), p[j], m[j].x(), m[j].y(), h[i]));
+  }
+  classic_check_finite_pieces(pieces, method);
+  return pieces;
+}
+
 } // namespace internal
 } // namespace fair
 
