@@ -75,8 +75,8 @@ void run_cardinal_in(const Cardinal_options& o) {
                        {"energy_true_arc_length", e_s.value},
                        {"input", fair::io::points_to_json(data.points, closed)}};
   if (o.exact) {
-    extra["alpha_exact"] = fair::io::internal::rational_text(alpha);
-    extra["energy_approx_exact"] = fair::io::internal::rational_text(energy_approx);
+    extra["alpha_exact"] = fair::io::number_text(alpha);
+    extra["energy_approx_exact"] = fair::io::number_text(energy_approx);
   }
   if (!closed) {
     extra["aux_start"] = fair::io::point_to_json(curve->aux_start(), "aux_start");
@@ -84,23 +84,25 @@ void run_cardinal_in(const Cardinal_options& o) {
   }
   const nlohmann::json out = fair::io::curve_to_json(pieces, extra);
 
-  std::cout << "cardinal: " << data.points.size() << " points, " << (closed ? "closed" : "open") << ", "
+  // The report goes to stdout unless stdout is the JSON ("-o -").
+  std::ostringstream report;
+  report << "cardinal: " << data.points.size() << " points, " << (closed ? "closed" : "open") << ", "
             << pieces.size() << " cubic pieces\n";
-  std::cout << "alpha = " << fair_curves::format_number(CGAL::to_double(alpha), 10)
-            << (o.exact ? " = " + fair::io::internal::rational_text(alpha) : std::string())
+  report << "alpha = " << fair_curves::format_number(CGAL::to_double(alpha), 10)
+            << (o.exact ? " = " + fair::io::number_text(alpha) : std::string())
             << (optimal ? " (optimal, eq. 18)" : " (given)") << "\n";
   if (!closed) {
-    std::cout << "aux_start = (" << fair_curves::format_number(CGAL::to_double(curve->aux_start().x()), 10) << ", "
+    report << "aux_start = (" << fair_curves::format_number(CGAL::to_double(curve->aux_start().x()), 10) << ", "
               << fair_curves::format_number(CGAL::to_double(curve->aux_start().y()), 10) << ")"
               << (explicit_aux ? " (given)" : " (eq. 19)") << "\n";
-    std::cout << "aux_end = (" << fair_curves::format_number(CGAL::to_double(curve->aux_end().x()), 10) << ", "
+    report << "aux_end = (" << fair_curves::format_number(CGAL::to_double(curve->aux_end().x()), 10) << ", "
               << fair_curves::format_number(CGAL::to_double(curve->aux_end().y()), 10) << ")"
               << (explicit_aux ? " (given)" : " (eq. 20)") << "\n";
   }
-  std::cout << "energy_approx (eq. 10) = " << fair_curves::format_number(CGAL::to_double(energy_approx), 10) << "\n";
-  std::cout << "energy_true (eq. 5, int (dk/dt)^2 dt) = " << fair_curves::format_number(e_t.value, 10)
+  report << "energy_approx (eq. 10) = " << fair_curves::format_number(CGAL::to_double(energy_approx), 10) << "\n";
+  report << "energy_true (eq. 5, int (dk/dt)^2 dt) = " << fair_curves::format_number(e_t.value, 10)
             << " (error estimate " << fair_curves::format_number(e_t.error_bound, 2) << ")\n";
-  std::cout << "energy_true_arc_length (int (dk/ds)^2 ds) = " << fair_curves::format_number(e_s.value, 10) << "\n";
+  report << "energy_true_arc_length (int (dk/ds)^2 ds) = " << fair_curves::format_number(e_s.value, 10) << "\n";
 
   std::string json_text, svg_text, plot_text;
   if (!o.json_out.empty()) {
@@ -118,6 +120,7 @@ void run_cardinal_in(const Cardinal_options& o) {
     plot_text = f.curvature_svg;
   }
   // Write only once everything has been computed: a failure leaves no partial output.
+  if (o.json_out != "-") std::cout << report.str();
   if (!o.json_out.empty()) {
     if (o.json_out == "-") std::cout << json_text;
     else fair::io::write_text_file(o.json_out, json_text);
@@ -127,7 +130,10 @@ void run_cardinal_in(const Cardinal_options& o) {
 }
 
 void run_cardinal(const Cardinal_options& o) {
-  if (o.alpha != "optimal") fair_curves::option_number(o.alpha, "--alpha"); // usage error before any work
+  // Usage errors before any work: --alpha is 'optimal' or a finite value > 0 (the domain of
+  // Cardinal_spline_2: alpha <= 0 collapses or reverses the tangents).
+  if (o.alpha != "optimal" && !(fair_curves::option_number(o.alpha, "--alpha") > 0))
+    throw CLI::ValidationError("--alpha", "expected 'optimal' or a value > 0, got '" + o.alpha + "'");
   if (o.exact) run_cardinal_in<CGAL::Simple_cartesian<CGAL::Gmpq>>(o);
   else run_cardinal_in<fair_curves::Kernel>(o);
 }

@@ -105,8 +105,8 @@ void add_cardinal_cases(fair::io::Gallery& gallery) {
   add_case(gallery, Spline::optimal(p), "Figure 3 / Table 1: minimum curvature variation",
            "alpha* = 9192/12241 (exact) and p_{-1}*, p_9* of eqs. 18-20. Table 1 of the paper: alpha 0.7509, energy "
            "1.9964e5. The two end segments are parabolic (r''' = 0) and add nothing to eq. 10.",
-           {{"alpha* (exact rational, eq. 18)", fair::io::internal::rational_text(oe.alpha)},
-            {"eq. 10 at the optimum (exact)", fair::io::internal::rational_text(oe.energy)},
+           {{"alpha* (exact rational, eq. 18)", fair::io::number_text(oe.alpha)},
+            {"eq. 10 at the optimum (exact)", fair::io::number_text(oe.energy)},
             {"Table 1 (paper)", "0.7509, 1.9964e5"}});
   add_case(gallery, Spline::catmull_rom(p, o.aux_start, o.aux_end), "Figure 3 / Table 1: Catmull-Rom",
            "alpha = 0.5 with the same auxiliary points p_{-1}*, p_9* (the paper's comparison). Table 1 of the paper: "

@@ -32,7 +32,16 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   } catch (const fair::Error& e) {
-    std::cerr << "fair-curves: error: " << e.what() << '\n';
+    // A data error that does not name the file it came from (e.g. a degenerate configuration
+    // found by the library): prefix the subcommand's input file, so that the one line says
+    // which file is at fault.
+    std::string what = e.what();
+    for (const CLI::App* sub : app.get_subcommands())
+      for (const char* name : {"input", "curve"})
+        if (const CLI::Option* input = sub->get_option_no_throw(name))
+          for (const std::string& file : input->results())
+            if (!file.empty() && what.find(file) == std::string::npos) what = file + ": " + what;
+    std::cerr << "fair-curves: error: " << what << '\n';
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "fair-curves: error: " << e.what() << '\n';

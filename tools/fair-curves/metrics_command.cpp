@@ -55,14 +55,26 @@ struct File_curve {
   }
 };
 
+// What a file that is not a curve JSON gets told.
+const char* const not_a_curve = "expected a curve JSON written by fair-curves (an object with a \"pieces\" array)";
+
 File_curve read_curve_file(const std::string& file) {
   using fair::io::internal::Json_value;
   using fair::Parse_error;
   const std::string text = fair::io::internal::read_text_file(file);
-  const Json_value root = fair::io::internal::Json_line_parser(text, file).parse();
-  if (root.kind != Json_value::object) throw Parse_error(file, root.line, "expected a curve object {\"pieces\": [...]}");
+  Json_value root;
+  try {
+    root = fair::io::internal::Json_line_parser(text, file).parse();
+  } catch (const Parse_error& e) {
+    // A points CSV, or any other text: say what was expected, then the parser's reason.
+    const std::string what = e.what();
+    const std::string prefix = file + (e.line() ? ":" + std::to_string(e.line()) : std::string()) + ": ";
+    throw Parse_error(file, e.line(),
+                      std::string(not_a_curve) + "; " + (what.compare(0, prefix.size(), prefix) == 0 ? what.substr(prefix.size()) : what));
+  }
+  if (root.kind != Json_value::object) throw Parse_error(file, root.line, not_a_curve);
   const Json_value* pieces = root.find("pieces");
-  if (!pieces) throw Parse_error(file, root.line, "the JSON object has no \"pieces\" member (not a curve file)");
+  if (!pieces) throw Parse_error(file, root.line, std::string(not_a_curve) + "; this JSON object has no \"pieces\"");
   if (pieces->kind != Json_value::array || pieces->items.empty())
     throw Parse_error(file, pieces->line, "\"pieces\" must be a nonempty array");
   auto number = [&](const Json_value& v, const std::string& what) {
@@ -70,21 +82,34 @@ File_curve read_curve_file(const std::string& file) {
       throw Parse_error(file, v.line, what + " must be a number, got " + Json_value::kind_name(v.kind));
     return fair::io::internal::to_ft<CGAL::Gmpq>(fair::io::internal::parse_number(v.text, file, v.line, what.c_str()));
   };
+  auto point = [&](const Json_value& xy, const std::string& what) {
+    if (xy.kind != Json_value::array || xy.items.size() != 2)
+      throw Parse_error(file, xy.line, what + ": expected an [x, y] pair");
+    return Exact_kernel::Point_2(number(xy.items[0], what + " x"), number(xy.items[1], what + " y"));
+  };
   File_curve curve;
   for (std::size_t i = 0; i < pieces->items.size(); ++i) {
     const Json_value& p = pieces->items[i];
     const std::string name = "piece " + std::to_string(i);
     if (p.kind != Json_value::object) throw Parse_error(file, p.line, name + ": expected an object");
-    const Json_value* cps = p.find("control_points");
-    if (!cps || cps->kind != Json_value::array || cps->items.empty())
-      throw Parse_error(file, p.line, name + ": needs a nonempty \"control_points\" array");
     File_rational_piece piece;
-    for (std::size_t k = 0; k < cps->items.size(); ++k) {
-      const Json_value& xy = cps->items[k];
-      if (xy.kind != Json_value::array || xy.items.size() != 2)
-        throw Parse_error(file, xy.line, name + " control point " + std::to_string(k) + ": expected an [x, y] pair");
-      piece.cp.emplace_back(number(xy.items[0], name + " x"), number(xy.items[1], name + " y"));
+    const Json_value* cps = p.find("control_points");
+    if (!cps && p.find("P0") && p.find("P1") && p.find("P2")) {
+      // The conic pieces of `fair-curves kappa`: {"P0", "P1", "P2", "w"}, the standard rational
+      // quadratic form with weights (1, w, 1) (w absent: 1).
+      for (const char* key : {"P0", "P1", "P2"}) piece.cp.push_back(point(*p.find(key), name + " " + key));
+      const Json_value* w = p.find("w");
+      const CGAL::Gmpq wm = w ? number(*w, name + " w") : CGAL::Gmpq(1);
+      if (!(wm > 0)) throw Parse_error(file, w->line, name + ": the weight w must be > 0");
+      piece.w = {CGAL::Gmpq(1), wm, CGAL::Gmpq(1)};
+      if (wm != 1) curve.rational = true;
+      curve.pieces.push_back(std::move(piece));
+      continue;
     }
+    if (!cps || cps->kind != Json_value::array || cps->items.empty())
+      throw Parse_error(file, p.line, name + ": needs a nonempty \"control_points\" array (or \"P0\", \"P1\", \"P2\", \"w\")");
+    for (std::size_t k = 0; k < cps->items.size(); ++k)
+      piece.cp.push_back(point(cps->items[k], name + " control point " + std::to_string(k)));
     if (const Json_value* w = p.find("weights")) {
       if (w->kind != Json_value::array || w->items.size() != cps->items.size())
         throw Parse_error(file, w->line, name + ": \"weights\" must be an array with one weight per control point");
@@ -106,6 +131,17 @@ struct Metrics_options {
   double tolerance = 0;
   std::size_t samples = 64;
 };
+
+/// The --circle value "cx,cy,r" (r >= 0); anything else is a usage error.
+std::vector<double> circle_option(const std::string& text) {
+  std::vector<double> v;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) v.push_back(fair_curves::option_number(item, "--circle"));
+  if (v.size() != 3 || !(v[2] >= 0))
+    throw CLI::ValidationError("--circle", "expected \"cx,cy,r\" with r >= 0, got '" + text + "'");
+  return v;
+}
 
 std::string features_text(const fair::Feature_report& r) {
   std::ostringstream out;
@@ -131,7 +167,8 @@ void report(const std::vector<Piece>& curve, const Metrics_options& o, const Fil
   const fair::Feature_report infl = fair::inflections(curve), ext = fair::curvature_extrema(curve);
   const fair::Quadrature_estimate cv_t = fair::curvature_variation_energy(curve, fair::Energy_measure::parameter);
   using fair_curves::format_number;
-  std::cout << o.input << ": " << r.pieces << " pieces\n"
+  std::ostringstream text; // the report: on stdout unless stdout is the JSON ("-o -")
+  text << o.input << ": " << r.pieces << " pieces\n"
             << "arc length = " << format_number(r.length.value, 12) << "\n"
             << "bending energy int k^2 ds = " << format_number(r.bending.value, 12) << " (error estimate "
             << format_number(r.bending.error_bound, 2) << ")\n"
@@ -157,14 +194,10 @@ void report(const std::vector<Piece>& curve, const Metrics_options& o, const Fil
                    {"inflections", features_json(infl)},
                    {"curvature_extrema", features_json(ext)}};
   if (!o.circle.empty()) {
-    std::vector<double> v;
-    std::stringstream ss(o.circle);
-    std::string item;
-    while (std::getline(ss, item, ',')) v.push_back(fair_curves::option_number(item, "--circle"));
-    if (v.size() != 3 || !(v[2] >= 0)) throw CLI::ValidationError("--circle", "expected \"cx,cy,r\" with r >= 0");
+    const std::vector<double> v = circle_option(o.circle);
     const fair::Circle_deviation d =
         fair::max_circle_deviation(curve, typename Piece::Point_2(v[0], v[1]), v[2]);
-    std::cout << "max deviation from the circle = " << format_number(d.max_deviation, 12) << " (piece " << d.piece
+    text << "max deviation from the circle = " << format_number(d.max_deviation, 12) << " (piece " << d.piece
               << ", t = " << format_number(d.t, 10) << ")\n";
     j["circle_deviation"] = d.max_deviation;
   }
@@ -182,7 +215,7 @@ void report(const std::vector<Piece>& curve, const Metrics_options& o, const Fil
     }
     const double h = other->rational ? fair::hausdorff_distance(curve, other->pieces, tol)
                                      : fair::hausdorff_distance(curve, other->polynomial(), tol);
-    std::cout << "Hausdorff distance to " << o.hausdorff << " = " << format_number(h, 10) << " (sampling tolerance "
+    text << "Hausdorff distance to " << o.hausdorff << " = " << format_number(h, 10) << " (sampling tolerance "
               << format_number(tol, 3) << ")\n";
     j["hausdorff_distance"] = h;
     j["hausdorff_tolerance"] = tol;
@@ -202,6 +235,7 @@ void report(const std::vector<Piece>& curve, const Metrics_options& o, const Fil
     fair::io::write_json(out, j);
     json_text = out.str();
   }
+  if (o.json_out != "-") std::cout << text.str();
   if (!o.json_out.empty()) {
     if (o.json_out == "-") std::cout << json_text;
     else fair::io::write_text_file(o.json_out, json_text);
@@ -210,6 +244,7 @@ void report(const std::vector<Piece>& curve, const Metrics_options& o, const Fil
 }
 
 void run_metrics(const Metrics_options& o) {
+  if (!o.circle.empty()) circle_option(o.circle); // usage error before reading any file
   const File_curve curve = read_curve_file(o.input);
   File_curve other;
   if (!o.hausdorff.empty()) other = read_curve_file(o.hausdorff);
@@ -225,7 +260,7 @@ void register_metrics_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "metrics", "Fairness figures of a curve JSON written by fair-curves: length, bending energy, curvature "
                  "variation, curvature range, certified inflections and curvature extrema");
-  sub->add_option("curve", options->input, "the curve file (JSON with \"pieces\")")->required();
+  sub->add_option("curve", options->input, "the curve file: JSON with \"pieces\" written by fair-curves (conic, cardinal, kappa, ...)")->required();
   sub->add_option("--circle", options->circle, "also the largest deviation from the circle \"cx,cy,r\"");
   sub->add_option("--hausdorff", options->hausdorff, "also the Hausdorff distance to another curve file");
   sub->add_option("--tolerance", options->tolerance,

@@ -1,9 +1,9 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // Self-registration of the subcommands and of the demo gallery's cases, so that each one lives
-// in its own file and main.cpp / cmd_demo.cpp never need editing:
+// in its own file and main.cpp / demo_command.cpp never need editing:
 //
-//   // cmd_<name>.cpp
+//   // <name>_command.cpp
 //   void register_<name>_command(CLI::App& app) { auto* sub = app.add_subcommand(...); ... }
 //   FAIR_CURVES_COMMAND(register_<name>_command)
 //
