@@ -477,26 +477,8 @@ inline Kappa_certificate certify_exact(bool closed, const std::vector<std::size_
         const double d2 = CGAL::to_interval(CGAL::squared_distance(c, Qp[j])).second;
         pc.interpolation_error = std::nextafter(std::sqrt(d2), std::numeric_limits<double>::infinity());
       }
-      // Fast path: interval arithmetic on the exact control points decides most pieces;
-      // otherwise the exact certified isolation of Rational_quadratic_bezier_2.
-      const Q cx[3] = {E[j].x(), px[j], E[j + 1].x()}, cy[3] = {E[j].y(), py[j], E[j + 1].y()};
-      int roots = 0;
-      bool is_max = false;
-      double lo = 0, hi = 1;
-      if (internal::kappa::fast_eq4_analysis(cx, cy, w[j], tt[j], roots, is_max, lo, hi)) {
-        pc.extrema = static_cast<std::size_t>(roots);
-        pc.maxima = (roots == 1 && is_max) ? 1 : 0;
-        if (roots == 1) {
-          pc.has_extremum_at_t = true;
-          pc.kind_at_t = is_max ? Curvature_extremum_kind::MAXIMUM : Curvature_extremum_kind::MINIMUM;
-          pc.root_lower = lo;
-          pc.root_upper = hi;
-          pc.root_distance = CGAL::to_interval(std::max(CGAL::abs(t[j] - Q(lo)), CGAL::abs(Q(hi) - t[j]))).second;
-        }
-        pc.unique_maximum = roots == 1 && is_max;
-        cert.pieces.push_back(pc);
-        continue;
-      }
+      // curvature_extrema() decides most pieces by its interval fast path and falls back to
+      // the exact certified isolation only where an interval sign is undecided.
       const std::vector<Curvature_extremum> ext = piece.curvature_extrema();
       pc.extrema = ext.size();
       for (const Curvature_extremum& x : ext) {

@@ -105,48 +105,6 @@ inline void relative_mismatch_interval(const CGAL::Gmpq* a, const CGAL::Gmpq* p,
 }
 
 
-/// Fast certified analysis of the eq.-4 numerator of one exact piece, by interval arithmetic
-/// on enclosures of its exact control points: returns false when the intervals cannot decide
-/// (the caller then runs the exact isolation). On success: `roots` is the exact number of roots
-/// in (0,1) (0 or 1: Descartes' rule of signs in the Bernstein basis, one sign variation with
-/// opposite end signs means exactly one root), `maximum` its kind (E from - to + is a maximum
-/// of |kappa|, see Rational_quadratic_bezier_2::curvature_derivative_numerator) and
-/// [lower, upper] an interval around t that contains it, found by certified sign changes of E.
-inline bool fast_eq4_analysis(const CGAL::Gmpq* x, const CGAL::Gmpq* y, const CGAL::Gmpq& w, double t,
-                              int& roots, bool& maximum, double& lower, double& upper) {
-  typedef CGAL::Interval_nt<false> I;
-  CGAL::Protect_FPU_rounding<true> guard;
-  auto iv = [](const CGAL::Gmpq& q) { const std::pair<double, double> p = CGAL::to_interval(q); return I(p.first, p.second); };
-  const std::vector<I> b = eq4_coefficients<I>(iv(x[0]), iv(y[0]), iv(x[1]), iv(y[1]), iv(x[2]), iv(y[2]), iv(w));
-  int sign[5], last = 0, variations = 0;
-  for (int i = 0; i < 5; ++i) {
-    if (b[i].inf() > 0) sign[i] = 1;
-    else if (b[i].sup() < 0) sign[i] = -1;
-    else return false;
-    if (last != 0 && sign[i] != last) ++variations;
-    last = sign[i];
-  }
-  if (variations == 0) { roots = 0; return true; }
-  if (variations != 1) return false;
-  roots = 1;
-  maximum = sign[0] < 0;
-  auto value_at = [&](double s) {
-    const I ss(s), r = I(1) - ss;
-    I v[5] = {b[0], b[1], b[2], b[3], b[4]};
-    for (int k = 1; k <= 4; ++k)
-      for (int i = 0; i + k <= 4; ++i) v[i] = r * v[i] + ss * v[i + 1];
-    return v[0];
-  };
-  for (double delta = 1e-13; delta <= 0.5; delta *= 10) {
-    const double a = std::max(t - delta, 0.0), c = std::min(t + delta, 1.0);
-    const I fa = value_at(a), fc = value_at(c);
-    const bool a_ok = a == 0.0 || (sign[0] < 0 ? fa.sup() < 0 : fa.inf() > 0);
-    const bool c_ok = c == 1.0 || (sign[4] > 0 ? fc.inf() > 0 : fc.sup() < 0);
-    if (a_ok && c_ok) { lower = a; upper = c; return true; }
-  }
-  return false;
-}
-
 } // namespace kappa
 } // namespace internal
 } // namespace fair
