@@ -6,7 +6,8 @@ macro(run)
     message(FATAL_ERROR "command failed (${rc}): ${ARGN}\n${out}\n${err}")
   endif()
 endmacro()
-run(${CMAKE_COMMAND} --install ${FAIR_BINARY_DIR} --prefix ${SCRATCH}/prefix)
+# Only the library (component Development): the consumer needs neither the program nor a full build.
+run(${CMAKE_COMMAND} --install ${FAIR_BINARY_DIR} --prefix ${SCRATCH}/prefix --component Development)
 run(${CMAKE_COMMAND} -S ${FAIR_SOURCE_DIR}/test/consumer -B ${SCRATCH}/build
     -DCMAKE_PREFIX_PATH=${SCRATCH}/prefix -DCMAKE_BUILD_TYPE=Release)
 run(${CMAKE_COMMAND} --build ${SCRATCH}/build)
