@@ -15,6 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <cmath>
 #include <limits>
 #include <random>
@@ -23,26 +25,9 @@
 
 namespace {
 
-template <class K>
-constexpr bool is_exact() {
-  return !std::is_floating_point<typename K::FT>::value;
-}
-
-template <class K>
-typename K::FT q(int n, int d = 1) {
-  return typename K::FT(n) / typename K::FT(d);
-}
-
-template <class K>
-::testing::AssertionResult same(const typename K::FT& a, const typename K::FT& b, double rel = 1e-13) {
-  const double x = CGAL::to_double(a), y = CGAL::to_double(b);
-  if (is_exact<K>()) {
-    if (a == b) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << x << " != " << y << " (exact)";
-  }
-  if (std::fabs(x - y) <= rel * (1.0 + std::fabs(y))) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << x << " vs " << y;
-}
+using fair_test::is_exact;
+using fair_test::q;
+using fair_test::same;
 
 template <class K>
 ::testing::AssertionResult same_vector(const typename K::Vector_2& a, const typename K::Vector_2& b, double rel = 1e-13) {

@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <cmath>
 #include <limits>
 #include <random>
@@ -22,17 +24,11 @@
 
 namespace {
 
+using fair_test::is_exact;
+using fair_test::q;
+using fair_test::same;
+
 typedef CGAL::Simple_cartesian<CGAL::Gmpq> Kq;
-
-template <class K>
-constexpr bool is_exact() {
-  return !std::is_floating_point<typename K::FT>::value;
-}
-
-template <class K>
-typename K::FT q(int n, int d = 1) {
-  return typename K::FT(n) / typename K::FT(d);
-}
 
 template <class K>
 typename K::Point_2 pt(int xn, int xd, int yn, int yd) {
@@ -40,18 +36,6 @@ typename K::Point_2 pt(int xn, int xd, int yn, int yd) {
 }
 
 double dbl(const CGAL::Gmpq& x) { return CGAL::to_double(x); }
-
-// a == b exactly in an exact kernel, to a relative tolerance in a floating kernel.
-template <class K>
-::testing::AssertionResult same(const typename K::FT& a, const typename K::FT& b, double rel = 1e-13) {
-  const double x = CGAL::to_double(a), y = CGAL::to_double(b);
-  if (is_exact<K>()) {
-    if (a == b) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << x << " != " << y << " (exact)";
-  }
-  if (std::fabs(x - y) <= rel * (1.0 + std::fabs(y))) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << x << " vs " << y << " differ by " << std::fabs(x - y);
-}
 
 // A half angle beta with rational cos and sin: cos = c/d, sin = s/d (Pythagorean triple).
 struct Half_angle {

@@ -79,6 +79,24 @@ std::vector<typename K::Point_2> random_points(std::mt19937& rng, std::size_t n)
   return p;
 }
 
+// The FT value n/d (exact in exact kernels).
+template <class K>
+typename K::FT q(int n, int d = 1) {
+  return typename K::FT(n) / typename K::FT(d);
+}
+
+// a == b exactly in an exact kernel, |a - b| <= rel (1 + |b|) in a floating kernel.
+template <class K>
+::testing::AssertionResult same(const typename K::FT& a, const typename K::FT& b, double rel = 1e-13) {
+  const double x = CGAL::to_double(a), y = CGAL::to_double(b);
+  if (is_exact<K>()) {
+    if (a == b) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << x << " != " << y << " (exact)";
+  }
+  if (std::fabs(x - y) <= rel * (1.0 + std::fabs(y))) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << x << " vs " << y << " differ by " << std::fabs(x - y);
+}
+
 } // namespace fair_test
 
 #endif // FAIR_TEST_SUPPORT_H
