@@ -1,0 +1,242 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// The square system behind fair::Kappa_curve_2 (rational kappa-curves of Yan, Schiller, Schaefer;
+// equation numbers refer to that paper): the unknowns of one solve, and the four residuals of
+// each block, evaluated in double (kappa_solver.h, kappa_refinement.h) or with derivatives
+// (kappa_jacobian.h).
+//
+// Unknowns, per interpolated point i (one "block" of four): the middle control point
+// P_i = P_{i,1} (stored as the offset d_i = P_i - Q_i), the join parameter lambda_i of eq. 9
+// (P_{i,0} = P_{i-1,2} = (1-lambda_i) P_{i-1} + lambda_i P_i) and the parameter t_i with
+// c_i(t_i) = Q_i. The weight w_i is not an unknown: it is 1, a user value, or the clamped
+// minimum-eccentricity weight of eq. 16 written as a function of (P, lambda) -- substituted,
+// so that E_w of eq. 13 is identically zero.
+//
+// Equations, per block (a square system, 4n x 4n):
+//   r_0, r_1  (c_i(t_i) - Q_i)  = eq. 8/18 divided by its positive denominator
+//             (1-t)^2 + 2(1-t)t w + t^2, i.e. the interpolation error as a distance;
+//   r_2       eq. 7 divided by A_i + C_i (Q_i is a critical point of curvature);
+//   r_3       (k1 - k2) / (k1 + k2), the relative mismatch of |kappa| at the join i between
+//             pieces i-1 and i, with k1 = |kappa_{i-1}(1)|, k2 = |kappa_i(0)| from eq. 5
+//             (both multiplied by |P_i - P_{i-1}|^3, eq. 10). For an open curve block 0 has no
+//             join and r_3 = lambda_0 - 1/2 pins an unused variable.
+// Accuracy: residuals are evaluated in coordinates local to each Q_i, so that the |kappa|
+// mismatch of dense points (control polygon areas ~ h^3) keeps a relative accuracy of about
+// 1e-16 / (h kappa). Degenerate cases: a join whose two neighbouring control polygons are both
+// straight (|kappa| = 0 on both sides) gives r_3 = 0 with a zero gradient; the damping of
+// Levenberg-Marquardt keeps lambda there.
+
+#ifndef FAIR_INTERNAL_KAPPA_SYSTEM_H
+#define FAIR_INTERNAL_KAPPA_SYSTEM_H
+
+#include <fair/internal/kappa_dual.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace fair {
+namespace internal {
+namespace kappa {
+
+enum class Weight_mode { unit, fixed, automatic };
+
+/// The (normalised) data of one solve. Block i interpolates (qx[i], qy[i]).
+struct Problem {
+  bool closed = false;
+  std::size_t n = 0;
+  std::vector<double> qx, qy;
+  double sx = 0, sy = 0, ex = 0, ey = 0;  // open curves: the fixed end points Q_0, Q_{m-1}
+  Weight_mode mode = Weight_mode::unit;
+  std::vector<double> weight;   // mode fixed: w_i
+  std::vector<double> tension;  // mode automatic: mu_i of eq. 16
+  double clamp = 0.5;           // mode automatic: lower clamp of eq. 16
+
+  bool has_start(std::size_t j) const { return closed || j >= 1; }
+  bool has_end(std::size_t j) const { return closed || j + 1 < n; }
+};
+
+/// Unknowns: d_i = P_i - Q_i, lambda_i, t_i; w_i as last computed.
+struct State {
+  std::vector<double> dx, dy, lambda, t, w;
+  void resize(std::size_t n) {
+    dx.assign(n, 0.0); dy.assign(n, 0.0); lambda.assign(n, 0.5); t.assign(n, 0.5); w.assign(n, 1.0);
+  }
+};
+
+struct Solve_result {
+  std::size_t refinement_passes = 0;
+  std::size_t iterations = 0;
+  bool converged = false;
+  double residual = 0;               // max |r| over all equations
+  double interpolation_residual = 0; // max |c_i(t_i) - Q_i| (normalised coordinates)
+  double curvature_residual = 0;     // max |eq. 7| / (A_i + C_i)
+  double g2_residual = 0;            // max relative |kappa| mismatch at joins
+  double weight_residual = 0;        // max |w_i - w~_i| (automatic weights)
+  double energy_interpolation = 0, energy_curvature = 0, energy_g2 = 0, energy_weight = 0;
+  std::size_t bounds_active = 0;     // t_i or lambda_i within 1e-4 of 0 or 1
+};
+
+// ----------------------------------------------------------------------------- residuals
+
+template <class S>
+struct Window {
+  S X[4][2];  // P of blocks i-2..i+1 relative to Q_i
+  S lam[4];
+  S t[4];
+  std::size_t block[4];
+  bool valid[4];
+};
+
+template <class S>
+struct Piece_values {
+  S E0[2], E2[2];  // end points relative to Q_i
+  S w = S(1.0);
+};
+
+/// Seeds slot 4k+c of the window with the unknown c of block i-2+k when `Dual`.
+template <class S> inline S make_var(double v, int) { return S(v); }
+template <> inline Dual<16> make_var<Dual<16>>(double v, int slot) { return Dual<16>::variable(v, slot); }
+
+template <class S>
+void build_window(const Problem& pb, const State& st, std::size_t i, Window<S>& win) {
+  const long n = static_cast<long>(pb.n);
+  for (int k = 0; k < 4; ++k) {
+    long b = static_cast<long>(i) - 2 + k;
+    if (pb.closed) b = ((b % n) + n) % n;
+    win.valid[k] = pb.closed || (b >= 0 && b < n);
+    if (!win.valid[k]) { win.block[k] = 0; continue; }
+    const std::size_t bb = static_cast<std::size_t>(b);
+    win.block[k] = bb;
+    win.X[k][0] = make_var<S>(st.dx[bb], 4 * k + 0) + (pb.qx[bb] - pb.qx[i]);
+    win.X[k][1] = make_var<S>(st.dy[bb], 4 * k + 1) + (pb.qy[bb] - pb.qy[i]);
+    win.lam[k] = make_var<S>(st.lambda[bb], 4 * k + 2);
+    win.t[k] = make_var<S>(st.t[bb], 4 * k + 3);
+  }
+}
+
+/// The clamped minimum-eccentricity weight of eqs. 15-16 for control points E0, P, E2.
+template <class S>
+S automatic_weight(const S* E0, const S* P, const S* E2, double mu, double clamp) {
+  const S ax = E2[0] - E0[0], ay = E2[1] - E0[1];
+  const S bx = E0[0] - P[0], by = E0[1] - P[1];
+  const S cx = E2[0] - P[0], cy = E2[1] - P[1];
+  const S den = 2.0 * (bx * bx + by * by + cx * cx + cy * cy);
+  if (!(value(den) > 0.0)) return S(clamp > 0 ? std::max(clamp, 1.0) : 1.0);
+  const S what = sqrt((ax * ax + ay * ay) / den);  // eq. 15
+  return max_with(mu * what, clamp);                  // eq. 16
+}
+
+/// End points and weight of piece j = i - 2 + k (k = 1 or 2) in the window of block i.
+template <class S>
+void piece_values(const Problem& pb, const State& st, std::size_t i, const Window<S>& win, int k,
+                  Piece_values<S>& pv) {
+  const std::size_t j = win.block[k];
+  if (pb.has_start(j)) {
+    for (int c = 0; c < 2; ++c) pv.E0[c] = (1.0 - win.lam[k]) * win.X[k - 1][c] + win.lam[k] * win.X[k][c];
+  } else {
+    pv.E0[0] = S(pb.sx - pb.qx[i]); pv.E0[1] = S(pb.sy - pb.qy[i]);
+  }
+  if (pb.has_end(j)) {
+    for (int c = 0; c < 2; ++c) pv.E2[c] = (1.0 - win.lam[k + 1]) * win.X[k][c] + win.lam[k + 1] * win.X[k + 1][c];
+  } else {
+    pv.E2[0] = S(pb.ex - pb.qx[i]); pv.E2[1] = S(pb.ey - pb.qy[i]);
+  }
+  switch (pb.mode) {
+    case Weight_mode::unit: pv.w = S(1.0); break;
+    case Weight_mode::fixed: pv.w = S(pb.weight[j]); break;
+    case Weight_mode::automatic:
+      pv.w = automatic_weight(pv.E0, win.X[k], pv.E2, pb.tension[j], pb.clamp);
+      break;
+  }
+  (void)st;
+}
+
+/// The four residuals of block i (see the file comment). If `w_out` is given it receives w_i.
+template <class S>
+void block_residuals(const Problem& pb, const State& st, std::size_t i, const Window<S>& win, S r[4],
+                     double* w_out = nullptr) {
+  Piece_values<S> pc;
+  piece_values(pb, st, i, win, 2, pc);
+  if (w_out) *w_out = value(pc.w);
+  const S& t = win.t[2];
+  const S u = 1.0 - t;
+  const S b0 = u * u, b1 = 2.0 * u * t * pc.w, b2 = t * t;
+  const S den = b0 + b1 + b2;
+  // eq. 8 (with eq. 9 substituted: eq. 18), Q_i is the local origin.
+  r[0] = (b0 * pc.E0[0] + b1 * win.X[2][0] + b2 * pc.E2[0]) / den;
+  r[1] = (b0 * pc.E0[1] + b1 * win.X[2][1] + b2 * pc.E2[1]) / den;
+  // eq. 7
+  const S A = pc.E0[0] * pc.E0[0] + pc.E0[1] * pc.E0[1];
+  const S B = pc.E0[0] * pc.E2[0] + pc.E0[1] * pc.E2[1];
+  const S C = pc.E2[0] * pc.E2[0] + pc.E2[1] * pc.E2[1];
+  const S f = -pc.w * A * (u * u * u * u) - (A + B) * (u * u * u * t) + (B + C) * (u * t * t * t) +
+              pc.w * C * (t * t * t * t);
+  const S AC = A + C;
+  r[2] = value(AC) > 0.0 ? f / AC : S(0.0);
+  // |kappa| continuity at the join between pieces i-1 and i (eqs. 5, 10).
+  if (pb.has_start(i)) {
+    Piece_values<S> pp;
+    piece_values(pb, st, i, win, 1, pp);
+    const std::size_t jm = win.block[1];
+    S fac1(1.0), Apx, Apy;
+    if (pb.has_start(jm)) { fac1 = 1.0 - win.lam[1]; Apx = win.X[0][0]; Apy = win.X[0][1]; }
+    else { Apx = S(pb.sx - pb.qx[i]); Apy = S(pb.sy - pb.qy[i]); }
+    S fac2(1.0), Anx, Any;
+    if (pb.has_end(i)) { fac2 = win.lam[3]; Anx = win.X[3][0]; Any = win.X[3][1]; }
+    else { Anx = S(pb.ex - pb.qx[i]); Any = S(pb.ey - pb.qy[i]); }
+    const S* X1 = win.X[1];
+    const S* X2 = win.X[2];
+    const S cr1 = (Apx - X1[0]) * (X2[1] - X1[1]) - (Apy - X1[1]) * (X2[0] - X1[0]);
+    const S cr2 = (X1[0] - X2[0]) * (Any - X2[1]) - (X1[1] - X2[1]) * (Anx - X2[0]);
+    const S& lam = win.lam[2];
+    const S k1 = fac1 * abs(cr1) / (pp.w * pp.w * lam * lam);
+    const S k2 = fac2 * abs(cr2) / (pc.w * pc.w * (1.0 - lam) * (1.0 - lam));
+    const S sum = k1 + k2;
+    r[3] = value(sum) > 0.0 ? (k1 - k2) / sum : S(0.0);
+  } else {
+    r[3] = win.lam[2] - 0.5;
+  }
+}
+
+/// All residuals in double; returns max |r| and fills the per-kind maxima/energies.
+inline double evaluate(const Problem& pb, const State& st, std::vector<double>& F, Solve_result* res = nullptr,
+                       std::vector<double>* weights = nullptr) {
+  F.resize(4 * pb.n);
+  double mx = 0;
+  if (res) {
+    res->interpolation_residual = res->curvature_residual = res->g2_residual = 0;
+    res->energy_interpolation = res->energy_curvature = res->energy_g2 = 0;
+  }
+  Window<double> win;
+  for (std::size_t i = 0; i < pb.n; ++i) {
+    build_window(pb, st, i, win);
+    double r[4], w = 1;
+    block_residuals(pb, st, i, win, r, &w);
+    if (weights) (*weights)[i] = w;
+    for (int c = 0; c < 4; ++c) {
+      F[4 * i + c] = r[c];
+      const double a = std::abs(r[c]);
+      mx = (a > mx || std::isnan(a)) ? a : mx;
+    }
+    if (res) {
+      const double ip = std::hypot(r[0], r[1]);
+      res->interpolation_residual = std::max(res->interpolation_residual, ip);
+      res->curvature_residual = std::max(res->curvature_residual, std::abs(r[2]));
+      res->energy_interpolation += r[0] * r[0] + r[1] * r[1];
+      res->energy_curvature += r[2] * r[2];
+      if (pb.has_start(i)) {
+        res->g2_residual = std::max(res->g2_residual, std::abs(r[3]));
+        res->energy_g2 += r[3] * r[3];
+      }
+    }
+  }
+  return mx;
+}
+
+} // namespace kappa
+} // namespace internal
+} // namespace fair
+
+#endif // FAIR_INTERNAL_KAPPA_SYSTEM_H
