@@ -95,12 +95,29 @@ struct Piece_values {
   S w = S(1.0);
 };
 
-/// Seeds slot 4k+c of the window with the unknown c of block i-2+k when `Dual`.
-template <class S> inline S make_var(double v, int) { return S(v); }
-template <> inline Dual<16> make_var<Dual<16>>(double v, int slot) { return Dual<16>::variable(v, slot); }
+/// Which unknowns of a window carry derivatives: unknown c (x, y, lambda, t) of window block k
+/// is derivative direction slot[k][c] of a Dual number, or a constant when -1.
+struct Window_seeding {
+  int slot[4][4];
+  /// All 16 unknowns, slot 4k+c.
+  static Window_seeding all() {
+    Window_seeding s;
+    for (int k = 0; k < 4; ++k)
+      for (int c = 0; c < 4; ++c) s.slot[k][c] = 4 * k + c;
+    return s;
+  }
+};
+
+template <class S> struct Seed {
+  static S variable(double v, int) { return S(v); }
+};
+template <int N> struct Seed<Dual<N>> {
+  static Dual<N> variable(double v, int slot) { return slot < 0 ? Dual<N>(v) : Dual<N>::variable(v, slot); }
+};
 
 template <class S>
-void build_window(const Problem& pb, const State& st, std::size_t i, Window<S>& win) {
+void build_window(const Problem& pb, const State& st, std::size_t i, Window<S>& win,
+                  const Window_seeding& seeding = Window_seeding::all()) {
   const long n = static_cast<long>(pb.n);
   for (int k = 0; k < 4; ++k) {
     long b = static_cast<long>(i) - 2 + k;
@@ -108,11 +125,12 @@ void build_window(const Problem& pb, const State& st, std::size_t i, Window<S>& 
     win.valid[k] = pb.closed || (b >= 0 && b < n);
     if (!win.valid[k]) { win.block[k] = 0; continue; }
     const std::size_t bb = static_cast<std::size_t>(b);
+    const int* slot = seeding.slot[k];
     win.block[k] = bb;
-    win.X[k][0] = make_var<S>(st.dx[bb], 4 * k + 0) + (pb.qx[bb] - pb.qx[i]);
-    win.X[k][1] = make_var<S>(st.dy[bb], 4 * k + 1) + (pb.qy[bb] - pb.qy[i]);
-    win.lam[k] = make_var<S>(st.lambda[bb], 4 * k + 2);
-    win.t[k] = make_var<S>(st.t[bb], 4 * k + 3);
+    win.X[k][0] = Seed<S>::variable(st.dx[bb], slot[0]) + (pb.qx[bb] - pb.qx[i]);
+    win.X[k][1] = Seed<S>::variable(st.dy[bb], slot[1]) + (pb.qy[bb] - pb.qy[i]);
+    win.lam[k] = Seed<S>::variable(st.lambda[bb], slot[2]);
+    win.t[k] = Seed<S>::variable(st.t[bb], slot[3]);
   }
 }
 
@@ -126,6 +144,17 @@ S automatic_weight(const S* E0, const S* P, const S* E2, double mu, double clamp
   if (!(value(den) > 0.0)) return S(clamp > 0 ? std::max(clamp, 1.0) : 1.0);
   const S what = sqrt((ax * ax + ay * ay) / den);  // eq. 15
   return max_with(mu * what, clamp);                  // eq. 16
+}
+
+/// The weight of piece j with control points E0, P, E2: 1, the user's, or eq. 16.
+template <class S>
+S piece_weight(const Problem& pb, std::size_t j, const S* E0, const S* P, const S* E2) {
+  switch (pb.mode) {
+    case Weight_mode::fixed: return S(pb.weight[j]);
+    case Weight_mode::automatic: return automatic_weight(E0, P, E2, pb.tension[j], pb.clamp);
+    case Weight_mode::unit: break;
+  }
+  return S(1.0);
 }
 
 /// End points and weight of piece j = i - 2 + k (k = 1 or 2) in the window of block i.
@@ -143,14 +172,61 @@ void piece_values(const Problem& pb, const State& st, std::size_t i, const Windo
   } else {
     pv.E2[0] = S(pb.ex - pb.qx[i]); pv.E2[1] = S(pb.ey - pb.qy[i]);
   }
-  switch (pb.mode) {
-    case Weight_mode::unit: pv.w = S(1.0); break;
-    case Weight_mode::fixed: pv.w = S(pb.weight[j]); break;
-    case Weight_mode::automatic:
-      pv.w = automatic_weight(pv.E0, win.X[k], pv.E2, pb.tension[j], pb.clamp);
-      break;
-  }
+  pv.w = piece_weight(pb, j, pv.E0, win.X[k], pv.E2);
   (void)st;
+}
+
+/// The weight of piece j = i - 2 + k (k = 1 or 2) in the window of block i (its end points are
+/// formed only when the weight depends on them).
+template <class S>
+S window_piece_weight(const Problem& pb, const State& st, std::size_t i, const Window<S>& win, int k) {
+  if (pb.mode != Weight_mode::automatic) return piece_weight<S>(pb, win.block[k], nullptr, nullptr, nullptr);
+  Piece_values<S> pv;
+  piece_values(pb, st, i, win, k, pv);
+  return pv.w;
+}
+
+/// Residuals r_0, r_1 (eq. 18 as a distance) and r_2 (eq. 7 over A + C) of a piece with
+/// control points E0, X, E2 relative to the interpolated point, parameter t and weight w.
+template <class S>
+void piece_residuals(const S* E0, const S* X, const S* E2, const S& t, const S& w, S r[3]) {
+  const S u = 1.0 - t;
+  const S b0 = u * u, b1 = 2.0 * u * t * w, b2 = t * t;
+  const S den = b0 + b1 + b2;
+  // eq. 8 (with eq. 9 substituted: eq. 18), Q_i is the local origin.
+  r[0] = (b0 * E0[0] + b1 * X[0] + b2 * E2[0]) / den;
+  r[1] = (b0 * E0[1] + b1 * X[1] + b2 * E2[1]) / den;
+  // eq. 7
+  const S A = E0[0] * E0[0] + E0[1] * E0[1];
+  const S B = E0[0] * E2[0] + E0[1] * E2[1];
+  const S C = E2[0] * E2[0] + E2[1] * E2[1];
+  const S f = -w * A * (u * u * u * u) - (A + B) * (u * u * u * t) + (B + C) * (u * t * t * t) + w * C * (t * t * t * t);
+  const S AC = A + C;
+  r[2] = value(AC) > 0.0 ? f / AC : S(0.0);
+}
+
+/// Residual r_3 of block i: |kappa| continuity at the join between pieces i-1 and i (eqs. 5,
+/// 10), given the weight wc of piece i; lambda_0 - 1/2 for the first block of an open curve.
+template <class S>
+S join_residual(const Problem& pb, const State& st, std::size_t i, const Window<S>& win, const S& wc) {
+  if (!pb.has_start(i)) return win.lam[2] - 0.5;
+  const S wp = window_piece_weight(pb, st, i, win, 1);
+  const std::size_t jm = win.block[1];
+  S fac1(1.0), Apx, Apy;
+  if (pb.has_start(jm)) { fac1 = 1.0 - win.lam[1]; Apx = win.X[0][0]; Apy = win.X[0][1]; }
+  else { Apx = S(pb.sx - pb.qx[i]); Apy = S(pb.sy - pb.qy[i]); }
+  S fac2(1.0), Anx, Any;
+  if (pb.has_end(i)) { fac2 = win.lam[3]; Anx = win.X[3][0]; Any = win.X[3][1]; }
+  else { Anx = S(pb.ex - pb.qx[i]); Any = S(pb.ey - pb.qy[i]); }
+  const S* X1 = win.X[1];
+  const S* X2 = win.X[2];
+  const S cr1 = (Apx - X1[0]) * (X2[1] - X1[1]) - (Apy - X1[1]) * (X2[0] - X1[0]);
+  const S cr2 = (X1[0] - X2[0]) * (Any - X2[1]) - (X1[1] - X2[1]) * (Anx - X2[0]);
+  const S& lam = win.lam[2];
+  const S k1 = fac1 * abs(cr1) / (wp * wp * lam * lam);
+  const S k2 = fac2 * abs(cr2) / (wc * wc * (1.0 - lam) * (1.0 - lam));
+  const S sum = k1 + k2;
+  return value(sum) > 0.0 ? (k1 - k2) / sum : S(0.0);
 }
 
 /// The four residuals of block i (see the file comment). If `w_out` is given it receives w_i.
@@ -160,44 +236,8 @@ void block_residuals(const Problem& pb, const State& st, std::size_t i, const Wi
   Piece_values<S> pc;
   piece_values(pb, st, i, win, 2, pc);
   if (w_out) *w_out = value(pc.w);
-  const S& t = win.t[2];
-  const S u = 1.0 - t;
-  const S b0 = u * u, b1 = 2.0 * u * t * pc.w, b2 = t * t;
-  const S den = b0 + b1 + b2;
-  // eq. 8 (with eq. 9 substituted: eq. 18), Q_i is the local origin.
-  r[0] = (b0 * pc.E0[0] + b1 * win.X[2][0] + b2 * pc.E2[0]) / den;
-  r[1] = (b0 * pc.E0[1] + b1 * win.X[2][1] + b2 * pc.E2[1]) / den;
-  // eq. 7
-  const S A = pc.E0[0] * pc.E0[0] + pc.E0[1] * pc.E0[1];
-  const S B = pc.E0[0] * pc.E2[0] + pc.E0[1] * pc.E2[1];
-  const S C = pc.E2[0] * pc.E2[0] + pc.E2[1] * pc.E2[1];
-  const S f = -pc.w * A * (u * u * u * u) - (A + B) * (u * u * u * t) + (B + C) * (u * t * t * t) +
-              pc.w * C * (t * t * t * t);
-  const S AC = A + C;
-  r[2] = value(AC) > 0.0 ? f / AC : S(0.0);
-  // |kappa| continuity at the join between pieces i-1 and i (eqs. 5, 10).
-  if (pb.has_start(i)) {
-    Piece_values<S> pp;
-    piece_values(pb, st, i, win, 1, pp);
-    const std::size_t jm = win.block[1];
-    S fac1(1.0), Apx, Apy;
-    if (pb.has_start(jm)) { fac1 = 1.0 - win.lam[1]; Apx = win.X[0][0]; Apy = win.X[0][1]; }
-    else { Apx = S(pb.sx - pb.qx[i]); Apy = S(pb.sy - pb.qy[i]); }
-    S fac2(1.0), Anx, Any;
-    if (pb.has_end(i)) { fac2 = win.lam[3]; Anx = win.X[3][0]; Any = win.X[3][1]; }
-    else { Anx = S(pb.ex - pb.qx[i]); Any = S(pb.ey - pb.qy[i]); }
-    const S* X1 = win.X[1];
-    const S* X2 = win.X[2];
-    const S cr1 = (Apx - X1[0]) * (X2[1] - X1[1]) - (Apy - X1[1]) * (X2[0] - X1[0]);
-    const S cr2 = (X1[0] - X2[0]) * (Any - X2[1]) - (X1[1] - X2[1]) * (Anx - X2[0]);
-    const S& lam = win.lam[2];
-    const S k1 = fac1 * abs(cr1) / (pp.w * pp.w * lam * lam);
-    const S k2 = fac2 * abs(cr2) / (pc.w * pc.w * (1.0 - lam) * (1.0 - lam));
-    const S sum = k1 + k2;
-    r[3] = value(sum) > 0.0 ? (k1 - k2) / sum : S(0.0);
-  } else {
-    r[3] = win.lam[2] - 0.5;
-  }
+  piece_residuals(pc.E0, win.X[2], pc.E2, win.t[2], pc.w, r);
+  r[3] = join_residual(pb, st, i, win, pc.w);
 }
 
 /// All residuals in double; returns max |r| and fills the per-kind maxima/energies.

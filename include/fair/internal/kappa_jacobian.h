@@ -1,0 +1,173 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// The Jacobian of the kappa-curve system (kappa_system.h), block row by block row: the four
+// residuals of block i and their derivatives with respect to the 16 unknowns of the blocks
+// i-2, i-1, i, i+1 (window slot k = block i-2+k, unknown c = x, y, lambda, t at column 4k+c).
+//
+// Accuracy: exact to rounding (forward-mode automatic differentiation, kappa_dual.h, through
+// the same templates that evaluate the residuals, so value and derivative cannot disagree;
+// checked against a differentiation over all 16 unknowns in test_kappa_solver.cpp).
+// Degenerate cases: abs() and the clamp of eq. 16 contribute the derivative of the active
+// branch; residuals defined as 0 at a degenerate configuration (kappa_system.h) have a zero
+// gradient there.
+
+#ifndef FAIR_INTERNAL_KAPPA_JACOBIAN_H
+#define FAIR_INTERNAL_KAPPA_JACOBIAN_H
+
+#include <fair/internal/kappa_dual.h>
+#include <fair/internal/kappa_system.h>
+
+#include <cmath>
+#include <cstddef>
+
+namespace fair {
+namespace internal {
+namespace kappa {
+
+/// Scratch space of block_jacobian.
+struct Jacobian_workspace {
+  Window<double> values;
+};
+
+/// Adds to the Jacobian row J the gradient g = d(.)/d(E0, P, E2) of a quantity of the piece of
+/// window block k (P = X[k]), through eq. 9: E0 = (1 - lambda_k) X[k-1] + lambda_k X[k] (when
+/// the piece has a start join) and E2 = (1 - lambda_{k+1}) X[k] + lambda_{k+1} X[k+1] (when it
+/// has an end join); fixed end points of open curves are constants.
+inline void add_piece_gradient(const Window<double>& win, int k, bool start, bool end, const double* g, double* J) {
+  const double lam = win.lam[k];
+  for (int c = 0; c < 2; ++c) {
+    J[4 * k + c] += g[2 + c];
+    if (start) {
+      J[4 * (k - 1) + c] += (1.0 - lam) * g[c];
+      J[4 * k + c] += lam * g[c];
+      J[4 * k + 2] += (win.X[k][c] - win.X[k - 1][c]) * g[c];
+    }
+    if (end) {
+      const double lam_next = win.lam[k + 1];
+      J[4 * k + c] += (1.0 - lam_next) * g[4 + c];
+      J[4 * (k + 1) + c] += lam_next * g[4 + c];
+      J[4 * (k + 1) + 2] += (win.X[k + 1][c] - win.X[k][c]) * g[4 + c];
+    }
+  }
+}
+
+/// Weight of the piece of window block k and its gradient with respect to (E0, P, E2)
+/// (zero unless the weights are automatic).
+inline double piece_weight_gradient(const Problem& pb, const State& st, std::size_t i, const Window<double>& win,
+                                    int k, double g[6]) {
+  for (int c = 0; c < 6; ++c) g[c] = 0.0;
+  if (pb.mode != Weight_mode::automatic) return window_piece_weight(pb, st, i, win, k);
+  Piece_values<double> pv;
+  piece_values(pb, st, i, win, k, pv);
+  typedef Dual<6> D6;
+  D6 E0[2], X[2], E2[2];
+  for (int c = 0; c < 2; ++c) {
+    E0[c] = D6::variable(pv.E0[c], c);
+    X[c] = D6::variable(win.X[k][c], 2 + c);
+    E2[c] = D6::variable(pv.E2[c], 4 + c);
+  }
+  const D6 w = piece_weight(pb, win.block[k], E0, X, E2);
+  for (int c = 0; c < 6; ++c) g[c] = w.d[c];
+  return w.v;
+}
+
+/// Residuals r[e] of block i and J[e][4k+c] = d r[e] / d (unknown c of block i-2+k); columns
+/// of blocks that do not exist (open curves) are zero.
+///  - r_0..r_2 depend on the unknowns only through the piece's control points E0, P_i, E2 and
+///    t_i (and the weight, a function of those): automatic differentiation in these 7
+///    directions, then the chain rule through eq. 9 (add_piece_gradient);
+///  - r_3 = (k1 - k2) / (k1 + k2) (kappa_system.h, join_residual) is differentiated by hand:
+///    dr_3 = 2 (k2 dk1 - k1 dk2) / (k1 + k2)^2 with k1 = fac1 |cr1| / (w_{i-1}^2 lambda_i^2),
+///    k2 = fac2 |cr2| / (w_i^2 (1 - lambda_i)^2), cr1, cr2 the cross products of eq. 10.
+inline void block_jacobian(const Problem& pb, const State& st, std::size_t i, Jacobian_workspace& ws, double r[4],
+                           double J[4][16]) {
+  for (int e = 0; e < 4; ++e)
+    for (int c = 0; c < 16; ++c) J[e][c] = 0.0;
+  Window<double>& win = ws.values;
+  build_window(pb, st, i, win);
+  Piece_values<double> pv;
+  piece_values(pb, st, i, win, 2, pv);
+  const bool start = pb.has_start(i), end = pb.has_end(i);
+  // r_0..r_2 over (E0, P_i, E2, t_i).
+  typedef Dual<7> D7;
+  D7 E0[2], X[2], E2[2];
+  for (int c = 0; c < 2; ++c) {
+    E0[c] = D7::variable(pv.E0[c], c);
+    X[c] = D7::variable(win.X[2][c], 2 + c);
+    E2[c] = D7::variable(pv.E2[c], 4 + c);
+  }
+  const D7 t = D7::variable(win.t[2], 6);
+  const D7 w = piece_weight(pb, i, E0, X, E2);
+  D7 rp[3];
+  piece_residuals(E0, X, E2, t, w, rp);
+  for (int e = 0; e < 3; ++e) {
+    r[e] = rp[e].v;
+    add_piece_gradient(win, 2, start, end, rp[e].d.data(), J[e]);
+    J[e][11] = rp[e].d[6];
+  }
+  if (!start) {
+    r[3] = win.lam[2] - 0.5;
+    J[3][10] = 1.0;
+    return;
+  }
+  // r_3: value as join_residual computes it, gradient by hand.
+  const double wc = w.v;
+  r[3] = join_residual(pb, st, i, win, wc);
+  const std::size_t jm = win.block[1];
+  const bool prev_start = pb.has_start(jm);
+  double gwp[6];
+  const double wp = piece_weight_gradient(pb, st, i, win, 1, gwp);
+  const double* X1 = win.X[1];
+  const double* X2 = win.X[2];
+  double Ap[2], An[2], fac1 = 1.0, fac2 = 1.0;
+  if (prev_start) { fac1 = 1.0 - win.lam[1]; Ap[0] = win.X[0][0]; Ap[1] = win.X[0][1]; }
+  else { Ap[0] = pb.sx - pb.qx[i]; Ap[1] = pb.sy - pb.qy[i]; }
+  if (end) { fac2 = win.lam[3]; An[0] = win.X[3][0]; An[1] = win.X[3][1]; }
+  else { An[0] = pb.ex - pb.qx[i]; An[1] = pb.ey - pb.qy[i]; }
+  const double u1[2] = {Ap[0] - X1[0], Ap[1] - X1[1]}, v1[2] = {X2[0] - X1[0], X2[1] - X1[1]};
+  const double u2[2] = {X1[0] - X2[0], X1[1] - X2[1]}, v2[2] = {An[0] - X2[0], An[1] - X2[1]};
+  const double cr1 = u1[0] * v1[1] - u1[1] * v1[0];
+  const double cr2 = u2[0] * v2[1] - u2[1] * v2[0];
+  const double lam = win.lam[2];
+  const double s1 = 1.0 / (wp * wp * lam * lam), s2 = 1.0 / (wc * wc * (1.0 - lam) * (1.0 - lam));
+  const double k1 = fac1 * std::abs(cr1) * s1, k2 = fac2 * std::abs(cr2) * s2;
+  const double sum = k1 + k2;
+  if (!(sum > 0.0)) return;  // r_3 is defined as 0 there, with a zero gradient
+  double dk1[16] = {}, dk2[16] = {};
+  // d|cr1|: cr1 = u1 x v1 with u1 = Ap - X1, v1 = X2 - X1 (abs: derivative of the active branch).
+  const double c1 = fac1 * (cr1 < 0 ? -1.0 : 1.0) * s1;
+  const double gAp[2] = {v1[1], -v1[0]}, gX2[2] = {-u1[1], u1[0]};
+  for (int c = 0; c < 2; ++c) {
+    if (prev_start) dk1[c] += c1 * gAp[c];
+    dk1[4 + c] -= c1 * (gAp[c] + gX2[c]);
+    dk1[8 + c] += c1 * gX2[c];
+  }
+  if (prev_start) dk1[6] -= std::abs(cr1) * s1;          // fac1 = 1 - lambda_{i-1}
+  dk1[10] -= 2.0 * k1 / lam;                              // lambda_i^-2
+  double gw[16] = {};
+  add_piece_gradient(win, 1, prev_start, true, gwp, gw);  // w_{i-1}^-2
+  for (int c = 0; c < 16; ++c) dk1[c] -= 2.0 * k1 / wp * gw[c];
+  // d|cr2|: cr2 = u2 x v2 with u2 = X1 - X2, v2 = An - X2.
+  const double c2 = fac2 * (cr2 < 0 ? -1.0 : 1.0) * s2;
+  const double gX1[2] = {v2[1], -v2[0]}, gAn[2] = {-u2[1], u2[0]};
+  for (int c = 0; c < 2; ++c) {
+    dk2[4 + c] += c2 * gX1[c];
+    dk2[8 + c] -= c2 * (gX1[c] + gAn[c]);
+    if (end) dk2[12 + c] += c2 * gAn[c];
+  }
+  if (end) dk2[14] += std::abs(cr2) * s2;                 // fac2 = lambda_{i+1}
+  dk2[10] += 2.0 * k2 / (1.0 - lam);                      // (1 - lambda_i)^-2
+  if (pb.mode == Weight_mode::automatic) {
+    for (int c = 0; c < 16; ++c) gw[c] = 0.0;
+    add_piece_gradient(win, 2, start, end, w.d.data(), gw);  // w_i^-2
+    for (int c = 0; c < 16; ++c) dk2[c] -= 2.0 * k2 / wc * gw[c];
+  }
+  const double f = 2.0 / (sum * sum);
+  for (int c = 0; c < 16; ++c) J[3][c] = f * (k2 * dk1[c] - k1 * dk2[c]);
+}
+
+} // namespace kappa
+} // namespace internal
+} // namespace fair
+
+#endif // FAIR_INTERNAL_KAPPA_JACOBIAN_H
