@@ -1,15 +1,20 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // Demo cases of rational kappa-curves (fair::Kappa_curve_2; Yan, Schiller, Schaefer): Fig. 3
-// (uniform weights 0.6, 1, 2 and the automatic weights on the same points), Fig. 9 (a cusp
-// forming as two points approach) and Fig. 12 (circle reproduction from non-uniform points on a
-// circle, and the failure case with a central angle above pi).
+// (uniform weights 0.6, 1, 2 and the automatic weights on the same points), Figs. 5 and 6
+// (minimum-eccentricity weights without and with the clamp of eq. 16 against the polynomial
+// kappa-curve, on concave and on overlapping convex shapes), Fig. 9 (a cusp forming as two points
+// approach) and Fig. 12 (circle reproduction from non-uniform points on a circle, and the failure
+// case with a central angle above pi). Every case lists the solve report and the curvature
+// variation int (dkappa/ds)^2 ds, the paper's measure of fairness (Sec. 7).
 
 #include "registry.h"
 #include "tool_common.h"
 
+#include <fair/Fairness_metrics.h>
 #include <fair/Kappa_curve_2.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -29,6 +34,8 @@ void add_kappa_case(fair::io::Gallery& gallery, const std::vector<Point_2>& poin
   fair_curves::Curve_case c;
   c.title = title;
   c.caption = caption;
+  if (!curve.report().converged)
+    c.caption += " The solve did not converge (see the report below): the curve shown is its last iterate.";
   c.input_points = fair::io::to_xy(points);
   c.samples_per_piece = 96;
   for (std::size_t j = 0; j < curve.number_of_pieces(); ++j)
@@ -43,6 +50,34 @@ void add_kappa_case(fair::io::Gallery& gallery, const std::vector<Point_2>& poin
     wmax = std::max(wmax, curve.weight(j));
   }
   c.measurements.emplace_back("weights", fair_curves::format_number(wmin, 4) + " .. " + fair_curves::format_number(wmax, 4));
+  if (o.weights == fair::Kappa_weights::AUTOMATIC) {
+    // How many weights sit on the lower clamp of eq. 16: with a tiny clamp standing in for the
+    // unclamped eq. 15, 0 means the clamp did not act at all.
+    std::size_t on_clamp = 0;
+    for (std::size_t j = 0; j < curve.number_of_pieces(); ++j)
+      if (curve.weight(j) <= o.weight_clamp * (1 + 1e-9)) ++on_clamp;
+    c.measurements.emplace_back("weights on the clamp " + fair_curves::format_number(o.weight_clamp, 3),
+                                std::to_string(on_clamp) + " of " + std::to_string(curve.number_of_pieces()));
+  }
+  // The fairness measure of Sec. 7, per piece (the jump of the curvature sign at an inflection
+  // join is not counted), and the range of the signed curvature over 64 samples per piece. A
+  // singular piece (a cusp) has no curvature: say so instead of failing the gallery.
+  try {
+    const fair::Quadrature_estimate cv = fair::curvature_variation_energy(curve.pieces());
+    c.measurements.emplace_back("curvature variation int (dk/ds)^2 ds",
+                                fair_curves::format_number(cv.value, 4) + " (error estimate " +
+                                    fair_curves::format_number(cv.error_bound, 2) + ")");
+    const std::vector<fair::Curvature_sample> prof = fair::curvature_profile(curve.pieces(), 64);
+    double kmin = prof.front().curvature, kmax = kmin;
+    for (const fair::Curvature_sample& s : prof) {
+      kmin = std::min(kmin, s.curvature);
+      kmax = std::max(kmax, s.curvature);
+    }
+    c.measurements.emplace_back("curvature range (samples)",
+                                fair_curves::format_number(kmin, 4) + " .. " + fair_curves::format_number(kmax, 4));
+  } catch (const fair::Error& e) {
+    c.measurements.emplace_back("curvature variation", std::string("not computed: ") + e.what());
+  }
   gallery.add_case(fair_curves::make_gallery_case(curve.pieces(), c));
 }
 
@@ -50,6 +85,62 @@ std::vector<Point_2> on_circle(const std::vector<double>& degrees) {
   std::vector<Point_2> p;
   for (double d : degrees) p.push_back(Point_2(std::cos(d * M_PI / 180), std::sin(d * M_PI / 180)));
   return p;
+}
+
+/// Figs. 5 and 6: the same points with (left) the minimum-eccentricity weights of eq. 15,
+/// (middle) the clamped weights of eq. 16 (clamp 1/2) and (right) unit weights (the polynomial
+/// kappa-curve). Kappa_curve_options::weight_clamp must be > 0, so "unclamped" is the clamp
+/// 1e-3: the solver handles it on these shapes, and the "weights on the clamp" line shows
+/// whether it acted at all (it does not on any of these inputs: there the weights are exactly
+/// those of eq. 15).
+void add_comparison_row(fair::io::Gallery& gallery, const std::vector<Point_2>& points, const std::string& figure,
+                        const std::string& shape) {
+  const double unclamped = 1e-3;
+  for (int k = 0; k < 3; ++k) {
+    fair::Kappa_curve_options o;
+    o.closed = true;
+    o.weights = k < 2 ? fair::Kappa_weights::AUTOMATIC : fair::Kappa_weights::UNIT;
+    if (k == 0) o.weight_clamp = unclamped;
+    static const char* const what[3] = {"min-eccentricity weights (eq. 15; clamp 1e-3 stands in for none)",
+                                        "clamped min-eccentricity weights (eq. 16, clamp 1/2)",
+                                        "original kappa-curve (weights 1)"};
+    static const char* const note[3] = {
+        " The paper's left column: weights may go below 1/2, reproducing circles wherever the points allow.",
+        " The paper's middle column.", " The paper's right column (the polynomial kappa-curve)."};
+    add_kappa_case(gallery, points, o, figure + ": " + what[k], shape + note[k]);
+  }
+}
+
+void add_eccentricity_comparisons(fair::io::Gallery& gallery) {
+  // We do not have the coordinates of the paper's figures: these inputs are our own and show the
+  // same situations. Fig. 5: a closed cross-like shape with four concave corners (the inner
+  // points), so the curve has inflections between the convex arms and the concave corners.
+  const std::vector<Point_2> cross = {Point_2(1, 0),   Point_2(3, 0),   Point_2(3, 1),   Point_2(4, 1.2),
+                                      Point_2(4, 2.5), Point_2(3, 2.8), Point_2(3, 4),   Point_2(1, 4),
+                                      Point_2(1, 2.8), Point_2(0, 2.5), Point_2(0, 1.2), Point_2(1, 1)};
+  add_comparison_row(gallery, cross, "Fig. 5",
+                     "Twelve points of a cross with four concave corners (our own points; the paper's are not "
+                     "published).");
+  // Fig. 6: mostly convex, overlapping curves: five points visited in pentagram order, so that
+  // the curve turns one way throughout and winds twice around the centre. Top: the points lie on
+  // the unit circle at non-uniform angles (90, 240, 15, 165, 300 degrees), each consecutive pair
+  // 135 to 150 degrees apart, so the pieces of a circle span about 144 degrees and need the
+  // weights cos(72 degrees) ~ 0.31 < 1/2: the minimum-eccentricity weights reproduce the doubly
+  // covered circle, which the clamp 1/2 forbids (Sec. 4.4.1).
+  // Bottom: the same pentagram with radii 0.9 to 1.15.
+  std::vector<Point_2> pentagram, pentagram_radii;
+  const double angle[5] = {90, 240, 15, 165, 300}, radius[5] = {1, 1.15, 0.9, 1.1, 1};
+  for (int i = 0; i < 5; ++i) {
+    const double a = angle[i] * M_PI / 180;
+    pentagram.push_back(Point_2(std::cos(a), std::sin(a)));
+    pentagram_radii.push_back(Point_2(radius[i] * std::cos(a), radius[i] * std::sin(a)));
+  }
+  add_comparison_row(gallery, pentagram, "Fig. 6",
+                     "Five points on the unit circle in pentagram order at 90, 240, 15, 165, 300 degrees: a "
+                     "convex curve winding twice (our own points).");
+  add_comparison_row(gallery, pentagram_radii, "Fig. 6, radii 0.9 to 1.15",
+                     "The same pentagram with the radii 1, 1.15, 0.9, 1.1, 1: no longer co-circular (our own "
+                     "points).");
 }
 
 } // namespace
@@ -91,6 +182,7 @@ void add_kappa_cases(fair::io::Gallery& gallery) {
     add_kappa_case(gallery, circle4, o, "Fig. 3: weights 1, co-circular points",
                    "The same four co-circular points with unit weights (polynomial kappa-curve): not a circle.");
   }
+  add_eccentricity_comparisons(gallery);
   // Fig. 9: the 2nd and 4th points approach each other: a cusp forms at the 3rd (an input point).
   for (double d : {0.6, 0.15, 0.02}) {
     const std::vector<Point_2> p = {Point_2(-2, 0), Point_2(-d, 1), Point_2(0, 2.5), Point_2(d, 1), Point_2(2, 0)};

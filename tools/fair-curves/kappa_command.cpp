@@ -3,7 +3,8 @@
 // fair-curves kappa: the (rational) kappa-curve through a point file (fair::Kappa_curve_2;
 // Yan, Schiller, Schaefer; doc/kappa_curves.md). Weights: "1" (polynomial kappa-curves),
 // "auto" (clamped minimum-eccentricity weights, eq. 16, optional per-point tension file) or a
-// number W used for every point. Writes the pieces and the solve report as JSON and a figure.
+// number W used for every point; with "auto", --clamp sets the lower clamp of eq. 16 (default
+// 1/2). Writes the pieces and the solve report as JSON and a figure.
 
 #include "registry.h"
 #include "tool_common.h"
@@ -23,8 +24,9 @@
 namespace {
 
 struct Kappa_command_options {
-  std::string input, weights = "1", tension_file, json_out, svg_out;
+  std::string input, weights = "1", tension_file, clamp, json_out, svg_out;
   bool closed = false;
+  bool clamp_given = false; // --clamp appeared (even with an empty value, which is then rejected)
 };
 
 /// One number per non-empty line ('#' starts a comment); Parse_error names FILE:LINE.
@@ -69,6 +71,15 @@ void run_kappa(const Kappa_command_options& o) {
   }
   if (!o.tension_file.empty() && options.weights != fair::Kappa_weights::AUTOMATIC)
     throw CLI::ValidationError("--tension", "tension applies to --weights auto only");
+  if (o.clamp_given) {
+    if (options.weights != fair::Kappa_weights::AUTOMATIC)
+      throw CLI::ValidationError("--clamp", "the weight clamp applies to --weights auto only");
+    // option_number rejects NaN, inf and text that is not a number; the clamp of eq. 16 must
+    // moreover be > 0 (eq. 15 alone gives weights -> 0 as a piece degenerates, Sec. 4.4.1).
+    options.weight_clamp = option_number(o.clamp, "--clamp");
+    if (!(options.weight_clamp > 0))
+      throw CLI::ValidationError("--clamp", "expected a weight clamp > 0, got '" + o.clamp + "'");
+  }
   const fair::io::Point_file<Kernel> data = fair::io::read_point_file<Kernel>(o.input);
   options.closed = o.closed || data.closed;
   fair::io::check_point_file(data, 3, options.closed, "fair-curves kappa");
@@ -90,6 +101,9 @@ void run_kappa(const Kappa_command_options& o) {
     const nlohmann::json j{{"method", "kappa"},
                            {"closed", options.closed},
                            {"weights", o.weights},
+                           {"weight_clamp", options.weights == fair::Kappa_weights::AUTOMATIC
+                                                ? nlohmann::json(options.weight_clamp)
+                                                : nlohmann::json(nullptr)},
                            {"converged", r.converged},
                            {"iterations", r.iterations},
                            {"refinement_passes", r.refinement_passes},
@@ -121,7 +135,9 @@ void run_kappa(const Kappa_command_options& o) {
   }
   if (o.json_out != "-")
     std::cout << o.input << ": " << curve.number_of_pieces() << " pieces, " << (options.closed ? "closed" : "open")
-              << ", weights " << o.weights << ", " << (r.converged ? "converged" : "NOT converged") << " after "
+              << ", weights " << o.weights
+              << (options.weights == fair::Kappa_weights::AUTOMATIC ? " (clamp " + format_number(options.weight_clamp) + ")" : "")
+              << ", " << (r.converged ? "converged" : "NOT converged") << " after "
               << r.refinement_passes << " passes and " << r.iterations << " iterations, residual "
               << format_number(r.residual, 3) << ", energy " << format_number(r.energy(), 3) << "\n";
   if (o.json_out == "-") std::cout << json_text;
@@ -141,8 +157,14 @@ void register_kappa_command(CLI::App& app) {
   sub->add_option("--weights", options->weights,
                   "1 (polynomial kappa-curve, default), auto (minimum-eccentricity weights, eq. 16) or a weight W > 0");
   sub->add_option("--tension", options->tension_file, "with --weights auto: one tension mu_i > 0 per point per line");
+  CLI::Option* clamp = sub->add_option("--clamp", options->clamp,
+                  "with --weights auto: the lower clamp of eq. 16, a number > 0 (default 1/2; small values approach "
+                  "the unclamped minimum-eccentricity weights of eq. 15)");
   sub->add_option("-o,--output", options->json_out, "write the pieces and the report as JSON ('-': only JSON on stdout)");
   sub->add_option("--svg", options->svg_out, "draw the curve, its control polygons and curvature comb");
-  sub->callback([options] { run_kappa(*options); });
+  sub->callback([options, clamp] {
+    options->clamp_given = clamp->count() > 0;
+    run_kappa(*options);
+  });
 }
 FAIR_CURVES_COMMAND(register_kappa_command)
