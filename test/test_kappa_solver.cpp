@@ -1,0 +1,284 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// Tests of the Newton machinery of the kappa-curve solver (include/fair/internal/): the block
+// LU of kappa_block_lu.h against a dense pivoted solve, the structured Jacobian of
+// kappa_jacobian.h against automatic differentiation over all 16 unknowns of a window, and
+// the Newton phase of kappa_solver.h against Levenberg-Marquardt.
+
+#include <fair/internal/kappa_solver.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace {
+
+using namespace fair::internal::kappa;
+
+// ------------------------------------------------------------------ block LU
+
+/// Random block matrix of the kappa structure (row i: column blocks i-2..i+1), the diagonal
+/// blocks shifted by `shift` * I; filled into both the block LU and a dense pivoted LU.
+void random_system(std::mt19937& g, std::size_t n, bool cyclic, double shift, Block_band_lu& lu, Banded_lu& dense) {
+  std::uniform_real_distribution<double> U(-1, 1);
+  const std::size_t N = 4 * n;
+  lu.reset(n, cyclic);
+  dense.reset(N, N - 1, N - 1);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int k = 0; k < 4; ++k) {
+      long c = static_cast<long>(i) - 2 + k;
+      if (cyclic) c = ((c % static_cast<long>(n)) + static_cast<long>(n)) % static_cast<long>(n);
+      else if (c < 0 || c >= static_cast<long>(n)) continue;
+      Block4& b = lu.block(i, k);
+      for (int r = 0; r < 4; ++r)
+        for (int q = 0; q < 4; ++q) {
+          const double v = U(g) + (k == 2 && r == q ? shift : 0.0);
+          b[4 * r + q] = v;
+          dense.add(4 * i + static_cast<std::size_t>(r), 4 * static_cast<std::size_t>(c) + static_cast<std::size_t>(q), v);
+        }
+    }
+}
+
+TEST(KappaBlockLu, AgreesWithDensePivotedSolve) {
+  std::mt19937 g(7);
+  std::uniform_real_distribution<double> U(-1, 1);
+  for (const bool cyclic : {false, true})
+    for (std::size_t n : {1, 2, 3, 4, 5, 6, 7, 9, 16, 61}) {
+      for (int rep = 0; rep < 5; ++rep) {
+        Block_band_lu lu;
+        Banded_lu dense;
+        random_system(g, n, cyclic, 6.0, lu, dense);
+        std::vector<double> x(4 * n);
+        for (double& v : x) v = U(g);
+        std::vector<double> y = x;
+        ASSERT_TRUE(lu.factor()) << "n " << n << " cyclic " << cyclic;
+        ASSERT_TRUE(dense.factor());
+        lu.solve(x.data());
+        dense.solve(y.data());
+        for (std::size_t k = 0; k < x.size(); ++k)
+          EXPECT_NEAR(x[k], y[k], 1e-12 * (1 + std::abs(y[k]))) << "n " << n << " cyclic " << cyclic << " k " << k;
+      }
+    }
+}
+
+// Weak diagonal blocks (no diagonal dominance at all): the Woodbury solve of a cyclic system
+// must still agree with a pivoted dense solve whenever it accepts the factorisation.
+TEST(KappaBlockLu, NonDominantSystemsAgreeOrAreRejected) {
+  std::mt19937 g(8);
+  std::uniform_real_distribution<double> U(-1, 1);
+  int accepted = 0;
+  for (int rep = 0; rep < 200; ++rep) {
+    const std::size_t n = 6 + static_cast<std::size_t>(rep % 30);
+    Block_band_lu lu;
+    Banded_lu dense;
+    random_system(g, n, rep % 2 == 0, 0.0, lu, dense);
+    std::vector<double> b(4 * n);
+    for (double& v : b) v = U(g);
+    std::vector<double> x = b, y = b;
+    if (!lu.factor() || !dense.factor()) continue;
+    lu.solve(x.data());
+    dense.solve(y.data());
+    double scale = 0, err = 0;
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      scale = std::max(scale, std::abs(y[k]));
+      err = std::max(err, std::abs(x[k] - y[k]));
+    }
+    if (err <= 1e-6 * scale) ++accepted;
+  }
+  // Without pivoting across blocks some random systems lose accuracy; most must not.
+  EXPECT_GE(accepted, 150);
+}
+
+TEST(KappaBlockLu, SingularPivotBlockIsReported) {
+  Block_band_lu lu;
+  lu.reset(8, false);
+  for (std::size_t i = 0; i < 8; ++i)
+    for (int r = 0; r < 4; ++r) lu.block(i, 2)[5 * r] = 1.0;
+  lu.block(3, 2)[15] = 0.0;  // a zero row in the diagonal block of row 3: singular
+  EXPECT_FALSE(lu.factor());
+  Block4 a{}, inv;
+  a[0] = a[5] = a[10] = 1.0;
+  a[15] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(invert_block(a, inv));
+}
+
+// ------------------------------------------------------------------ Jacobian
+
+Problem random_problem(std::mt19937& g, std::size_t n, bool closed, Weight_mode mode, double clamp) {
+  std::uniform_real_distribution<double> U(0, 1);
+  Problem pb;
+  pb.closed = closed;
+  pb.n = n;
+  pb.mode = mode;
+  pb.clamp = clamp;
+  for (std::size_t i = 0; i < n; ++i) {
+    pb.qx.push_back(2 * U(g) - 1);
+    pb.qy.push_back(2 * U(g) - 1);
+    pb.weight.push_back(0.5 + U(g));
+    pb.tension.push_back(0.5 + U(g));
+  }
+  pb.sx = -1.5; pb.sy = 0.2; pb.ex = 1.4; pb.ey = -0.3;
+  return pb;
+}
+
+State random_state(std::mt19937& g, std::size_t n) {
+  std::uniform_real_distribution<double> U(0, 1);
+  State st;
+  st.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    st.dx[i] = U(g) - 0.5;
+    st.dy[i] = U(g) - 0.5;
+    st.lambda[i] = 0.1 + 0.8 * U(g);
+    st.t[i] = 0.1 + 0.8 * U(g);
+  }
+  return st;
+}
+
+/// Compares block_jacobian with a differentiation over all 16 window unknowns.
+void expect_jacobian_matches(const Problem& pb, const State& st, const char* what) {
+  Jacobian_workspace ws;
+  for (std::size_t i = 0; i < pb.n; ++i) {
+    double r[4], J[4][16];
+    block_jacobian(pb, st, i, ws, r, J);
+    Window<Dual<16>> win;
+    build_window(pb, st, i, win);
+    Dual<16> ref[4];
+    block_residuals(pb, st, i, win, ref);
+    for (int e = 0; e < 4; ++e) {
+      EXPECT_NEAR(r[e], ref[e].v, 1e-14 * (1 + std::abs(ref[e].v))) << what << " block " << i << " residual " << e;
+      for (int c = 0; c < 16; ++c) {
+        if (!win.valid[c / 4]) {
+          EXPECT_EQ(J[e][c], 0.0);
+          continue;
+        }
+        EXPECT_NEAR(J[e][c], ref[e].d[c], 1e-12 * (1 + std::abs(ref[e].d[c])))
+            << what << " block " << i << " d r" << e << " / d unknown " << c % 4 << " of window block " << c / 4;
+      }
+    }
+  }
+}
+
+TEST(KappaJacobian, MatchesFullAutomaticDifferentiation) {
+  std::mt19937 g(11);
+  for (int trial = 0; trial < 300; ++trial) {
+    const bool closed = trial % 2 == 0;
+    const std::size_t n = (closed ? 3 : 2) + static_cast<std::size_t>(trial % 9);
+    const Weight_mode mode = static_cast<Weight_mode>((trial / 2) % 3);
+    // clamp 0.9: the clamp of eq. 16 is often active; 0.05: rarely.
+    const Problem pb = random_problem(g, n, closed, mode, trial % 4 < 2 ? 0.9 : 0.05);
+    const State st = random_state(g, n);
+    expect_jacobian_matches(pb, st, "random");
+  }
+}
+
+// Straight control polygons (cross products 0, |kappa| = 0 on one side of a join) and the
+// end blocks of open curves.
+TEST(KappaJacobian, DegenerateJoinsAndOpenEnds) {
+  for (const Weight_mode mode : {Weight_mode::unit, Weight_mode::automatic}) {
+    Problem pb;
+    pb.closed = false;
+    pb.n = 5;
+    pb.mode = mode;
+    pb.tension.assign(5, 1.0);
+    for (int i = 0; i < 5; ++i) {
+      pb.qx.push_back(i);
+      pb.qy.push_back(i == 3 ? 0.5 : 0.0);
+    }
+    pb.sx = -1; pb.sy = 0; pb.ex = 5; pb.ey = 0;
+    State st;
+    st.resize(5);
+    st.lambda[2] = 0.3;
+    st.t[1] = 0.7;
+    expect_jacobian_matches(pb, st, "collinear");
+  }
+}
+
+// ------------------------------------------------------------------ Newton
+
+Problem star(std::size_t n, unsigned seed, Weight_mode mode) {
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<double> U(0, 1);
+  Problem pb;
+  pb.closed = true;
+  pb.n = n;
+  pb.mode = mode;
+  pb.tension.assign(n, 1.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * (static_cast<double>(i) + 0.2 * (U(g) - 0.5)) / static_cast<double>(n);
+    const double r = 1 + 0.05 * (i % 2 ? 1 : -1) * (0.5 + U(g));
+    pb.qx.push_back(r * std::cos(a));
+    pb.qy.push_back(r * std::sin(a));
+  }
+  return pb;
+}
+
+// From the same start, Newton's method and Levenberg-Marquardt reach the same root; Newton in
+// few iterations (quadratic convergence). (With few points -- large turning angles -- or
+// automatic weights on small sets, two passes can leave the start outside Newton's basin;
+// solve() then falls back to more passes and Levenberg-Marquardt, as test_kappa.cpp exercises.)
+TEST(KappaNewton, ReachesTheLevenbergMarquardtRootQuickly) {
+  const std::pair<Weight_mode, std::size_t> cases[] = {{Weight_mode::unit, 24}, {Weight_mode::unit, 50},
+                                                       {Weight_mode::unit, 400}, {Weight_mode::automatic, 100},
+                                                       {Weight_mode::automatic, 400}};
+  for (const auto& mode_and_size : cases) {
+      const Weight_mode mode = mode_and_size.first;
+      const std::size_t n = mode_and_size.second;
+      const Problem pb = star(n, static_cast<unsigned>(n) + 1, mode);
+      State a;
+      initial_guess(pb, a);
+      Solve_result passes;
+      refine(pb, a, 2, 1e-3, passes);
+      State b = a;
+      Solve_settings s;
+      Solve_result ra, rb;
+      const double fa = newton(pb, a, s, ra, 30);
+      const double fb = levenberg_marquardt(pb, b, s, rb, 200);
+      ASSERT_LE(fa, 1e-12) << "n " << n;
+      ASSERT_LE(fb, 1e-12) << "n " << n;
+      EXPECT_LE(ra.iterations, 6u) << "n " << n;
+      for (std::size_t i = 0; i < n; ++i) {
+        EXPECT_NEAR(a.dx[i], b.dx[i], 1e-10);
+        EXPECT_NEAR(a.dy[i], b.dy[i], 1e-10);
+        EXPECT_NEAR(a.lambda[i], b.lambda[i], 1e-10);
+        EXPECT_NEAR(a.t[i], b.t[i], 1e-10);
+      }
+    }
+}
+
+// The cold solve takes the fast path (two passes, then Newton) on regular data and reports it.
+TEST(KappaNewton, ColdSolveUsesTheFastPath) {
+  const Problem pb = star(1000, 3, Weight_mode::unit);
+  State st;
+  const Solve_result res = solve(pb, st, Solve_settings{});
+  EXPECT_TRUE(res.converged);
+  EXPECT_LE(res.refinement_passes, 2u);
+  EXPECT_LE(res.iterations, 6u);
+  EXPECT_LE(res.residual, 1e-12);
+}
+
+// A local (range) Newton solve only changes the unknowns of its range and zeroes their residuals.
+TEST(KappaNewton, RangeSolveTouchesOnlyItsBlocks) {
+  Problem pb = star(60, 5, Weight_mode::unit);
+  State st;
+  ASSERT_TRUE(solve(pb, st, Solve_settings{}).converged);
+  pb.qx[30] *= 1.01;
+  Block_range range;
+  range.all = false;
+  range.first = 22;
+  range.count = 17;
+  State local = st;
+  Solve_result res;
+  const double f = newton(pb, local, Solve_settings{}, res, 30, range);
+  EXPECT_LE(f, 1e-12);
+  for (std::size_t i = 0; i < pb.n; ++i) {
+    if (i >= 22 && i < 39) continue;
+    EXPECT_EQ(local.dx[i], st.dx[i]);
+    EXPECT_EQ(local.t[i], st.t[i]);
+  }
+  EXPECT_NE(local.dx[30], st.dx[30]);
+}
+
+} // namespace
