@@ -90,8 +90,7 @@ struct Refinement_workspace {
   Banded_lu lu;                      // banded fallback
 
   void resize_eq18(std::size_t n) {
-    for (std::vector<double>* v : {&sup, &inv, &rx, &ry}) v->resize(n);
-    spike.resize(n);
+    for (std::vector<double>* v : {&sup, &inv, &rx, &ry, &spike}) v->resize(n);
   }
   void resize(std::size_t n) {
     resize_eq18(n);
