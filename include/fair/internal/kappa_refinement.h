@@ -7,7 +7,7 @@
 // the Newton-type solve of kappa_solver.h finishes the job.
 //
 // Cost: a pass reads each block's neighbours directly (no Window objects), finds the eq. 7 root
-// by safeguarded Newton from the previous t (2-3 evaluations per block), and solves eq. 18 by
+// by safeguarded Newton from the previous t (1-3 evaluations per block), and solves eq. 18 by
 // the tridiagonal (Thomas) algorithm, bordered for closed curves, in a reusable workspace
 // (no allocation per pass once the workspace has grown to n).
 
@@ -182,7 +182,8 @@ inline bool solve_eq18_banded(const Problem& pb, State& st, Refinement_workspace
 /// Otherwise (rows that are not dominant, e.g. t near 0 with lambda_i < 1/2, or closed curves
 /// with n < 3) banded LU with partial pivoting (kappa_banded.h).
 /// Accuracy: both are backward stable (for a row diagonally dominant matrix elimination without
-/// pivoting has growth factor <= 2 and the bordering is elimination in natural order).
+/// pivoting has growth factor <= 2, Higham, Accuracy and Stability, Thm. 9.9; the bordering
+/// forms the same Schur complement of row n-1, whose pivot stays dominant).
 /// Degenerate case: a singular matrix or a non-finite solution returns false and leaves `st`
 /// unchanged.
 inline bool solve_eq18(const Problem& pb, State& st, Refinement_workspace& ws) {
