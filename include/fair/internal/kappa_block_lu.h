@@ -32,6 +32,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace fair {
@@ -99,10 +100,16 @@ class Block_band_lu {
 public:
   /// n block rows; cyclic: closed-curve structure, else clipped.
   void reset(std::size_t n, bool cyclic) {
+    resize(n, cyclic);
+    std::fill(a_.begin(), a_.end(), Block4{});
+  }
+  /// As reset(), but the blocks keep stale values: the caller sets every block (all four slots
+  /// of every row, zero where the structure has no block). Saves one pass over the storage.
+  void resize(std::size_t n, bool cyclic) {
     n_ = n;
     cyclic_ = cyclic;
     dense_ = cyclic && n < small_cyclic;
-    a_.assign(4 * n_, Block4{});
+    a_.resize(4 * n_);
     z_.clear();
     wrap_columns_.clear();
   }
@@ -139,11 +146,11 @@ public:
     std::vector<double> s(m);
     for (std::size_t c = 0; c < m; ++c) s[c] = b[wrap_columns_[c]];
     capacitance_.solve(s.data());
-    for (std::size_t c = 0; c < m; ++c) {
-      const double* z = &z_[c * 4 * n_];
-      const double sc = s[c];
-      if (sc == 0.0) continue;
-      for (std::size_t r = 0; r < 4 * n_; ++r) b[r] -= z[r] * sc;
+    const double* z = z_.data();
+    for (std::size_t r = 0; r < 4 * n_; ++r, z += m) {
+      double v = 0;
+      for (std::size_t c = 0; c < m; ++c) v += z[c] * s[c];
+      b[r] -= v;
     }
   }
 
@@ -182,49 +189,87 @@ private:
     }
   }
 
+  /// Y = B^{-1} Y for m right-hand sides at once, Y row-major (4n x m): one sweep over the
+  /// factors instead of m (the factors dominate the memory traffic for large n). The usual
+  /// m = 8 (kappa_solver.h: x, y of P_{n-2}; x, y, lambda of P_{n-1} and P_0) has its own
+  /// fixed-size instance, which the compiler vectorises.
+  void solve_open(double* Y, std::size_t m) const {
+    if (m == 8) solve_open_panels<8>(Y, 8);
+    else solve_open_panels<0>(Y, m);
+  }
+
+  /// solve_open for M right-hand sides (M = 0: m given at run time).
+  template <std::size_t M>
+  void solve_open_panels(double* Y, std::size_t m_runtime) const {
+    const std::size_t m = M ? M : m_runtime;
+    auto subtract = [m](const Block4& a, const double* x, double* y) {  // y -= a x (4 x m panels)
+      for (int r = 0; r < 4; ++r) {
+        double* yr = y + static_cast<std::size_t>(r) * m;
+        const double a0 = a[4 * r], a1 = a[4 * r + 1], a2 = a[4 * r + 2], a3 = a[4 * r + 3];
+        for (std::size_t c = 0; c < m; ++c) yr[c] -= a0 * x[c] + a1 * x[m + c] + a2 * x[2 * m + c] + a3 * x[3 * m + c];
+      }
+    };
+    const std::size_t panel = 4 * m;
+    for (std::size_t i = 1; i < n_; ++i) {
+      subtract(block(i, 1), Y + panel * (i - 1), Y + panel * i);
+      if (i >= 2) subtract(block(i, 0), Y + panel * (i - 2), Y + panel * i);
+    }
+    std::vector<double> tmp(panel);
+    for (std::size_t k = n_; k-- > 0;) {
+      double* x = Y + panel * k;
+      if (k + 1 < n_) subtract(block(k, 3), Y + panel * (k + 1), x);
+      const Block4& inv = block(k, 2);
+      for (int r = 0; r < 4; ++r) {
+        double* tr = tmp.data() + static_cast<std::size_t>(r) * m;
+        const double a0 = inv[4 * r], a1 = inv[4 * r + 1], a2 = inv[4 * r + 2], a3 = inv[4 * r + 3];
+        for (std::size_t c = 0; c < m; ++c) tr[c] = a0 * x[c] + a1 * x[m + c] + a2 * x[2 * m + c] + a3 * x[3 * m + c];
+      }
+      std::copy(tmp.begin(), tmp.end(), x);
+    }
+  }
+
   /// Woodbury data for the cyclic wrap-around blocks (see the file comment).
   bool factor_wrap() {
     const std::size_t N = 4 * n_;
     // Column blocks picked by V^T, and the wrap blocks (row, slot) of each.
     const std::size_t cols[3] = {n_ - 2, n_ - 1, 0};
-    z_.clear();
     wrap_columns_.clear();
-    std::vector<double> u(N);
-    for (int cb = 0; cb < 3; ++cb) {
+    std::vector<std::pair<int, int>> picked;  // (column block index in cols, component)
+    auto wrap_block_value = [&](int cb, std::size_t row, int r, int q) -> double {
+      if (cb == 0) return row == 0 ? block(0, 0)[4 * r + q] : 0.0;
+      if (cb == 1) return row == 0 ? block(0, 1)[4 * r + q] : row == 1 ? block(1, 0)[4 * r + q] : 0.0;
+      return row == n_ - 1 ? block(n_ - 1, 3)[4 * r + q] : 0.0;
+    };
+    const std::size_t rows[3] = {0, 1, n_ - 1};
+    for (int cb = 0; cb < 3; ++cb)
       for (int q = 0; q < 4; ++q) {
-        std::fill(u.begin(), u.end(), 0.0);
         bool nonzero = false;
-        auto put = [&](std::size_t row, int slot) {
-          const Block4& w = block(row, slot);
-          for (int r = 0; r < 4; ++r) {
-            u[4 * row + r] = w[4 * r + q];
-            nonzero = nonzero || w[4 * r + q] != 0.0;
-          }
-        };
-        if (cb == 0) put(0, 0);
-        if (cb == 1) { put(0, 1); put(1, 0); }
-        if (cb == 2) put(n_ - 1, 3);
-        if (!nonzero) continue;
-        solve_open(u.data());
+        for (std::size_t row : rows)
+          for (int r = 0; r < 4; ++r) nonzero = nonzero || wrap_block_value(cb, row, r, q) != 0.0;
+        if (!nonzero) continue;  // e.g. t_j never enters a wrap-around residual
+        picked.emplace_back(cb, q);
         wrap_columns_.push_back(4 * cols[cb] + static_cast<std::size_t>(q));
-        z_.insert(z_.end(), u.begin(), u.end());
       }
-    }
     const std::size_t m = wrap_columns_.size();
     if (m == 0) return true;
-    capacitance_.reset(m, m - 1, m - 1);
-    for (std::size_t r = 0; r < m; ++r)
-      for (std::size_t c = 0; c < m; ++c)
-        capacitance_.add(r, c, (r == c ? 1.0 : 0.0) + z_[c * N + wrap_columns_[r]]);
+    z_.assign(N * m, 0.0);  // U, row-major
+    for (std::size_t c = 0; c < m; ++c)
+      for (std::size_t row : rows)
+        for (int r = 0; r < 4; ++r)
+          z_[(4 * row + static_cast<std::size_t>(r)) * m + c] = wrap_block_value(picked[c].first, row, r, picked[c].second);
+    solve_open(z_.data(), m);  // Z = B^{-1} U
     for (double v : z_)
       if (!std::isfinite(v)) return false;
+    capacitance_.reset(m, m - 1, m - 1);
+    for (std::size_t r = 0; r < m; ++r)
+      for (std::size_t c = 0; c < m; ++c) capacitance_.add(r, c, (r == c ? 1.0 : 0.0) + z_[wrap_columns_[r] * m + c]);
     return capacitance_.factor();
   }
 
   std::size_t n_ = 0;
   bool cyclic_ = false, dense_ = false;
   std::vector<Block4> a_;
-  std::vector<double> z_;                  // Z = B^{-1} U, column-major (N per column)
+  std::vector<double> z_;                  // Z = B^{-1} U, row-major (4n x m)
   std::vector<std::size_t> wrap_columns_;  // unknown index picked by each column of V
   Banded_lu capacitance_;                  // I + V^T Z (dense: bandwidths m-1)
   Banded_lu dense_lu_;                     // small cyclic systems
