@@ -324,11 +324,12 @@ inline double newton(const Problem& pb, State& st, const Solve_settings& setting
     // A range (count <= n - 3 for closed curves) is an open-structured system: the window
     // block k of its block ii is its block ii - 2 + k, or a constant outside the range.
     lu.resize(na, range.all && pb.closed);
-    for (std::size_t ii = 0; ii < na; ++ii) {
+    for (std::size_t k = 0; k < N; ++k) delta[k] = -F[k];
+    auto fill = [&](std::size_t ii, Block4* row) {
       double r[4], J[4][16];
       block_jacobian(pb, st, range_block(pb, range, ii), jws, r, J);
       for (int k = 0; k < 4; ++k) {
-        Block4& b = lu.block(ii, k);
+        Block4& b = row[k];
         if (!jws.values.valid[k] || (!range.all && (ii + k < 2 || ii + k - 2 >= na))) {
           b.fill(0.0);
           continue;
@@ -336,12 +337,11 @@ inline double newton(const Problem& pb, State& st, const Solve_settings& setting
         for (int e = 0; e < 4; ++e)
           for (int c = 0; c < 4; ++c) b[4 * e + c] = J[e][4 * k + c];
       }
-    }
+    };
     ++res.iterations;
-    factored = lu.factor();
+    factored = lu.factor_rows(fill, delta.data());
     if (!factored) break;
-    for (std::size_t k = 0; k < N; ++k) delta[k] = -F[k];
-    lu.solve(delta.data());
+    lu.finish_solve(delta.data());
     const double before = fmax;
     bool accepted = false;
     for (double alpha = 1.0; alpha >= 1.0 / 64 && !accepted; alpha *= 0.5) accepted = try_step(alpha);
