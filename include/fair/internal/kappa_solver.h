@@ -5,19 +5,27 @@
 // curvature points" (equation numbers refer to that paper; weights w = 1 give the polynomial
 // kappa-curves of Yan et al. 2017).
 //
-// The system (unknowns P_i, lambda_i, t_i per block; residuals of eqs. 7, 10, 18) is in
-// kappa_system.h, the initial guess and alternating passes of Section 5.1 in
-// kappa_refinement.h. The paper's energy (eq. 17/19) is a sum of squares of the same
+// The system (unknowns P_i, lambda_i, t_i per block; residuals of eqs. 7, 10, 18: a square
+// 4n x 4n system) is in kappa_system.h, the initial guess and alternating passes of Section 5.1
+// in kappa_refinement.h. The paper's energy (eq. 17/19) is a sum of squares of the same
 // conditions (differently normalised); its minimum value zero is reached exactly at a root of
-// the system, so the solver minimises 1/2 |r|^2 by Levenberg-Marquardt (Nielsen's damping
-// update, Marquardt's diagonal scaling) and stops when max |r| <= tolerance.
+// the system, so the solver looks for a root and stops when max |r| <= tolerance.
 //
-// Cost per iteration is O(n): every residual depends on the unknowns of blocks i-2..i+1
-// only, so J^T J is a band matrix (half bandwidth 15 for open curves; closed curves use the
-// zig-zag block order of kappa_banded.h, half bandwidth 31) factored by banded Cholesky.
-// The Jacobian is exact (forward-mode automatic differentiation, kappa_dual.h).
+// Two methods, both O(n) per iteration because every residual depends on the unknowns of
+// blocks i-2..i+1 only:
+//  - Newton's method (newton()): J delta = -r solved directly by the block LU of
+//    kappa_block_lu.h (Woodbury correction for the wrap-around of closed curves), the
+//    Jacobian from kappa_jacobian.h, an Armijo backtracking line search, and chord steps
+//    (reusing the factorisation) in the quadratic regime. Converges in 2-4 Jacobians from two
+//    refinement passes on typical data; it gives up on a singular pivot block or a failed
+//    line search.
+//  - Levenberg-Marquardt (levenberg_marquardt(), the fallback): minimises 1/2 |r|^2 with
+//    Nielsen's damping update and Marquardt's diagonal scaling; J^T J is a band matrix (half
+//    bandwidth 15 for open curves; closed curves use the zig-zag block order of
+//    kappa_banded.h, half bandwidth 31) factored by banded Cholesky, the Jacobian by
+//    automatic differentiation (kappa_dual.h). Slower per iteration, but robust far from a root.
 // Bounds 0 < lambda_i, t_i < 1 are kept by projection onto [1e-9, 1 - 1e-9].
-// Non-convergence within the iteration cap is reported (Solve_result::converged == false);
+// Non-convergence within the iteration caps is reported (Solve_result::converged == false);
 // the caller decides whether to throw.
 
 #ifndef FAIR_INTERNAL_KAPPA_SOLVER_H
@@ -405,9 +413,13 @@ inline Solve_result finish(const Problem& pb, State& st, const Solve_settings& s
 }
 
 /// Solves the kappa-curve system; `st` holds the initial state when settings.warm.
-/// Strategy: initial guess and up to `refinement_passes` alternating passes (stopping early
-/// once max |r| <= 1e-3), Levenberg-Marquardt; if that stalls away from a root, one restart:
-/// up to 4 x `refinement_passes` more passes from the best state, then Levenberg-Marquardt again.
+/// Strategy (cold start): initial guess, two alternating passes, Newton's method (the fast
+/// path). If that does not reach an interior root: back to the state after the two passes, up
+/// to `refinement_passes` passes in all (stopping early once max |r| <= 1e-3), then
+/// Levenberg-Marquardt; if that stalls away from a root, one restart: up to
+/// 4 x `refinement_passes` more passes from the best state, then Levenberg-Marquardt again.
+/// Warm start: local solves around the moved point (see below), else Newton's method, else
+/// Levenberg-Marquardt, from the previous solution.
 inline Solve_result solve(const Problem& pb, State& st, const Solve_settings& settings) {
   Solve_result res;
   const std::size_t n = pb.n;
