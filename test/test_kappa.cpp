@@ -289,7 +289,7 @@ TEST(Kappa, WarmStartAfterMovingOnePoint) {
 
 // Moving one point of a long curve: the warm start solves locally (blocks near the moved point,
 // the rest fixed), accepts only a root of the whole system, and needs no refinement passes and
-// only a few Levenberg-Marquardt iterations. The result must be the cold solution (the root is
+// only a few Newton iterations. The result must be the cold solution (the root is
 // locally unique). Closed and open curves; for the open one also its first and last point.
 TEST(Kappa, WarmStartIsLocalAndAgreesWithColdSolve) {
   for (const bool closed : {true, false}) {
