@@ -167,3 +167,220 @@ TEST(KappaCertify, PiecewiseCertificateReportsRoundedDoubleJoins) {
   for (const auto& j : c.joins) c0 += j.c0 ? 1 : 0;
   EXPECT_EQ(c0, 30u);  // the pieces share their join points (same stored point)
 }
+
+namespace {
+
+namespace kp = fair::internal::kappa;
+
+// The exact inputs of certify(curve), for certify_parameters with modified parameters.
+struct Exact_inputs {
+  bool closed = false;
+  std::vector<std::size_t> index;
+  std::vector<CGAL::Gmpq> qx, qy;
+  CGAL::Gmpq sx, sy, ex, ey;
+  std::vector<double> lambda, t, w;
+};
+
+template <class K>
+Exact_inputs inputs_of(const fair::Kappa_curve_2<K>& curve) {
+  Exact_inputs in;
+  const std::size_t n = curve.number_of_pieces(), m = curve.points().size();
+  in.closed = curve.is_closed();
+  for (std::size_t j = 0; j < n; ++j) {
+    in.index.push_back(curve.point_index(j));
+    in.qx.push_back(fair::internal::to_gmpq(curve.points()[curve.point_index(j)].x()));
+    in.qy.push_back(fair::internal::to_gmpq(curve.points()[curve.point_index(j)].y()));
+  }
+  if (!in.closed) {
+    in.sx = fair::internal::to_gmpq(curve.points()[0].x());
+    in.sy = fair::internal::to_gmpq(curve.points()[0].y());
+    in.ex = fair::internal::to_gmpq(curve.points()[m - 1].x());
+    in.ey = fair::internal::to_gmpq(curve.points()[m - 1].y());
+  }
+  in.lambda = curve.state().lambda;
+  in.t = curve.state().t;
+  in.w = curve.state().w;
+  return in;
+}
+
+fair::Kappa_certificate certify_inputs(const Exact_inputs& in, kp::Certify_mode mode) {
+  return kp::certify_parameters(in.closed, in.index, in.qx, in.qy, in.sx, in.sy, in.ex, in.ey, in.lambda, in.t, in.w,
+                                mode);
+}
+
+// The filtered certificate (interval filter, exact fallback) and the forced exact one (exact
+// isolation of eq. 4 for every piece) must say the same thing, piece by piece: a wrong filter
+// shows up here. The root brackets must intersect (both contain the same certified root).
+void expect_same_certificate(const fair::Kappa_certificate& f, const fair::Kappa_certificate& e, const char* what) {
+  ASSERT_EQ(f.pieces.size(), e.pieces.size()) << what;
+  ASSERT_EQ(f.joins.size(), e.joins.size()) << what;
+  ASSERT_EQ(f.exact_pieces.size(), e.exact_pieces.size()) << what;
+  for (std::size_t j = 0; j < f.pieces.size(); ++j) {
+    const auto& a = f.pieces[j];
+    const auto& b = e.pieces[j];
+    EXPECT_EQ(a.valid_piece, b.valid_piece) << what << " piece " << j;
+    EXPECT_EQ(a.point_on_piece, b.point_on_piece) << what << " piece " << j;
+    EXPECT_EQ(a.interpolation_error, b.interpolation_error) << what << " piece " << j;
+    EXPECT_EQ(a.extrema, b.extrema) << what << " piece " << j;
+    EXPECT_EQ(a.maxima, b.maxima) << what << " piece " << j;
+    EXPECT_EQ(a.unique_maximum, b.unique_maximum) << what << " piece " << j;
+    EXPECT_EQ(a.has_extremum_at_t, b.has_extremum_at_t) << what << " piece " << j;
+    if (a.has_extremum_at_t && b.has_extremum_at_t && a.extrema == 1) {
+      EXPECT_EQ(a.kind_at_t, b.kind_at_t) << what << " piece " << j;
+      EXPECT_LT(a.root_lower, b.root_upper) << what << " piece " << j;
+      EXPECT_LT(b.root_lower, a.root_upper) << what << " piece " << j;
+      EXPECT_LE(a.root_lower, a.root_upper);
+    }
+  }
+  for (std::size_t k = 0; k < f.joins.size(); ++k) {
+    EXPECT_EQ(f.joins[k].c0, e.joins[k].c0) << what << " join " << k;
+    EXPECT_EQ(f.joins[k].g1, e.joins[k].g1) << what << " join " << k;
+    EXPECT_EQ(f.joins[k].kappa_mismatch_lower, e.joins[k].kappa_mismatch_lower) << what << " join " << k;
+    EXPECT_EQ(f.joins[k].kappa_mismatch_upper, e.joins[k].kappa_mismatch_upper) << what << " join " << k;
+  }
+  for (std::size_t j = 0; j < f.exact_pieces.size(); ++j)
+    for (std::size_t k = 0; k < 3; ++k)
+      EXPECT_TRUE(f.exact_pieces[j].control_point(k) == e.exact_pieces[j].control_point(k)) << what << " piece " << j;
+}
+
+// The fraction-free integer solve of eq. 18 equals the Gmpq tridiagonal solve (exact_eq18), for
+// open and closed curves including the smallest ones (closed n = 3, open with one piece).
+TEST(KappaCertify, FractionFreeSolveEqualsRationalSolve) {
+  std::mt19937 g(11);
+  for (const std::size_t n : {3u, 4u, 9u, 25u}) {
+    for (const bool closed : {true, false}) {
+      fair::Kappa_curve_options o;
+      o.closed = closed;
+      o.weights = n % 2 ? fair::Kappa_weights::AUTOMATIC : fair::Kappa_weights::UNIT;
+      const fair::Kappa_curve_2<Kd> curve(spiky(g, n, 0.1), o);
+      const Exact_inputs in = inputs_of(curve);
+      const std::size_t np = in.qx.size();
+      ASSERT_EQ(np, closed ? n : n - 2);
+      std::vector<CGAL::Gmpq> lam(np), t(np), w(np), px, py;
+      for (std::size_t j = 0; j < np; ++j) {
+        lam[j] = CGAL::Gmpq(closed || j > 0 ? in.lambda[j] : 0.5);
+        t[j] = CGAL::Gmpq(in.t[j]);
+        w[j] = CGAL::Gmpq(in.w[j]);
+      }
+      kp::exact_eq18(closed, in.qx, in.qy, in.sx, in.sy, in.ex, in.ey, lam, t, w, px, py);
+      const fair::Kappa_certificate c = certify_inputs(in, kp::Certify_mode::FILTERED);
+      ASSERT_EQ(c.exact_pieces.size(), np) << c;
+      for (std::size_t j = 0; j < np; ++j) {
+        EXPECT_TRUE(c.exact_pieces[j].control_point(1).x() == px[j]) << "n " << n << " piece " << j;
+        EXPECT_TRUE(c.exact_pieces[j].control_point(1).y() == py[j]) << "n " << n << " piece " << j;
+        EXPECT_TRUE(c.exact_pieces[j].weight() == w[j]);
+      }
+      EXPECT_TRUE(c.all_points_on_pieces()) << c;
+      EXPECT_TRUE(c.all_g1()) << c;
+    }
+  }
+}
+
+// Filtered vs forced exact on random curves of all weight kinds, and on deliberately perturbed
+// parameters (pieces with far or several extrema, minima: the fallback must kick in and agree).
+TEST(KappaCertify, FilteredPathAgreesWithForcedExactPath) {
+  std::mt19937 g(2024);
+  std::uniform_real_distribution<double> U(-1, 1);
+  std::size_t fallback_pieces = 0, pieces = 0;
+  for (int trial = 0; trial < 9; ++trial) {
+    fair::Kappa_curve_options o;
+    o.closed = trial % 2 == 0;
+    o.weights = trial % 3 == 0 ? fair::Kappa_weights::UNIT
+                               : (trial % 3 == 1 ? fair::Kappa_weights::FIXED : fair::Kappa_weights::AUTOMATIC);
+    const std::size_t n = 6 + trial;
+    o.fixed_weights.assign(n, 0.8);
+    const fair::Kappa_curve_2<Kd> curve(spiky(g, n, 0.12), o);
+    Exact_inputs in = inputs_of(curve);
+    expect_same_certificate(certify_inputs(in, kp::Certify_mode::FILTERED), certify_inputs(in, kp::Certify_mode::EXACT),
+                            "solved");
+    // Perturbed: t, w and lambda moved by up to 5 %, so the eq.-4 roots leave t_i.
+    for (std::size_t j = 0; j < in.t.size(); ++j) {
+      in.t[j] = std::min(0.95, std::max(0.05, in.t[j] + 0.05 * U(g)));
+      in.w[j] *= 1 + 0.3 * U(g);
+      if (in.closed || j > 0) in.lambda[j] = std::min(0.95, std::max(0.05, in.lambda[j] + 0.05 * U(g)));
+    }
+    const fair::Kappa_certificate f = certify_inputs(in, kp::Certify_mode::FILTERED);
+    const fair::Kappa_certificate e = certify_inputs(in, kp::Certify_mode::EXACT);
+    expect_same_certificate(f, e, "perturbed");
+    for (const auto& p : f.pieces) {
+      ++pieces;
+      fallback_pieces += p.root_distance > 0x1p-20 || p.extrema != 1;
+    }
+    EXPECT_FALSE(f.valid()) << f;
+  }
+  EXPECT_GT(fallback_pieces, 0u);  // the comparison exercised the exact fallback
+  EXPECT_GT(pieces, 50u);
+}
+
+// Certificates of slightly wrong curves must fail: the exact curve of a converged solve with one
+// t_i, w_i or lambda_i moved by 1e-7 still interpolates exactly and is G1 (eqs. 18 and 9 are
+// re-solved exactly), but the maximum at Q_i or the |kappa| continuity is lost beyond the
+// default tolerances (1e-9).
+TEST(KappaCertify, PerturbedParametersFailTheCertificate) {
+  std::mt19937 g(99);
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  const fair::Kappa_curve_2<Kd> curve(spiky(g, 16, 0.06), o);
+  ASSERT_TRUE(curve.report().converged) << curve.report();
+  const Exact_inputs base = inputs_of(curve);
+  ASSERT_TRUE(certify_inputs(base, kp::Certify_mode::FILTERED).valid()) << certify_inputs(base, kp::Certify_mode::FILTERED);
+  for (int what = 0; what < 3; ++what) {
+    for (const std::size_t j : {0u, 7u, 15u}) {
+      Exact_inputs in = base;
+      double& v = what == 0 ? in.t[j] : (what == 1 ? in.w[j] : in.lambda[j]);
+      v += 1e-7;
+      const fair::Kappa_certificate c = certify_inputs(in, kp::Certify_mode::FILTERED);
+      EXPECT_TRUE(c.all_points_on_pieces()) << c;
+      EXPECT_TRUE(c.all_g1()) << c;
+      EXPECT_FALSE(c.valid()) << "parameter " << what << " of piece " << j << ": " << c;
+      EXPECT_TRUE(c.max_kappa_mismatch() > 1e-9 || c.max_root_distance() > 1e-9) << c;
+    }
+  }
+}
+
+// Pieces that are not the exact curve: a middle control point moved by 1e-12 breaks exact
+// interpolation (a certified positive distance bound, at least the true distance) and G1 at both
+// of its joins; the filtered and exact paths agree on it.
+TEST(KappaCertify, MovedControlPointFailsInterpolationAndG1) {
+  typedef fair::Kappa_certificate::Exact_kernel EK;
+  std::mt19937 g(5);
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  const fair::Kappa_curve_2<Kd> curve(spiky(g, 12, 0.05), o);
+  const fair::Kappa_certificate c = fair::certify(curve);
+  ASSERT_TRUE(c.valid()) << c;
+  const std::size_t n = c.exact_pieces.size();
+  std::vector<EK::Point_2> E(n + 1), P(n), Q(n);
+  std::vector<CGAL::Gmpq> w(n);
+  std::vector<double> t(n);
+  std::vector<std::size_t> index(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    E[j] = c.exact_pieces[j].source();
+    P[j] = c.exact_pieces[j].control_point(1);
+    w[j] = c.exact_pieces[j].weight();
+    t[j] = curve.t(j);
+    index[j] = j;
+    Q[j] = EK::Point_2(fair::internal::to_gmpq(curve.points()[j].x()), fair::internal::to_gmpq(curve.points()[j].y()));
+  }
+  E[n] = E[0];
+  const fair::Kappa_certificate same = kp::certify_exact(true, index, E, P, w, t, Q);
+  EXPECT_TRUE(same.valid()) << same;
+  P[4] = EK::Point_2(P[4].x() + CGAL::Gmpq(1e-12), P[4].y());
+  const fair::Kappa_certificate f = kp::certify_exact(true, index, E, P, w, t, Q);
+  expect_same_certificate(f, kp::certify_exact(true, index, E, P, w, t, Q, kp::Certify_mode::EXACT), "moved P");
+  EXPECT_FALSE(f.pieces[4].point_on_piece);
+  EXPECT_GT(f.pieces[4].interpolation_error, 0.0);
+  // the true distance is 2 (1-t) t w / W(t) * 1e-12
+  const double tt = t[4], ww = CGAL::to_double(w[4]);
+  const double moved = 2 * (1 - tt) * tt * ww / ((1 - tt) * (1 - tt) + 2 * (1 - tt) * tt * ww + tt * tt) * 1e-12;
+  EXPECT_GE(f.pieces[4].interpolation_error, moved * (1 - 1e-6));
+  EXPECT_LE(f.pieces[4].interpolation_error, moved * (1 + 1e-3));
+  for (std::size_t j = 0; j < n; ++j) EXPECT_EQ(f.pieces[j].point_on_piece, j != 4) << j;
+  EXPECT_FALSE(f.joins[4].g1);
+  EXPECT_FALSE(f.joins[5].g1);
+  EXPECT_TRUE(f.joins[6].g1);
+  EXPECT_FALSE(f.all_g1());
+  EXPECT_FALSE(f.valid());
+}
+
+} // namespace
