@@ -812,6 +812,38 @@ TYPED_TEST(Rational_quadratic_scale_test, TinyAndHugeTrianglesAreNotCollinear) {
   EXPECT_THROW(C(P(0, 0), P(1e300, 1e300), P(1.5e300, 1.5e300), 1.0), fair::Precondition_error);
 }
 
+// Huge weights: the conic tends to the pair of lines P0P1, P1P2, a hyperbola whose asymptotes
+// enclose the control polygon's angle theta at P1, so eps -> 1 / cos(theta / 2); the implicit
+// coefficients (u + 4 w^2 v, eq. 14) must neither overflow (w up to 1e300) nor lose u needlessly.
+// Tiny weights: a flat ellipse, eps in [0, 1].
+TYPED_TEST(Rational_quadratic_scale_test, EccentricityOfExtremeWeights) {
+  typedef TypeParam K;
+  typedef typename K::Point_2 P;
+  typedef fair::Rational_quadratic_bezier_2<K> C;
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  int checked = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const P p0(U(rng), U(rng)), p1(U(rng), U(rng)), p2(U(rng), U(rng));
+    const double ax = p0.x() - p1.x(), ay = p0.y() - p1.y(), bx = p2.x() - p1.x(), by = p2.y() - p1.y();
+    const double la = std::hypot(ax, ay), lb = std::hypot(bx, by);
+    if (std::fabs(ax * by - ay * bx) < 1e-2 * la * lb) continue;  // keep theta away from 0 and pi
+    const double theta = std::acos((ax * bx + ay * by) / (la * lb));
+    const double limit = 1.0 / std::cos(theta / 2);
+    for (const double w : {1e8, 1e100, 1e200, 1e300}) {
+      const double e = C(p0, p1, p2, w).eccentricity();
+      EXPECT_NEAR(e, limit, 1e-10 * limit) << "w " << w << " theta " << theta;
+    }
+    for (const double w : {1e-8, 1e-150, 1e-300}) {
+      const double e = C(p0, p1, p2, w).eccentricity();
+      EXPECT_GE(e, 0.0);
+      EXPECT_LE(e, 1.0);
+    }
+    ++checked;
+  }
+  EXPECT_GE(checked, 20);
+}
+
 TYPED_TEST(Rational_quadratic_scale_test, UnrepresentableCurvatureThrows) {
   typedef TypeParam K;
   typedef typename K::Point_2 P;

@@ -473,42 +473,52 @@ public:
   /// Eccentricity of the conic (double): 0 circle, (0,1) ellipse, 1 parabola, > 1 hyperbola.
   /// eps = sqrt(2R / (eta (a + c) + R)), R = sqrt((a-c)^2 + b^2), eta = -sign(det M) of the
   /// 3x3 conic matrix (the paper's formula assumes eta = 1). Computed from a copy translated to
-  /// P0 and scaled by an exact power of two (eccentricity is similarity invariant), so no
-  /// overflow or underflow at any scale. Exact at the special values: returns 0 when
-  /// (a-c)^2 + b^2 == 0 and 1 when w == 1, both decided exactly on the exact input values
-  /// (a, b, c depend on coordinate differences only).
+  /// P0 and scaled by an exact power of two (eccentricity is similarity invariant), and with
+  /// the quadratic part divided by 4 w^2 when that exceeds 1, so no overflow or underflow at any
+  /// scale or weight. Exact at the special values: returns 0 when (a-c)^2 + b^2 == 0 and 1 when
+  /// w == 1, both decided exactly on the exact input values; eta is decided exactly too.
   double eccentricity() const {
     if (conic_type() == Conic_type::PARABOLA) return 1.0;
+    double eta = 1.0;
     {
+      // Exact: the circle test and eta = -sign(det M) (for large w the conic is nearly the line
+      // pair P0P1, P1P2, det M nearly 0, and its sign in double would be rounding noise).
       using internal::to_gmpq;
       typedef CGAL::Gmpq Q;
-      Q al[3], be[3];
+      Q al[3], be[3], ga[3];
       for (int i = 0; i < 3; ++i) {
         const Point_2& pj = p_[(i + 1) % 3];
         const Point_2& pk = p_[(i + 2) % 3];
-        al[i] = to_gmpq(pj.y()) - to_gmpq(pk.y());
-        be[i] = to_gmpq(pk.x()) - to_gmpq(pj.x());
+        const Q xj = to_gmpq(pj.x()), yj = to_gmpq(pj.y()), xk = to_gmpq(pk.x()), yk = to_gmpq(pk.y());
+        al[i] = yj - yk;
+        be[i] = xk - xj;
+        ga[i] = xj * yk - yj * xk;
       }
       const Q ww = to_gmpq(w_), m = Q(4) * ww * ww;
       const Q a = al[1] * al[1] - m * al[0] * al[2], c = be[1] * be[1] - m * be[0] * be[2];
       const Q b = Q(2) * al[1] * be[1] - m * (al[0] * be[2] + be[0] * al[2]);
       if (CGAL::is_zero(a - c) && CGAL::is_zero(b)) return 0.0;
+      const Q d = Q(2) * al[1] * ga[1] - m * (al[0] * ga[2] + ga[0] * al[2]);
+      const Q e = Q(2) * be[1] * ga[1] - m * (be[0] * ga[2] + ga[0] * be[2]);
+      const Q f = ga[1] * ga[1] - m * ga[0] * ga[2];
+      // 4 det [[a, b/2, d/2], [b/2, c, e/2], [d/2, e/2, f]]
+      const Q det4 = Q(4) * a * c * f + b * e * d - a * e * e - c * d * d - f * b * b;
+      eta = CGAL::sign(det4) == CGAL::POSITIVE ? -1.0 : 1.0;
     }
     const double X[3] = {0.0, edges_.ex[0], edges_.ex[2]}, Y[3] = {0.0, edges_.ey[0], edges_.ey[2]};
-    double al[3], be[3], ga[3];
+    double al[3], be[3];
     for (int i = 0; i < 3; ++i) {
       const int j = (i + 1) % 3, k = (i + 2) % 3;
-      al[i] = Y[j] - Y[k]; be[i] = X[k] - X[j]; ga[i] = X[j] * Y[k] - Y[j] * X[k];
+      al[i] = Y[j] - Y[k]; be[i] = X[k] - X[j];
     }
-    const double m = 4.0 * wd_ * wd_;
-    const double a = al[1] * al[1] - m * al[0] * al[2];
-    const double b = 2.0 * al[1] * be[1] - m * (al[0] * be[2] + be[0] * al[2]);
-    const double c = be[1] * be[1] - m * be[0] * be[2];
-    const double d = 2.0 * al[1] * ga[1] - m * (al[0] * ga[2] + ga[0] * al[2]);
-    const double e = 2.0 * be[1] * ga[1] - m * (be[0] * ga[2] + ga[0] * be[2]);
-    const double f = ga[1] * ga[1] - m * ga[0] * ga[2];
-    const double det = a * (c * f - e * e / 4) - b / 2 * (b / 2 * f - e / 2 * d / 2) + d / 2 * (b / 2 * e / 2 - c * d / 2);
-    const double eta = det > 0 ? -1.0 : 1.0;
+    // The quadratic part of eq. 14 is u + m v with m = 4 w^2; for m > 1 it is divided by m
+    // (the eccentricity is invariant under positive scaling), so that weights up to the largest
+    // double do not overflow.
+    const double m4 = 4.0 * wd_ * wd_;
+    const double s = m4 > 1.0 ? 1.0 / (4.0 * wd_) / wd_ : 1.0, m = m4 > 1.0 ? 1.0 : m4;
+    const double a = s * al[1] * al[1] - m * al[0] * al[2];
+    const double b = s * 2.0 * al[1] * be[1] - m * (al[0] * be[2] + be[0] * al[2]);
+    const double c = s * be[1] * be[1] - m * be[0] * be[2];
     const double R = std::hypot(a - c, b);
     const double den = eta * (a + c) + R;
     internal::require(den > 0 && R >= 0, "Rational_quadratic_bezier_2::eccentricity: internal error, R = ", R,
