@@ -362,12 +362,15 @@ inline double newton(const Problem& pb, State& st, const Solve_settings& setting
 /// Number of t_i, lambda_i within 1e-4 of 0 or 1. A "root" with such a value is degenerate
 /// (Q_i at a join: its piece has no interior curvature extremum there); it is never reported
 /// as converged.
-inline std::size_t bounds_active(const Problem& pb, const State& st) {
+inline std::size_t bounds_active(const Problem& pb, const State& st, std::vector<std::size_t>* blocks = nullptr) {
   std::size_t count = 0;
   const double b = 1e-4;
+  if (blocks) blocks->clear();
   for (std::size_t i = 0; i < pb.n; ++i) {
-    if (st.t[i] < b || st.t[i] > 1 - b) ++count;
-    if (pb.has_start(i) && (st.lambda[i] < b || st.lambda[i] > 1 - b)) ++count;
+    const bool t_out = st.t[i] < b || st.t[i] > 1 - b;
+    const bool lambda_out = pb.has_start(i) && (st.lambda[i] < b || st.lambda[i] > 1 - b);
+    count += (t_out ? 1 : 0) + (lambda_out ? 1 : 0);
+    if (blocks && (t_out || lambda_out)) blocks->push_back(i);
   }
   return count;
 }
@@ -407,7 +410,7 @@ inline Solve_result finish(const Problem& pb, State& st, const Solve_settings& s
       res.residual = std::max(res.residual, res.weight_residual);
     }
   }
-  res.bounds_active = bounds_active(pb, st);
+  res.bounds_active = bounds_active(pb, st, &res.boundary_blocks);
   res.converged = res.residual <= settings.tolerance && res.bounds_active == 0;
   return res;
 }

@@ -76,6 +76,7 @@ struct Solve_result {
   double weight_residual = 0;        // max |w_i - w~_i| (automatic weights)
   double energy_interpolation = 0, energy_curvature = 0, energy_g2 = 0, energy_weight = 0;
   std::size_t bounds_active = 0;     // t_i or lambda_i within 1e-4 of 0 or 1
+  std::vector<std::size_t> boundary_blocks;  // the blocks i with t_i or lambda_i there
 };
 
 // ----------------------------------------------------------------------------- residuals
