@@ -270,8 +270,57 @@ TEST(KappaCertify, FractionFreeSolveEqualsRationalSolve) {
         EXPECT_TRUE(c.exact_pieces[j].control_point(1).y() == py[j]) << "n " << n << " piece " << j;
         EXPECT_TRUE(c.exact_pieces[j].weight() == w[j]);
       }
+      // The join points are eq. 9 of these P (and equal as canonical rationals).
+      for (std::size_t j = (closed ? 0 : 1); j < np; ++j) {
+        const std::size_t a = (j + np - 1) % np;
+        const CGAL::Gmpq ex = (1 - lam[j]) * px[a] + lam[j] * px[j], ey = (1 - lam[j]) * py[a] + lam[j] * py[j];
+        EXPECT_TRUE(c.exact_pieces[j].source().x() == ex && c.exact_pieces[j].source().y() == ey) << j;
+        EXPECT_TRUE(c.exact_pieces[a].target() == c.exact_pieces[j].source()) << j;
+      }
       EXPECT_TRUE(c.all_points_on_pieces()) << c;
       EXPECT_TRUE(c.all_g1()) << c;
+    }
+  }
+}
+
+// canonical_fractions: X_i / (2^e_i Delta) in lowest terms, also with common odd factors (the
+// batch gcd G != 1), zero and negative numerators and powers of two on both sides.
+TEST(KappaCertify, CanonicalFractionsMatchGmpq) {
+  std::mt19937_64 g(8);
+  for (int trial = 0; trial < 40; ++trial) {
+    kp::Certify_int Delta;
+    mpz_set_ui(Delta.v, 1);
+    const unsigned long factors[] = {3, 5, 7, 2, 2, 1000003, 4294967291ul};
+    for (int k = 0; k < 6; ++k) {
+      mpz_mul_ui(Delta.v, Delta.v, factors[g() % 7]);
+      mpz_mul_ui(Delta.v, Delta.v, 1 + (g() >> 40));
+    }
+    std::vector<kp::Certify_int> X(12);
+    std::vector<const kp::Certify_int*> px;
+    std::vector<mp_bitcnt_t> e;
+    for (std::size_t i = 0; i < X.size(); ++i) {
+      if (i % 5 == 4) mpz_set_ui(X[i].v, 0);
+      else {
+        mpz_set_ui(X[i].v, 1 + (g() >> 20));
+        mpz_mul_ui(X[i].v, X[i].v, factors[g() % 7]);
+        if (trial % 2) mpz_mul(X[i].v, X[i].v, Delta.v);  // all share Delta's factors
+        mpz_mul_2exp(X[i].v, X[i].v, g() % 5);
+        if (g() % 2) mpz_neg(X[i].v, X[i].v);
+      }
+      px.push_back(&X[i]);
+      e.push_back(g() % 70);
+    }
+    const std::vector<CGAL::Gmpq> f = kp::canonical_fractions(px, e, Delta);
+    for (std::size_t i = 0; i < X.size(); ++i) {
+      mpq_t q;
+      mpq_init(q);
+      mpz_set(mpq_numref(q), X[i].v);
+      mpz_mul_2exp(mpq_denref(q), Delta.v, e[i]);
+      mpq_canonicalize(q);
+      EXPECT_TRUE(f[i] == CGAL::Gmpq(q)) << "trial " << trial << " entry " << i;
+      EXPECT_EQ(mpz_cmp(mpq_numref(f[i].mpq()), mpq_numref(q)), 0);  // same representation
+      EXPECT_EQ(mpz_cmp(mpq_denref(f[i].mpq()), mpq_denref(q)), 0);
+      mpq_clear(q);
     }
   }
 }

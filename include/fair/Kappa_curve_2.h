@@ -624,23 +624,33 @@ inline Kappa_certificate certify_parameters(bool closed, const std::vector<std::
   Kappa_certificate cert;
   // rho >= 1, so 1 is an upper bound of 1/rho for the interpolation distance.
   certify_scaled(closed, point_index, Es, Ps, w, t_d, Qs, 1.0, mode, cert);
-  // exact_pieces in original coordinates: P_j = N_j / Delta, E_j = E~_j / rho (canonical Gmpq).
-  std::vector<EP> Po(n), Eo(n + 1);
-  auto over_delta = [&Delta](const Certify_int& z) {
-    mpq_t q;
-    mpq_init(q);
-    mpz_set(mpq_numref(q), z.v);
-    mpz_set(mpq_denref(q), Delta.v);
-    mpq_canonicalize(q);
-    Q r(q);
-    mpq_clear(q);
-    return r;
-  };
-  for (std::size_t j = 0; j < n; ++j) Po[j] = EP(over_delta(Nx[j]), over_delta(Ny[j]));
+  // exact_pieces in original coordinates, canonical Gmpq (canonical_fractions: one big gcd).
+  // P_j = N_j / Delta, E_j = ((2^k - l) N_{j-1} + l N_j) / (2^k Delta) for lambda_j = l / 2^k.
+  std::vector<Certify_int> Ex(n), Ey(n);
+  std::vector<const Certify_int*> X;
+  std::vector<mp_bitcnt_t> e;
   for (std::size_t j = 0; j < n; ++j) {
-    if (!closed && j == 0) { Eo[0] = EP(sx, sy); continue; }
-    Eo[j] = EP(Es[j].x() / rho, Es[j].y() / rho);
+    X.push_back(&Nx[j]); X.push_back(&Ny[j]);
+    e.push_back(0); e.push_back(0);
   }
+  for (std::size_t j = (closed ? 0 : 1); j < n; ++j) {
+    const std::size_t a = (j + n - 1) % n;
+    const mpz_srcptr l = mpq_numref(lam[j].mpq()), den = mpq_denref(lam[j].mpq());  // den = 2^k
+    const mp_bitcnt_t k = mpz_sizeinbase(den, 2) - 1;
+    Certify_int ml;
+    mpz_sub(ml.v, den, l);
+    mpz_mul(Ex[j].v, ml.v, Nx[a].v);
+    mpz_addmul(Ex[j].v, l, Nx[j].v);
+    mpz_mul(Ey[j].v, ml.v, Ny[a].v);
+    mpz_addmul(Ey[j].v, l, Ny[j].v);
+    X.push_back(&Ex[j]); X.push_back(&Ey[j]);
+    e.push_back(k); e.push_back(k);
+  }
+  const std::vector<Q> F = canonical_fractions(X, e, Delta);
+  std::vector<EP> Po(n), Eo(n + 1);
+  for (std::size_t j = 0; j < n; ++j) Po[j] = EP(F[2 * j], F[2 * j + 1]);
+  if (!closed) Eo[0] = EP(sx, sy);
+  for (std::size_t j = (closed ? 0 : 1), r = 2 * n; j < n; ++j, r += 2) Eo[j] = EP(F[r], F[r + 1]);
   Eo[n] = closed ? Eo[0] : EP(ex, ey);
   for (std::size_t j = 0; j < n; ++j)
     if (cert.pieces[j].valid_piece) cert.exact_pieces.emplace_back(Eo[j], Po[j], Eo[j + 1], w[j]);

@@ -263,6 +263,49 @@ inline void exact_eq18_integer(bool closed, const std::vector<CGAL::Gmpq>& qx, c
   Ny = std::move(N[1]);
 }
 
+/// The canonical rationals X_i / (2^e_i Delta) (Delta > 0) with a single big gcd (batch
+/// coprimality): with Delta = 2^z D, D odd, and G = gcd(prod_{X_i != 0} X_i mod D, D), every
+/// common divisor of X_i and D divides G, so gcd(X_i, D) = gcd(X_i, G) -- 1 without any work when
+/// G == 1, the usual case. Powers of two are cancelled by counting trailing zeros. Cost: one
+/// modular multiplication per entry and one gcd, instead of one gcd of ~|Delta|-bit integers per
+/// entry (which dominated building the certificate's canonical Gmpq pieces).
+inline std::vector<CGAL::Gmpq> canonical_fractions(const std::vector<const Certify_int*>& X,
+                                                   const std::vector<mp_bitcnt_t>& e, const Certify_int& Delta) {
+  Certify_int D, M, G, g, num, den;
+  const mp_bitcnt_t z = mpz_scan1(Delta.v, 0);
+  mpz_fdiv_q_2exp(D.v, Delta.v, z);
+  mpz_set_ui(M.v, 1);
+  for (const Certify_int* x : X)
+    if (mpz_sgn(x->v) != 0) {
+      mpz_mul(M.v, M.v, x->v);
+      mpz_mod(M.v, M.v, D.v);
+    }
+  mpz_gcd(G.v, M.v, D.v);
+  const bool coprime = mpz_cmp_ui(G.v, 1) == 0;
+  std::vector<CGAL::Gmpq> out(X.size());
+  mpq_t q;
+  mpq_init(q);
+  for (std::size_t i = 0; i < X.size(); ++i) {
+    if (mpz_sgn(X[i]->v) == 0) continue;  // out[i] == 0
+    if (coprime) {
+      mpz_set(num.v, X[i]->v);
+      mpz_set(den.v, D.v);
+    } else {
+      mpz_gcd(g.v, X[i]->v, G.v);
+      mpz_divexact(num.v, X[i]->v, g.v);
+      mpz_divexact(den.v, D.v, g.v);
+    }
+    const mp_bitcnt_t twos = e[i] + z, tn = mpz_scan1(num.v, 0), c = std::min(twos, tn);
+    mpz_fdiv_q_2exp(num.v, num.v, c);  // exact: c <= trailing zeros of num
+    mpz_mul_2exp(den.v, den.v, twos - c);
+    mpz_swap(mpq_numref(q), num.v);
+    mpz_swap(mpq_denref(q), den.v);
+    out[i] = CGAL::Gmpq(q);  // canonical: den > 0, gcd(num, den) == 1
+  }
+  mpq_clear(q);
+  return out;
+}
+
 /// Sign of the Bernstein quartic sum_k b_k C(4,k) (1-t)^(4-k) t^k at the double t, from
 /// enclosures b of its coefficients (call with upward rounding, CGAL::Protect_FPU_rounding):
 /// +1 / -1 when certain, 0 when the enclosure contains 0.
