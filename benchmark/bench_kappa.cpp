@@ -82,24 +82,29 @@ void BM_kappa_warm_resolve_1000(benchmark::State& state) {
 }
 BENCHMARK(BM_kappa_warm_resolve_1000)->Unit(benchmark::kMillisecond);
 
-// Exact certification of 10^4 pieces, as 100 closed curves of 100 pieces (the exact eq.-18
-// solve costs O(n^2) bit operations per curve, see doc/kappa_curves.md).
+// Exact certification of 10^4 pieces, as 500 closed curves of 20 pieces or 100 of 100 (the
+// exact control points have ~200 n bits: O(n^2) bit operations per curve, see
+// doc/kappa_curves.md). Arg 1: 0 = fair::certify (interval filter for eq. 4, exact fallback),
+// 1 = forced exact eq.-4 isolation for every piece (internal::kappa::Certify_mode::EXACT).
 void BM_kappa_certify_10000_pieces(benchmark::State& state) {
   const std::size_t per_curve = static_cast<std::size_t>(state.range(0));
+  const bool exact = state.range(1) != 0;
   const std::size_t curves_count = 10000 / per_curve;
   std::vector<fair::Kappa_curve_2<K>> curves;
   fair::Kappa_curve_options o;
   o.closed = true;
   for (std::size_t c = 0; c < curves_count; ++c) curves.emplace_back(random_star(per_curve, 100 + c), o);
   std::size_t valid = 0;
+  namespace kp = fair::internal::kappa;
   for (auto _ : state) {
     valid = 0;
-    for (const auto& curve : curves) valid += fair::certify(curve).valid() ? 1 : 0;
+    for (const auto& curve : curves)
+      valid += (exact ? kp::certify_curve(curve, kp::Certify_mode::EXACT) : fair::certify(curve)).valid() ? 1 : 0;
   }
   state.counters["valid_curves"] = static_cast<double>(valid);
   state.counters["curves"] = static_cast<double>(curves_count);
 }
-BENCHMARK(BM_kappa_certify_10000_pieces)->Arg(20)->Arg(100)->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_kappa_certify_10000_pieces)->Args({20, 0})->Args({100, 0})->Args({20, 1})->Iterations(1)->Unit(benchmark::kMillisecond);
 
 // O(n) certification of the pieces actually returned (fair::certify_pieces): one closed EPECK
 // curve of 10^4 pieces (its E_j exact from the rounded P_j), certified piece by piece.
