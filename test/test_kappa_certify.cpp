@@ -430,6 +430,20 @@ TEST(KappaCertify, MovedControlPointFailsInterpolationAndG1) {
   EXPECT_TRUE(f.joins[6].g1);
   EXPECT_FALSE(f.all_g1());
   EXPECT_FALSE(f.valid());
+  // The same with the lambda_j given (the filtered G1 identity E_j - P_{j-1} == lambda_j (P_j -
+  // P_{j-1})): it fails at the moved point and the exact predicates decide; a join point slid
+  // along its tangent line (mu != lambda) is still G1, but breaks interpolation of both pieces.
+  std::vector<double> lambda(curve.state().lambda);
+  const fair::Kappa_certificate fl = kp::certify_exact(true, index, E, P, w, t, Q, kp::Certify_mode::FILTERED, &lambda);
+  expect_same_certificate(fl, f, "moved P, lambda given");
+  P[4] = c.exact_pieces[4].control_point(1);
+  const CGAL::Gmpq mu(0.3);
+  ASSERT_NE(CGAL::to_double(mu), lambda[8]);
+  E[8] = EK::Point_2(P[7].x() + mu * (P[8].x() - P[7].x()), P[7].y() + mu * (P[8].y() - P[7].y()));
+  const fair::Kappa_certificate slid = kp::certify_exact(true, index, E, P, w, t, Q, kp::Certify_mode::FILTERED, &lambda);
+  expect_same_certificate(slid, kp::certify_exact(true, index, E, P, w, t, Q, kp::Certify_mode::EXACT), "slid E");
+  EXPECT_TRUE(slid.all_g1()) << slid;
+  for (std::size_t j = 0; j < n; ++j) EXPECT_EQ(slid.pieces[j].point_on_piece, j != 7 && j != 8) << j;
 }
 
 } // namespace

@@ -447,9 +447,11 @@ struct Kappa_certificate {
 namespace internal {
 namespace kappa {
 
-/// How certify_* decide the curvature extrema of a piece: FILTERED runs the interval filter
-/// eq4_filtered_extremum first (exact isolation only where it is undecided); EXACT always runs
-/// Rational_quadratic_bezier_2::curvature_extrema (for tests of the filter).
+/// How certify_* decide: FILTERED runs the filters first -- eq4_filtered_extremum for the
+/// curvature extrema (exact isolation only where it is undecided), the interval sign of the
+/// control triangle's area, and the exact but cheap G1 identity E_j - P_{j-1} == lambda_j
+/// (P_j - P_{j-1}) -- with the exact predicates as fallback; EXACT always runs the exact
+/// predicates and Rational_quadratic_bezier_2::curvature_extrema (for tests of the filters).
 enum class Certify_mode { FILTERED, EXACT };
 
 /// The exact per-piece and per-join checks of certify() and certify_pieces() on exact pieces
@@ -464,7 +466,8 @@ inline void certify_scaled(bool closed, const std::vector<std::size_t>& point_in
                            const std::vector<Kappa_certificate::Exact_kernel::Point_2>& P,
                            const std::vector<CGAL::Gmpq>& w, const std::vector<double>& tt,
                            const std::vector<Kappa_certificate::Exact_kernel::Point_2>& Qp,
-                           double inverse_scale_upper, Certify_mode mode, Kappa_certificate& cert) {
+                           double inverse_scale_upper, Certify_mode mode, Kappa_certificate& cert,
+                           const std::vector<double>* lambda = nullptr) {
   typedef CGAL::Gmpq Q;
   typedef Kappa_certificate::Exact_kernel EK;
   typedef CGAL::Interval_nt<false> I;
@@ -481,7 +484,15 @@ inline void certify_scaled(bool closed, const std::vector<std::size_t>& point_in
     Kappa_certificate::Piece pc;
     pc.point_index = point_index[j];
     pc.t = tt[j];
-    pc.valid_piece = E[j] != E[j + 1] && orient(E[j], P[j], E[j + 1]) != CGAL::COLLINEAR && w[j] > 0;
+    // Not collinear: decided by the interval determinant when its sign is certain, else exactly.
+    int area_sign = 0;
+    if (mode == Certify_mode::FILTERED) {
+      CGAL::Protect_FPU_rounding<true> guard;
+      const I det = (px[j] - ex[j]) * (ey[j + 1] - ey[j]) - (py[j] - ey[j]) * (ex[j + 1] - ex[j]);
+      area_sign = det.inf() > 0 ? 1 : (det.sup() < 0 ? -1 : 0);
+    }
+    pc.valid_piece = w[j] > 0 && E[j] != E[j + 1] &&
+                     (area_sign != 0 || orient(E[j], P[j], E[j + 1]) != CGAL::COLLINEAR);
     if (pc.valid_piece) {
       // c_j(t_j) == Q_j  <=>  (1-t)^2 E_j + 2 (1-t) t w P_j + t^2 E_{j+1} == W(t) Q_j  (eq. 1)
       const Q t(tt[j]), u = Q(1) - t, c0 = u * u, c1 = Q(2) * u * t * w[j], c2 = t * t, D = c0 + c1 + c2;
@@ -542,7 +553,16 @@ inline void certify_scaled(bool closed, const std::vector<std::size_t>& point_in
     Kappa_certificate::Join jn;
     jn.piece = j;
     jn.c0 = true;  // set by the caller from the exact pieces
-    jn.g1 = orient(P[a], E[j], P[j]) == CGAL::COLLINEAR && CGAL::collinear_are_strictly_ordered_along_line(P[a], E[j], P[j]);
+    // G1: P_{a}, E_j, P_j collinear with E_j strictly between. Sufficient and cheap (no product
+    // of two long numbers): E_j - P_a == lambda_j (P_j - P_a) exactly with 0 < lambda_j < 1 and
+    // P_a != P_j; otherwise the exact orientation and order decide.
+    bool g1 = false;
+    if (mode == Certify_mode::FILTERED && lambda != nullptr && (*lambda)[j] > 0 && (*lambda)[j] < 1 && P[a] != P[j]) {
+      const Q l((*lambda)[j]);
+      g1 = E[j].x() - P[a].x() == l * (P[j].x() - P[a].x()) && E[j].y() - P[a].y() == l * (P[j].y() - P[a].y());
+    }
+    jn.g1 = g1 || (orient(P[a], E[j], P[j]) == CGAL::COLLINEAR &&
+                   CGAL::collinear_are_strictly_ordered_along_line(P[a], E[j], P[j]));
     const I A[2] = {ex[a], ey[a]}, Pa[2] = {px[a], py[a]}, Ej[2] = {ex[j], ey[j]}, Pj[2] = {px[j], py[j]};
     const I B[2] = {ex[j + 1], ey[j + 1]};
     relative_mismatch_interval(A, Pa, Ej, Pj, B, wi[a], wi[j], jn.kappa_mismatch_lower, jn.kappa_mismatch_upper);
@@ -556,9 +576,10 @@ inline Kappa_certificate certify_exact(bool closed, const std::vector<std::size_
                                        const std::vector<Kappa_certificate::Exact_kernel::Point_2>& P,
                                        const std::vector<CGAL::Gmpq>& w, const std::vector<double>& tt,
                                        const std::vector<Kappa_certificate::Exact_kernel::Point_2>& Qp,
-                                       Certify_mode mode = Certify_mode::FILTERED) {
+                                       Certify_mode mode = Certify_mode::FILTERED,
+                                       const std::vector<double>* lambda = nullptr) {
   Kappa_certificate cert;
-  certify_scaled(closed, point_index, E, P, w, tt, Qp, 1.0, mode, cert);
+  certify_scaled(closed, point_index, E, P, w, tt, Qp, 1.0, mode, cert, lambda);
   const std::size_t n = P.size();
   for (std::size_t j = 0; j < n; ++j)
     if (cert.pieces[j].valid_piece) cert.exact_pieces.emplace_back(E[j], P[j], E[j + 1], w[j]);
@@ -623,7 +644,7 @@ inline Kappa_certificate certify_parameters(bool closed, const std::vector<std::
   Es[n] = closed ? Es[0] : EP(rho * ex, rho * ey);
   Kappa_certificate cert;
   // rho >= 1, so 1 is an upper bound of 1/rho for the interpolation distance.
-  certify_scaled(closed, point_index, Es, Ps, w, t_d, Qs, 1.0, mode, cert);
+  certify_scaled(closed, point_index, Es, Ps, w, t_d, Qs, 1.0, mode, cert, &lambda_d);
   // exact_pieces in original coordinates, canonical Gmpq (canonical_fractions: one big gcd).
   // P_j = N_j / Delta, E_j = ((2^k - l) N_{j-1} + l N_j) / (2^k Delta) for lambda_j = l / 2^k.
   std::vector<Certify_int> Ex(n), Ey(n);
@@ -724,7 +745,8 @@ Kappa_certificate certify_pieces(const Kappa_curve_2<K>& curve) {
     Qp[j] = ex(curve.points()[index[j]]);
   }
   E[n] = ex(curve.piece(n - 1).control_point(2));
-  return internal::kappa::certify_exact(curve.is_closed(), index, E, P, w, t, Qp);
+  return internal::kappa::certify_exact(curve.is_closed(), index, E, P, w, t, Qp,
+                                        internal::kappa::Certify_mode::FILTERED, &curve.state().lambda);
 }
 
 } // namespace fair
