@@ -104,8 +104,7 @@ public:
   /// n block rows; cyclic: closed-curve structure, else clipped.
   void reset(std::size_t n, bool cyclic) {
     resize(n, cyclic);
-    std::fill(lower_.begin(), lower_.end(), Block4{});
-    std::fill(upper_.begin(), upper_.end(), Block4{});
+    std::fill(a_.begin(), a_.end(), Block4{});
   }
   /// As reset(), but the blocks keep stale values: the caller sets every block (all four slots
   /// of every row, zero where the structure has no block). Saves one pass over the storage.
@@ -113,19 +112,14 @@ public:
     n_ = n;
     cyclic_ = cyclic;
     dense_ = cyclic && n < small_cyclic;
-    lower_.resize(2 * n_);
-    upper_.resize(2 * n_);
+    a_.resize(4 * n_);
     wrap_columns_.clear();
   }
   std::size_t blocks() const { return n_; }
 
   /// Block of row i at slot k (column block i-2+k, cyclically or -- open -- when it exists).
-  Block4& block(std::size_t i, int k) {
-    return k < 2 ? lower_[2 * i + static_cast<std::size_t>(k)] : upper_[2 * i + static_cast<std::size_t>(k - 2)];
-  }
-  const Block4& block(std::size_t i, int k) const {
-    return k < 2 ? lower_[2 * i + static_cast<std::size_t>(k)] : upper_[2 * i + static_cast<std::size_t>(k - 2)];
-  }
+  Block4& block(std::size_t i, int k) { return a_[4 * i + static_cast<std::size_t>(k)]; }
+  const Block4& block(std::size_t i, int k) const { return a_[4 * i + static_cast<std::size_t>(k)]; }
 
   /// Factorises in place. Returns false on a numerically singular pivot block or capacitance.
   bool factor() {
@@ -144,9 +138,7 @@ public:
   template <class Fill>
   bool factor_rows(Fill&& fill, double* b) {
     for (std::size_t i = 0; i < n_; ++i) {
-      Block4 row[4];
-      fill(i, row);
-      for (int k = 0; k < 4; ++k) block(i, k) = row[k];
+      fill(i, &a_[4 * i]);
       if (dense_) continue;
       if (!eliminate_row(i)) return false;
       forward_row(i, b);
@@ -407,9 +399,7 @@ private:
 
   std::size_t n_ = 0;
   bool cyclic_ = false, dense_ = false;
-  // Slots 0, 1 (L after factoring) and 2, 3 (D^{-1}, U) apart: the forward and backward
-  // sweeps each stream one contiguous array.
-  std::vector<Block4> lower_, upper_;
+  std::vector<Block4> a_;
   Spike top_, bottom_;                     // Z = B^{-1} U
   std::vector<std::size_t> wrap_columns_;  // unknown index picked by each column of V
   Banded_lu capacitance_;                  // I + V^T Z (dense: bandwidths m-1)
