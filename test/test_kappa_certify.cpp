@@ -283,6 +283,38 @@ TEST(KappaCertify, FractionFreeSolveEqualsRationalSolve) {
   }
 }
 
+// EPECK input points with non-dyadic rational coordinates (thirds and sevenths): the rows of
+// eq. 18 get odd denominators, the scaled copy is no longer dyadic; still exact and equal to
+// the rational solve, and the converged curve is certified.
+TEST(KappaCertify, NonDyadicRationalInputPoints) {
+  std::mt19937 g(31);
+  for (const bool closed : {true, false}) {
+    std::vector<Epeck::Point_2> q;
+    for (const Kd::Point_2& p : spiky(g, 14, 0.06))
+      q.push_back(Epeck::Point_2(Epeck::FT(p.x()) / 3, Epeck::FT(p.y()) / 7));
+    fair::Kappa_curve_options o;
+    o.closed = closed;
+    const fair::Kappa_curve_2<Epeck> curve(q, o);
+    ASSERT_TRUE(curve.report().converged) << curve.report();
+    const fair::Kappa_certificate c = fair::certify(curve);
+    EXPECT_TRUE(c.valid()) << c;
+    const Exact_inputs in = inputs_of(curve);
+    const std::size_t np = in.qx.size();
+    EXPECT_GT(mpz_popcount(mpq_denref(in.qx[np / 2].mpq())), 1u);  // really not dyadic
+    std::vector<CGAL::Gmpq> lam(np), t(np), w(np), px, py;
+    for (std::size_t j = 0; j < np; ++j) {
+      lam[j] = CGAL::Gmpq(closed || j > 0 ? in.lambda[j] : 0.5);
+      t[j] = CGAL::Gmpq(in.t[j]);
+      w[j] = CGAL::Gmpq(in.w[j]);
+    }
+    kp::exact_eq18(closed, in.qx, in.qy, in.sx, in.sy, in.ex, in.ey, lam, t, w, px, py);
+    ASSERT_EQ(c.exact_pieces.size(), np);
+    for (std::size_t j = 0; j < np; ++j)
+      EXPECT_TRUE(c.exact_pieces[j].control_point(1).x() == px[j] && c.exact_pieces[j].control_point(1).y() == py[j]);
+    expect_same_certificate(c, certify_inputs(in, kp::Certify_mode::EXACT), "non-dyadic");
+  }
+}
+
 // canonical_fractions: X_i / (2^e_i Delta) in lowest terms, also with common odd factors (the
 // batch gcd G != 1), zero and negative numerators and powers of two on both sides.
 TEST(KappaCertify, CanonicalFractionsMatchGmpq) {
