@@ -637,6 +637,27 @@ TYPED_TEST(Rational_quadratic_test, Eq7DegenerateInputsThrow) {
 }
 
 // ------------------------------------------------------------------ degenerate pieces
+// Orientation beyond the interval filter: in exact kernels thirds are not dyadic, so the filter
+// on their enclosures cannot decide a determinant of 1e-40 / 3 and the exact fallback must (a
+// correct turn, and an exactly collinear triple rejected). In double kernels the 1e-40 is
+// rounded away and 2 * fl(1/3) == fl(2/3): all three triples are collinear, decided exactly.
+TYPED_TEST(Rational_quadratic_test, OrientationBeyondTheIntervalFilter) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  typedef fair::Rational_quadratic_bezier_2<K> Rq;
+  const FT third = q<K>(1, 3), tiny = FT(1e-40);
+  const P a(FT(0), FT(0)), b(third, third), c(FT(2) * third, FT(2) * third + tiny), d(FT(2) * third, FT(2) * third - tiny);
+  if (is_exact<K>()) {
+    EXPECT_EQ(Rq(a, b, c, FT(1)).orientation(), CGAL::LEFT_TURN);
+    EXPECT_EQ(Rq(a, b, d, FT(1)).orientation(), CGAL::RIGHT_TURN);
+  } else {
+    EXPECT_THROW(Rq(a, b, c, FT(1)), fair::Precondition_error);
+    EXPECT_THROW(Rq(a, b, d, FT(1)), fair::Precondition_error);
+  }
+  EXPECT_THROW(Rq(a, b, P(FT(2) * third, FT(2) * third), FT(1)), fair::Precondition_error);
+}
+
 TYPED_TEST(Rational_quadratic_test, DegeneratePiecesThrow) {
   typedef TypeParam K;
   typedef typename K::FT FT;

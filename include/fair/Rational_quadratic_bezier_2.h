@@ -203,7 +203,19 @@ public:
                                                             CGAL::to_double(p1.x()), CGAL::to_double(p1.y()),
                                                             CGAL::to_double(p2.x()), CGAL::to_double(p2.y()));
     } else {
-      orientation_ = K().orientation_2_object()(p0, p1, p2);
+      // Interval filter on enclosures of the exact coordinates first: the exact determinant
+      // over Gmpq (Simple_cartesian<Gmpq>) costs a dozen gcds; EPECK filters on its own.
+      typedef CGAL::Interval_nt<false> I;
+      CGAL::Orientation filtered = CGAL::COLLINEAR;
+      {
+        CGAL::Protect_FPU_rounding<true> guard;
+        const I x0(CGAL::to_interval(p0.x())), y0(CGAL::to_interval(p0.y())), x1(CGAL::to_interval(p1.x()));
+        const I y1(CGAL::to_interval(p1.y())), x2(CGAL::to_interval(p2.x())), y2(CGAL::to_interval(p2.y()));
+        const I d = (x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0);
+        if (d.inf() > 0) filtered = CGAL::LEFT_TURN;
+        else if (d.sup() < 0) filtered = CGAL::RIGHT_TURN;
+      }
+      orientation_ = filtered != CGAL::COLLINEAR ? filtered : K().orientation_2_object()(p0, p1, p2);
     }
     internal::require(orientation_ != CGAL::COLLINEAR, fn, ": degenerate piece, collinear control points P0 = (",
                       CGAL::to_double(p0.x()), ", ", CGAL::to_double(p0.y()), "), P1 = (", CGAL::to_double(p1.x()),
