@@ -432,6 +432,22 @@ TEST(Kappa, NonConvergenceIsReportedOrThrown) {
   EXPECT_THROW(fair::Kappa_curve_2<Kd>(p, o), fair::Non_convergence_error);
 }
 
+// A data set without an interior solution (doc/kappa_existence.md, the first failure of its
+// survey: open, w = 1): every equation holds, but t of the first interior point ends at 1 --
+// the point lies on a join. Reported as not converged, the point named, the curve still an
+// interpolating G1 curve with continuous |kappa|.
+TEST(Kappa, BoundaryRootNamesThePoint) {
+  const std::vector<Pd> p = {Pd(0.8420396853122557, 0.73342007152880162), Pd(0.46358155033629755, 0.8249558033892006),
+                             Pd(0.4147174195865368, 0.82380946371988828), Pd(0.27611375678874384, 0.64727747335147212)};
+  const fair::Kappa_curve_2<Kd> c(p, fair::Kappa_curve_options{});
+  EXPECT_FALSE(c.report().converged);
+  EXPECT_GE(c.report().bounds_active, 1u);
+  ASSERT_EQ(c.report().boundary_points, std::vector<std::size_t>{1}) << c.report();
+  EXPECT_GT(c.t(0), 1 - 1e-4);
+  EXPECT_LE(c.report().residual, 1e-11);
+  EXPECT_LE(check_curve(c).interpolation, 1e-12);
+}
+
 TEST(Kappa, HundredThousandPoints) {
   std::mt19937 g(1);
   const std::vector<Pd> p = spiky_star(g, 100000, 0.05);

@@ -73,10 +73,10 @@ struct Kappa_curve_options {
   std::vector<double> tension;
   /// AUTOMATIC: lower clamp of eq. 16 (paper: 1/2, pieces of at most 120 degrees of a circle).
   double weight_clamp = 0.5;
-  /// Cap on the alternating passes of the initial guess (Sec. 5.1; the paper uses 60) before
-  /// the Newton-type solve; they stop early once the residual is below 1e-4.
+  /// Cap on the alternating passes (Sec. 5.1; the paper uses 60): two before Newton's method,
+  /// the rest (stopping once the residual is below 1e-3) only if Newton's method fails.
   std::size_t refinement_passes = 60;
-  /// Cap on the Levenberg-Marquardt iterations.
+  /// Cap on the iterations (Jacobians) of Newton's method and Levenberg-Marquardt together.
   std::size_t max_iterations = 200;
   /// Stop when the max-norm residual is at most this.
   double tolerance = 1e-12;
@@ -89,7 +89,7 @@ struct Kappa_solve_report {
   bool converged = false;
   bool warm_started = false;
   std::size_t refinement_passes = 0;
-  std::size_t iterations = 0;          ///< Levenberg-Marquardt iterations
+  std::size_t iterations = 0;          ///< Jacobians evaluated (Newton and Levenberg-Marquardt)
   double residual = 0;                 ///< max of the four below
   double interpolation_residual = 0;   ///< max |c_i(t_i) - Q_i| / (half size of the bounding box)
   double curvature_residual = 0;       ///< max |eq. 7| / (A_i + C_i)
@@ -101,6 +101,9 @@ struct Kappa_solve_report {
   /// Number of t_i or lambda_i within 1e-4 of 0 or 1: the data have no (well-separated) interior solution
   /// there (an interpolated point lands on a join); such a solve is never "converged".
   std::size_t bounds_active = 0;
+  /// The input points whose t_i or lambda_i is there (indices into points()): each lies on a
+  /// join, not at a curvature maximum (see doc/kappa_existence.md). Empty when converged.
+  std::vector<std::size_t> boundary_points;
   double energy() const { return energy_interpolation + energy_curvature + energy_g2 + energy_weight; }
 
   friend std::ostream& operator<<(std::ostream& out, const Kappa_solve_report& r) {
@@ -341,6 +344,7 @@ private:
     rep.energy_g2 = res.energy_g2;
     rep.energy_weight = res.energy_weight;
     rep.bounds_active = res.bounds_active;
+    for (const std::size_t b : res.boundary_blocks) rep.boundary_points.push_back(point_index(b));
     if (!rep.converged && opt_.throw_on_non_convergence)
       throw Non_convergence_error(internal::message("Kappa_curve_2: no convergence after ", rep.iterations,
                                                     " iterations, residual ", rep.residual, " > tolerance ",

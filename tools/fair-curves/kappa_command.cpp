@@ -120,6 +120,7 @@ void run_kappa(const Kappa_command_options& o) {
                              {"g2_eq11", r.energy_g2},
                              {"weight_eq13", r.energy_weight}}},
                            {"bounds_active", r.bounds_active},
+                           {"boundary_points", r.boundary_points},
                            {"pieces", pieces}};
     std::ostringstream out;
     fair::io::write_json(out, j);
@@ -140,6 +141,12 @@ void run_kappa(const Kappa_command_options& o) {
               << ", " << (r.converged ? "converged" : "NOT converged") << " after "
               << r.refinement_passes << " passes and " << r.iterations << " iterations, residual "
               << format_number(r.residual, 3) << ", energy " << format_number(r.energy(), 3) << "\n";
+  if (o.json_out != "-" && !r.boundary_points.empty()) {
+    // No interior solution found: name the points that ended on a join (doc/kappa_existence.md).
+    std::cout << "  on a join (t or lambda at 0 or 1), not at a curvature maximum: point";
+    for (const std::size_t i : r.boundary_points) std::cout << " " << i;
+    std::cout << " (0-based)\n";
+  }
   if (o.json_out == "-") std::cout << json_text;
   else if (!o.json_out.empty()) fair::io::write_text_file(o.json_out, json_text);
   if (!o.svg_out.empty()) fair::io::write_text_file(o.svg_out, svg_text);
