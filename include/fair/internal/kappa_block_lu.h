@@ -35,6 +35,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -104,7 +105,7 @@ public:
   /// n block rows; cyclic: closed-curve structure, else clipped.
   void reset(std::size_t n, bool cyclic) {
     resize(n, cyclic);
-    std::fill(a_.begin(), a_.end(), Block4{});
+    std::fill(a_.get(), a_.get() + 4 * n_, Block4{});
   }
   /// As reset(), but the blocks keep stale values: the caller sets every block (all four slots
   /// of every row, zero where the structure has no block). Saves one pass over the storage.
@@ -112,7 +113,10 @@ public:
     n_ = n;
     cyclic_ = cyclic;
     dense_ = cyclic && n < small_cyclic;
-    a_.resize(4 * n_);
+    if (4 * n_ > capacity_) {  // default-initialised: no zero-fill of storage about to be set
+      a_.reset(new Block4[4 * n_]);
+      capacity_ = 4 * n_;
+    }
     wrap_columns_.clear();
   }
   std::size_t blocks() const { return n_; }
@@ -399,7 +403,8 @@ private:
 
   std::size_t n_ = 0;
   bool cyclic_ = false, dense_ = false;
-  std::vector<Block4> a_;
+  std::unique_ptr<Block4[]> a_;
+  std::size_t capacity_ = 0;
   Spike top_, bottom_;                     // Z = B^{-1} U
   std::vector<std::size_t> wrap_columns_;  // unknown index picked by each column of V
   Banded_lu capacitance_;                  // I + V^T Z (dense: bandwidths m-1)

@@ -434,13 +434,14 @@ inline Solve_result solve(const Problem& pb, State& st, const Solve_settings& se
     // paper's way (up to refinement_passes passes) with Levenberg-Marquardt.
     const std::size_t fast_passes = std::min<std::size_t>(2, settings.refinement_passes);
     refine(pb, st, fast_passes, 1e-3, res);
-    State start = st;
-    Solve_result fast = res;
-    const double f = newton(pb, st, settings, fast, std::min<std::size_t>(settings.max_iterations, newton_iterations));
-    if (f <= settings.tolerance && bounds_active(pb, st) == 0) return finish(pb, st, settings, fast, f);
-    res.iterations = fast.iterations;
-    st = start;
-    refine(pb, st, settings.refinement_passes - fast_passes, 1e-3, res);
+    const double f = newton(pb, st, settings, res, std::min<std::size_t>(settings.max_iterations, newton_iterations));
+    if (f <= settings.tolerance && bounds_active(pb, st) == 0) return finish(pb, st, settings, res, f);
+    // The start is recomputed (deterministic) rather than kept: no copy of the state on the
+    // fast path.
+    initial_guess(pb, st);
+    Solve_result passes;
+    refine(pb, st, settings.refinement_passes, 1e-3, passes);
+    res.refinement_passes = passes.refinement_passes;
   }
   double fmax = std::numeric_limits<double>::infinity();
   bool local_done = false;
