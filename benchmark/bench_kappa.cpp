@@ -51,7 +51,7 @@ void solve(benchmark::State& state, fair::Kappa_weights weights) {
     converged = converged && curve.report().converged;
     benchmark::DoNotOptimize(curve.pieces().data());
   }
-  state.counters["lm_iterations"] = static_cast<double>(iterations);
+  state.counters["jacobians"] = static_cast<double>(iterations);
   state.counters["passes"] = static_cast<double>(passes);
   state.counters["converged"] = converged ? 1 : 0;
   state.SetComplexityN(state.range(0));
