@@ -203,6 +203,24 @@ Exact_inputs inputs_of(const fair::Kappa_curve_2<K>& curve) {
   return in;
 }
 
+// The solver's parameters as rationals (lambda_0 of an open curve, unused, as 1/2) and the exact
+// eq.-18 solution for them by plain rational elimination (kappa_certify.h, exact_eq18).
+struct Rational_solve {
+  std::vector<CGAL::Gmpq> lam, t, w, px, py;
+};
+Rational_solve rational_solve(const Exact_inputs& in) {
+  Rational_solve r;
+  const std::size_t np = in.qx.size();
+  r.lam.resize(np); r.t.resize(np); r.w.resize(np);
+  for (std::size_t j = 0; j < np; ++j) {
+    r.lam[j] = CGAL::Gmpq(in.closed || j > 0 ? in.lambda[j] : 0.5);
+    r.t[j] = CGAL::Gmpq(in.t[j]);
+    r.w[j] = CGAL::Gmpq(in.w[j]);
+  }
+  kp::exact_eq18(in.closed, in.qx, in.qy, in.sx, in.sy, in.ex, in.ey, r.lam, r.t, r.w, r.px, r.py);
+  return r;
+}
+
 fair::Kappa_certificate certify_inputs(const Exact_inputs& in, kp::Certify_mode mode) {
   return kp::certify_parameters(in.closed, in.index, in.qx, in.qy, in.sx, in.sy, in.ex, in.ey, in.lambda, in.t, in.w,
                                 mode);
@@ -256,13 +274,8 @@ TEST(KappaCertify, FractionFreeSolveEqualsRationalSolve) {
       const Exact_inputs in = inputs_of(curve);
       const std::size_t np = in.qx.size();
       ASSERT_EQ(np, closed ? n : n - 2);
-      std::vector<CGAL::Gmpq> lam(np), t(np), w(np), px, py;
-      for (std::size_t j = 0; j < np; ++j) {
-        lam[j] = CGAL::Gmpq(closed || j > 0 ? in.lambda[j] : 0.5);
-        t[j] = CGAL::Gmpq(in.t[j]);
-        w[j] = CGAL::Gmpq(in.w[j]);
-      }
-      kp::exact_eq18(closed, in.qx, in.qy, in.sx, in.sy, in.ex, in.ey, lam, t, w, px, py);
+      const Rational_solve rs = rational_solve(in);
+      const std::vector<CGAL::Gmpq>&lam = rs.lam, &w = rs.w, &px = rs.px, &py = rs.py;
       const fair::Kappa_certificate c = certify_inputs(in, kp::Certify_mode::FILTERED);
       ASSERT_EQ(c.exact_pieces.size(), np) << c;
       for (std::size_t j = 0; j < np; ++j) {
@@ -304,13 +317,8 @@ TEST(KappaCertify, NonDyadicRationalInputPoints) {
     for (std::size_t j = 0; j < np; ++j)
       non_dyadic += (mpz_popcount(mpq_denref(in.qx[j].mpq())) > 1) + (mpz_popcount(mpq_denref(in.qy[j].mpq())) > 1);
     EXPECT_GT(non_dyadic, np);
-    std::vector<CGAL::Gmpq> lam(np), t(np), w(np), px, py;
-    for (std::size_t j = 0; j < np; ++j) {
-      lam[j] = CGAL::Gmpq(closed || j > 0 ? in.lambda[j] : 0.5);
-      t[j] = CGAL::Gmpq(in.t[j]);
-      w[j] = CGAL::Gmpq(in.w[j]);
-    }
-    kp::exact_eq18(closed, in.qx, in.qy, in.sx, in.sy, in.ex, in.ey, lam, t, w, px, py);
+    const Rational_solve rs = rational_solve(in);
+    const std::vector<CGAL::Gmpq>&px = rs.px, &py = rs.py;
     ASSERT_EQ(c.exact_pieces.size(), np);
     for (std::size_t j = 0; j < np; ++j)
       EXPECT_TRUE(c.exact_pieces[j].control_point(1).x() == px[j] && c.exact_pieces[j].control_point(1).y() == py[j]);
