@@ -574,6 +574,19 @@ inline void certify_scaled(bool closed, const std::vector<std::size_t>& point_in
   }
 }
 
+/// Builds cert.exact_pieces from the exact control points (E_j, P_j, E_{j+1}) and weights of the
+/// valid pieces and checks C0 at the joins on them.
+inline void attach_exact_pieces(const std::vector<Kappa_certificate::Exact_kernel::Point_2>& E,
+                                const std::vector<Kappa_certificate::Exact_kernel::Point_2>& P,
+                                const std::vector<CGAL::Gmpq>& w, Kappa_certificate& cert) {
+  const std::size_t n = P.size();
+  for (std::size_t j = 0; j < n; ++j)
+    if (cert.pieces[j].valid_piece) cert.exact_pieces.emplace_back(E[j], P[j], E[j + 1], w[j]);
+  if (cert.exact_pieces.size() == n)
+    for (Kappa_certificate::Join& jn : cert.joins)
+      jn.c0 = cert.exact_pieces[(jn.piece + n - 1) % n].target() == cert.exact_pieces[jn.piece].source();
+}
+
 /// certify_scaled on unscaled pieces, plus exact_pieces built from them and C0 checked on them.
 inline Kappa_certificate certify_exact(bool closed, const std::vector<std::size_t>& point_index,
                                        const std::vector<Kappa_certificate::Exact_kernel::Point_2>& E,
@@ -584,12 +597,7 @@ inline Kappa_certificate certify_exact(bool closed, const std::vector<std::size_
                                        const std::vector<double>* lambda = nullptr) {
   Kappa_certificate cert;
   certify_scaled(closed, point_index, E, P, w, tt, Qp, 1.0, mode, cert, lambda);
-  const std::size_t n = P.size();
-  for (std::size_t j = 0; j < n; ++j)
-    if (cert.pieces[j].valid_piece) cert.exact_pieces.emplace_back(E[j], P[j], E[j + 1], w[j]);
-  if (cert.exact_pieces.size() == n)
-    for (Kappa_certificate::Join& jn : cert.joins)
-      jn.c0 = cert.exact_pieces[(jn.piece + n - 1) % n].target() == cert.exact_pieces[jn.piece].source();
+  attach_exact_pieces(E, P, w, cert);
   return cert;
 }
 
@@ -677,11 +685,7 @@ inline Kappa_certificate certify_parameters(bool closed, const std::vector<std::
   if (!closed) Eo[0] = EP(sx, sy);
   for (std::size_t j = (closed ? 0 : 1), r = 2 * n; j < n; ++j, r += 2) Eo[j] = EP(F[r], F[r + 1]);
   Eo[n] = closed ? Eo[0] : EP(ex, ey);
-  for (std::size_t j = 0; j < n; ++j)
-    if (cert.pieces[j].valid_piece) cert.exact_pieces.emplace_back(Eo[j], Po[j], Eo[j + 1], w[j]);
-  if (cert.exact_pieces.size() == n)
-    for (Kappa_certificate::Join& jn : cert.joins)
-      jn.c0 = cert.exact_pieces[(jn.piece + n - 1) % n].target() == cert.exact_pieces[jn.piece].source();
+  attach_exact_pieces(Eo, Po, w, cert);
   return cert;
 }
 
