@@ -418,9 +418,10 @@ inline Solve_result finish(const Problem& pb, State& st, const Solve_settings& s
 /// Solves the kappa-curve system; `st` holds the initial state when settings.warm.
 /// Strategy (cold start): initial guess, two alternating passes, Newton's method (the fast
 /// path). If that does not reach an interior root: back to the state after the two passes, up
-/// to `refinement_passes` passes in all (stopping early once max |r| <= 1e-3), then
-/// Levenberg-Marquardt; if that stalls away from a root, one restart: up to
-/// 4 x `refinement_passes` more passes from the best state, then Levenberg-Marquardt again.
+/// to `refinement_passes` passes in all (stopping early once max |r| <= 1e-3), then Newton's
+/// method again, then (from the same passes) Levenberg-Marquardt; if that stalls away from a
+/// root, one restart: up to 4 x `refinement_passes` more passes from the best state, then
+/// Levenberg-Marquardt again.
 /// Warm start: local solves around the moved point (see below), else Newton's method, else
 /// Levenberg-Marquardt, from the previous solution.
 inline Solve_result solve(const Problem& pb, State& st, const Solve_settings& settings) {
@@ -442,6 +443,14 @@ inline Solve_result solve(const Problem& pb, State& st, const Solve_settings& se
     Solve_result passes;
     refine(pb, st, settings.refinement_passes, 1e-3, passes);
     res.refinement_passes = passes.refinement_passes;
+    // Newton's method again from there (on random data in the unit square it then converges as
+    // often as Levenberg-Marquardt, and the union of both is larger), else Levenberg-Marquardt.
+    if (res.iterations < settings.max_iterations) {
+      State after_passes = st;
+      const double f2 = newton(pb, st, settings, res, std::min(settings.max_iterations - res.iterations, newton_iterations));
+      if (f2 <= settings.tolerance && bounds_active(pb, st) == 0) return finish(pb, st, settings, res, f2);
+      st = after_passes;
+    }
   }
   double fmax = std::numeric_limits<double>::infinity();
   bool local_done = false;
