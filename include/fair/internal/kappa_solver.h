@@ -431,8 +431,8 @@ inline Solve_result solve(const Problem& pb, State& st, const Solve_settings& se
   if (cold) {
     initial_guess(pb, st);
     // Fast path: two passes bring the residual to ~0.05, from where Newton's method converges
-    // quadratically in about three iterations on typical data. If it fails, start again the
-    // paper's way (up to refinement_passes passes) with Levenberg-Marquardt.
+    // quadratically in two or three Jacobians on typical data. If it fails, start again the
+    // paper's way (up to refinement_passes passes), then Newton, then Levenberg-Marquardt.
     const std::size_t fast_passes = std::min<std::size_t>(2, settings.refinement_passes);
     refine(pb, st, fast_passes, 1e-3, res);
     const double f = newton(pb, st, settings, res, std::min<std::size_t>(settings.max_iterations, newton_iterations));
@@ -445,7 +445,7 @@ inline Solve_result solve(const Problem& pb, State& st, const Solve_settings& se
     res.refinement_passes = passes.refinement_passes;
     // Newton's method again from there (on random data in the unit square it then converges as
     // often as Levenberg-Marquardt, and the union of both is larger), else Levenberg-Marquardt.
-    if (res.iterations < settings.max_iterations) {
+    if (res.iterations < settings.max_iterations && settings.refinement_passes > fast_passes) {
       State after_passes = st;
       const double f2 = newton(pb, st, settings, res, std::min(settings.max_iterations - res.iterations, newton_iterations));
       if (f2 <= settings.tolerance && bounds_active(pb, st) == 0) return finish(pb, st, settings, res, f2);
@@ -495,7 +495,9 @@ inline Solve_result solve(const Problem& pb, State& st, const Solve_settings& se
     if (f <= settings.tolerance && bounds_active(pb, st) == 0) return finish(pb, st, settings, res, f);
     st = start;
   }
-  if (!local_done) fmax = levenberg_marquardt(pb, st, settings, res, settings.max_iterations);
+  // Levenberg-Marquardt gets what is left of the iteration cap.
+  const std::size_t left = settings.max_iterations > res.iterations ? settings.max_iterations - res.iterations : 0;
+  if (!local_done) fmax = levenberg_marquardt(pb, st, settings, res, left);
   if (!(fmax <= settings.tolerance) && res.iterations < settings.max_iterations && settings.refinement_passes > 0) {
     State best = st;
     refine(pb, st, 4 * settings.refinement_passes, 1e-7, res);
