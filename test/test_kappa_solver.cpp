@@ -95,32 +95,84 @@ TEST(KappaBlockLu, FusedSweepAndTruncatedSpikesAgreeWithDenseSolve) {
     }
 }
 
-// Weak diagonal blocks (no diagonal dominance at all): the Woodbury solve of a cyclic system
-// must still agree with a pivoted dense solve whenever it accepts the factorisation.
-TEST(KappaBlockLu, NonDominantSystemsAgreeOrAreRejected) {
+// Weak diagonal blocks (no diagonal dominance at all): without pivoting across blocks the
+// factorisation is not backward stable to machine precision, but every accepted solve must have
+// a small backward error |A x - b| / (|A| |x| + |b|) (measured worst: 5e-8).
+TEST(KappaBlockLu, NonDominantSystemsHaveSmallBackwardError) {
   std::mt19937 g(8);
   std::uniform_real_distribution<double> U(-1, 1);
   int accepted = 0;
-  for (int rep = 0; rep < 200; ++rep) {
-    const std::size_t n = 6 + static_cast<std::size_t>(rep % 30);
+  for (int rep = 0; rep < 400; ++rep) {
+    const std::size_t n = 6 + static_cast<std::size_t>(rep % 30), N = 4 * n;
+    const bool cyclic = rep % 2 == 0;
+    Block_band_lu lu;
+    lu.reset(n, cyclic);
+    std::vector<double> A(N * N, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int k = 0; k < 4; ++k) {
+        long c = static_cast<long>(i) - 2 + k;
+        if (cyclic) c = ((c % static_cast<long>(n)) + static_cast<long>(n)) % static_cast<long>(n);
+        else if (c < 0 || c >= static_cast<long>(n)) continue;
+        for (int r = 0; r < 4; ++r)
+          for (int q = 0; q < 4; ++q) {
+            const double v = U(g);
+            lu.block(i, k)[4 * r + q] = v;
+            A[(4 * i + static_cast<std::size_t>(r)) * N + 4 * static_cast<std::size_t>(c) + static_cast<std::size_t>(q)] += v;
+          }
+      }
+    std::vector<double> b(N);
+    for (double& v : b) v = U(g);
+    std::vector<double> x = b;
+    if (!lu.factor()) continue;
+    lu.solve(x.data());
+    ++accepted;
+    double norm_a = 0, norm_x = 0, norm_b = 0, residual = 0;
+    for (std::size_t r = 0; r < N; ++r) {
+      double ax = 0, row = 0;
+      for (std::size_t c = 0; c < N; ++c) {
+        ax += A[r * N + c] * x[c];
+        row += std::abs(A[r * N + c]);
+      }
+      residual = std::max(residual, std::abs(ax - b[r]));
+      norm_a = std::max(norm_a, row);
+      norm_b = std::max(norm_b, std::abs(b[r]));
+      norm_x = std::max(norm_x, std::abs(x[r]));
+    }
+    EXPECT_LE(residual / (norm_a * norm_x + norm_b), 1e-6) << "n " << n << " cyclic " << cyclic;
+  }
+  EXPECT_GE(accepted, 390);
+}
+
+// A well-conditioned cyclic matrix whose cut matrix B is not: A = I + 2 S (S the cyclic block
+// shift; eigenvalues 1 + 2 omega, |.| >= 1) but B^{-1} grows like 2^n. The Woodbury correction
+// would cancel ~n log10(2) digits: accepted and accurate while that is below 8 digits, refused
+// beyond (the caller then uses a pivoted method) -- never a silently wrong solve.
+TEST(KappaBlockLu, IllConditionedCutIsRefused) {
+  for (const std::size_t n : {std::size_t(20), std::size_t(60)}) {
     Block_band_lu lu;
     Banded_lu dense;
-    random_system(g, n, rep % 2 == 0, 0.0, lu, dense);
-    std::vector<double> b(4 * n);
-    for (double& v : b) v = U(g);
-    std::vector<double> x = b, y = b;
-    if (!lu.factor() || !dense.factor()) continue;
-    lu.solve(x.data());
+    lu.reset(n, true);
+    dense.reset(4 * n, 4 * n - 1, 4 * n - 1);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int r = 0; r < 4; ++r) {
+        lu.block(i, 2)[5 * r] = 1.0;
+        lu.block(i, 1)[5 * r] = 2.0;  // column block i - 1 (cyclic)
+        dense.add(4 * i + static_cast<std::size_t>(r), 4 * i + static_cast<std::size_t>(r), 1.0);
+        dense.add(4 * i + static_cast<std::size_t>(r), 4 * ((i + n - 1) % n) + static_cast<std::size_t>(r), 2.0);
+      }
+    std::vector<double> x(4 * n), y;
+    for (std::size_t k = 0; k < x.size(); ++k) x[k] = std::cos(static_cast<double>(k));
+    y = x;
+    ASSERT_TRUE(dense.factor());
     dense.solve(y.data());
-    double scale = 0, err = 0;
-    for (std::size_t k = 0; k < x.size(); ++k) {
-      scale = std::max(scale, std::abs(y[k]));
-      err = std::max(err, std::abs(x[k] - y[k]));
+    if (n == 20) {
+      ASSERT_TRUE(lu.factor());
+      lu.solve(x.data());
+      for (std::size_t k = 0; k < x.size(); ++k) EXPECT_NEAR(x[k], y[k], 1e-8) << k;
+    } else {
+      EXPECT_FALSE(lu.factor());
     }
-    if (err <= 1e-6 * scale) ++accepted;
   }
-  // Without pivoting across blocks some random systems lose accuracy; most must not.
-  EXPECT_GE(accepted, 150);
 }
 
 TEST(KappaBlockLu, SingularPivotBlockIsReported) {
@@ -288,6 +340,36 @@ TEST(KappaNewton, ColdSolveUsesTheFastPath) {
   EXPECT_LE(res.refinement_passes, 2u);
   EXPECT_LE(res.iterations, 6u);
   EXPECT_LE(res.residual, 1e-12);
+}
+
+// settings.max_iterations caps the Jacobians of the whole solve (Newton and Levenberg-Marquardt,
+// local warm-start stages included), cold and warm, converged or not.
+TEST(KappaNewton, IterationCapHoldsForTheWholeSolve) {
+  std::mt19937 g(21);
+  std::uniform_real_distribution<double> U(0, 1);
+  int warm_converged = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    Problem pb = star(30 + static_cast<std::size_t>(trial), 100 + static_cast<unsigned>(trial), Weight_mode::unit);
+    pb.closed = trial % 2 == 0;
+    pb.sx = 1.2; pb.sy = -0.3; pb.ex = 1.2; pb.ey = 0.3;
+    Solve_settings tight;
+    tight.max_iterations = 3;
+    State cold;
+    EXPECT_LE(solve(pb, cold, tight).iterations, 3u);
+    State st;
+    if (!solve(pb, st, Solve_settings{}).converged) continue;
+    const std::size_t m = static_cast<std::size_t>(trial) % pb.n;  // a large move of one point
+    pb.qx[m] *= 1.0 + 0.3 * (U(g) - 0.5);
+    pb.qy[m] += 0.2 * (U(g) - 0.5);
+    Solve_settings warm;
+    warm.warm = true;
+    warm.moved = m;
+    warm.max_iterations = 25;
+    const Solve_result r = solve(pb, st, warm);
+    EXPECT_LE(r.iterations, 25u);
+    warm_converged += r.converged ? 1 : 0;
+  }
+  EXPECT_GE(warm_converged, 25);
 }
 
 // A local (range) Newton solve only changes the unknowns of its range and zeroes their residuals.

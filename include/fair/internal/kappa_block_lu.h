@@ -12,19 +12,23 @@
 //    (row 0: columns n-2, n-1; row 1: column n-1; row n-1: column 0) and V^T x picks the
 //    unknowns of the column blocks n-2, n-1, 0. Sherman-Morrison-Woodbury:
 //      A^{-1} b = y - Z (I + V^T Z)^{-1} V^T y,   y = B^{-1} b,   Z = B^{-1} U,
-//    with Z computed once per factorisation: U has at most 8 non-zero columns (supported on
-//    the block rows 0, 1 and n-1), and the columns of Z ("spikes") decay geometrically away from
-//    those rows, so they are computed and stored only until they have died out (below 1e-40
-//    of their largest entry): O(1) extra work per factorisation on typical data, O(n) at
-//    worst, without the doubled bandwidth of a cyclic reordering.
+//    with Z computed once per factorisation: U has at most 12 non-zero columns (supported on
+//    the block rows 0, 1 and n-1; 8 for the kappa Jacobian, whose t columns never wrap), and
+//    the columns of Z ("spikes") decay geometrically away from those rows, so they are computed
+//    and stored only until they have died out (below 1e-40 of their largest entry): O(1) extra
+//    work per factorisation on typical data, O(n) at worst, without the doubled bandwidth of a
+//    cyclic reordering.
 //    Cyclic systems of fewer than 6 block rows are factored densely with partial pivoting.
 //
 // Accuracy and degenerate cases: each diagonal 4x4 pivot block is inverted by Gaussian
 // elimination with partial pivoting. Without pivoting across blocks the factorisation is not
 // backward stable in general; it is used inside a Newton iteration whose step is validated by
 // a line search, and factor() returns false on a numerically singular pivot block (pivot below
-// 1e-13 of the block's largest entry, or non-finite values) or a singular Woodbury capacitance
-// matrix, so that the caller can fall back to a pivoted (Levenberg-Marquardt) solve.
+// 1e-13 of the block's largest entry, or non-finite values), a singular Woodbury capacitance
+// matrix or a Woodbury correction that would cancel more than 8 digits (max |Z| > 1e8 max |U|),
+// so that the caller can fall back to a pivoted (Levenberg-Marquardt) solve. An accepted
+// factorisation can still be inaccurate (no pivoting across blocks): the Newton step it gives is
+// accepted only if the line search confirms a decrease of the residual.
 
 #ifndef FAIR_INTERNAL_KAPPA_BLOCK_LU_H
 #define FAIR_INTERNAL_KAPPA_BLOCK_LU_H
@@ -264,6 +268,8 @@ private:
   // factorisation -- and the neglected entries are far below the rounding of the rest. A
   // system without decay simply gets full-length spikes.
   static constexpr double spike_floor = 1e-40;
+  // Largest accepted max |Z| / max |U| (see factor_wrap).
+  static constexpr double max_woodbury_growth = 1e8;
 
   /// y -= a x for panels of 4 x m values (row-major).
   static void subtract_panel(const Block4& a, const double* x, double* y, std::size_t m) {
@@ -390,9 +396,22 @@ private:
           bottom_.values[static_cast<std::size_t>(r) * mb + c] = wrap_value(bottom_picks[c].first, n_ - 1, r, bottom_picks[c].second);
       solve_bottom_spike(bottom_);
     }
+    // Growth check: A^{-1} = B^{-1} - Z (I + V^T Z)^{-1} V^T B^{-1} cancels large terms when B (the
+    // cut matrix) is ill-conditioned even though A is not, and the correction then loses about
+    // log10(max |Z| / max |U|) digits: refuse beyond 1e8 (the caller falls back to a pivoted
+    // method). This also bounds what the truncated spike tails (< 1e-40 of the spike before the
+    // backward substitution) can become.
+    double biggest_u = 0, biggest_z = 0;
+    for (int cb = 0; cb < 3; ++cb)
+      for (std::size_t row : {std::size_t(0), std::size_t(1), n_ - 1})
+        for (int r = 0; r < 4; ++r)
+          for (int q = 0; q < 4; ++q) biggest_u = std::max(biggest_u, std::abs(wrap_value(cb, row, r, q)));
     for (const Spike* z : {&top_, &bottom_})
-      for (double v : z->values)
+      for (double v : z->values) {
         if (!std::isfinite(v)) return false;
+        biggest_z = std::max(biggest_z, std::abs(v));
+      }
+    if (!(biggest_z <= max_woodbury_growth * biggest_u)) return false;
     capacitance_.reset(m, m - 1, m - 1);
     for (const Spike* z : {&top_, &bottom_})
       for (std::size_t c = 0; c < z->columns.size(); ++c)

@@ -50,7 +50,7 @@ namespace kappa {
 
 struct Solve_settings {
   std::size_t refinement_passes = 60;  // alternating passes of Section 5.1 (paper: 60)
-  std::size_t max_iterations = 200;    // Levenberg-Marquardt iterations
+  std::size_t max_iterations = 200;    // Jacobians of the whole solve (Newton and Levenberg-Marquardt)
   double tolerance = 1e-12;            // on max |r|
   bool warm = false;                   // skip the initial guess, start from the given state
   /// Warm start after a change of Q_moved only (block index; n or more: unknown): try local
@@ -276,8 +276,9 @@ inline double levenberg_marquardt(const Problem& pb, State& st, const Solve_sett
 /// with the bounds projected. In the quadratic regime, "chord" steps reuse the last
 /// factorisation (cost: one evaluation and one solve); once max |r| <= tolerance, at most one
 /// more chord step pushes the residual towards the rounding floor, so that derived quantities
-/// are accurate to the tolerance itself. `max_iterations` caps the Jacobian factorisations
-/// (res.iterations counts them); chord steps are capped by the same number.
+/// are accurate to the tolerance itself. `max_iterations` caps the Jacobian factorisations of
+/// this call (res.iterations counts them, cumulatively); Jacobians and chord steps together are
+/// capped by 2 x max_iterations.
 /// Returns max |r| reached (st: the last accepted state). Stops early -- leaving the rest to
 /// Levenberg-Marquardt -- on a singular pivot block or a failed line search.
 inline double newton(const Problem& pb, State& st, const Solve_settings& settings, Solve_result& res,
@@ -316,7 +317,8 @@ inline double newton(const Problem& pb, State& st, const Solve_settings& setting
     return try_step(1.0);
   };
   bool contracting = false;  // the last step reduced max |r| by 1e2 or more
-  for (std::size_t it = 0; it < 2 * max_iterations && res.iterations < max_iterations && std::isfinite(cost); ++it) {
+  std::size_t jacobians = 0;
+  for (std::size_t it = 0; it < 2 * max_iterations && jacobians < max_iterations && std::isfinite(cost); ++it) {
     if (fmax <= settings.tolerance) {
       if (factored && fmax > 1e-3 * settings.tolerance) chord_step();
       break;
@@ -347,6 +349,7 @@ inline double newton(const Problem& pb, State& st, const Solve_settings& setting
       }
     };
     ++res.iterations;
+    ++jacobians;
     factored = lu.factor_rows(fill, delta.data());
     if (!factored) break;
     lu.finish_solve(delta.data());
@@ -377,6 +380,8 @@ inline std::size_t bounds_active(const Problem& pb, const State& st, std::vector
 
 /// Iteration cap of the Newton phase before the Levenberg-Marquardt fallback takes over.
 constexpr std::size_t newton_iterations = 30;
+/// Iteration cap of the Levenberg-Marquardt run of a local warm-start stage.
+constexpr std::size_t local_lm_iterations = 20;
 
 /// The report of a solve that reached max |r| = fmax at st (and st.w set to the weights).
 inline Solve_result finish(const Problem& pb, State& st, const Solve_settings& settings, Solve_result res, double fmax) {
@@ -445,23 +450,27 @@ inline Solve_result solve(const Problem& pb, State& st, const Solve_settings& se
     res.refinement_passes = passes.refinement_passes;
     // Newton's method again from there (on random data in the unit square it then converges as
     // often as Levenberg-Marquardt, and the union of both is larger), else Levenberg-Marquardt.
-    if (res.iterations < settings.max_iterations && settings.refinement_passes > fast_passes) {
+    if (res.iterations < settings.max_iterations && passes.refinement_passes > fast_passes) {
       State after_passes = st;
       const double f2 = newton(pb, st, settings, res, std::min(settings.max_iterations - res.iterations, newton_iterations));
       if (f2 <= settings.tolerance && bounds_active(pb, st) == 0) return finish(pb, st, settings, res, f2);
       st = after_passes;
     }
   }
+  // What is left of the iteration cap (Jacobians of the whole solve).
+  auto remaining = [&]() { return settings.max_iterations > res.iterations ? settings.max_iterations - res.iterations : 0; };
   double fmax = std::numeric_limits<double>::infinity();
   bool local_done = false;
-  if (settings.warm && st.t.size() == n && settings.moved < n) {
+  if (!cold && settings.moved < n) {
     // Local warm start: the change of one Q_i perturbs the solution by amounts that decay
     // geometrically along the curve, so first solve only for the blocks within distance R of
     // the moved one (the others held fixed; a square 4(2R+1) system, O(R) per iteration) and
     // accept the result iff the residual of the WHOLE system is within the tolerance; R = 8,
     // 32, then the global solve. The accepted state is a root of the full system to the same
     // tolerance as a global solve. A local result that falls short but lowers the global
-    // residual is kept as the start of the next stage.
+    // residual is kept as the start of the next stage. Each stage: Newton (at most
+    // newton_iterations Jacobians), else a short Levenberg-Marquardt run (at most
+    // local_lm_iterations), both within the cap of the whole solve.
     std::vector<double> F;
     double best = evaluate(pb, st, F);
     for (std::size_t R = 8; R <= 32 && !local_done; R *= 4) {
@@ -477,31 +486,27 @@ inline Solve_result solve(const Problem& pb, State& st, const Solve_settings& se
         if (range.count >= n) break;
       }
       State trial = st;
-      Solve_result sub;
-      if (!(newton(pb, trial, settings, sub, newton_iterations, range) <= settings.tolerance)) {
+      if (!(newton(pb, trial, settings, res, std::min(remaining(), newton_iterations), range) <= settings.tolerance)) {
         trial = st;
-        levenberg_marquardt(pb, trial, settings, sub, settings.max_iterations, range);
+        levenberg_marquardt(pb, trial, settings, res, std::min(remaining(), local_lm_iterations), range);
       }
-      res.iterations += sub.iterations;
       const double fm = evaluate(pb, trial, F);
-      if (fm <= settings.tolerance) { st = trial; fmax = fm; local_done = true; }
+      if (fm <= settings.tolerance && bounds_active(pb, trial) == 0) { st = trial; fmax = fm; local_done = true; }
       else if (fm < best) { st = trial; best = fm; }
     }
   }
   if (!local_done && !cold) {
     // Global warm start: Newton's method from the previous solution, else Levenberg-Marquardt.
     State start = st;
-    const double f = newton(pb, st, settings, res, std::min<std::size_t>(settings.max_iterations, newton_iterations));
+    const double f = newton(pb, st, settings, res, std::min(remaining(), newton_iterations));
     if (f <= settings.tolerance && bounds_active(pb, st) == 0) return finish(pb, st, settings, res, f);
     st = start;
   }
-  // Levenberg-Marquardt gets what is left of the iteration cap.
-  const std::size_t left = settings.max_iterations > res.iterations ? settings.max_iterations - res.iterations : 0;
-  if (!local_done) fmax = levenberg_marquardt(pb, st, settings, res, left);
-  if (!(fmax <= settings.tolerance) && res.iterations < settings.max_iterations && settings.refinement_passes > 0) {
+  if (!local_done) fmax = levenberg_marquardt(pb, st, settings, res, remaining());
+  if (!(fmax <= settings.tolerance) && remaining() > 0 && settings.refinement_passes > 0) {
     State best = st;
     refine(pb, st, 4 * settings.refinement_passes, 1e-7, res);
-    const double f2 = levenberg_marquardt(pb, st, settings, res, settings.max_iterations - res.iterations);
+    const double f2 = levenberg_marquardt(pb, st, settings, res, remaining());
     if (!(f2 < fmax)) st = best; else fmax = f2;
   }
   return finish(pb, st, settings, res, fmax);
