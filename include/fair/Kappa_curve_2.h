@@ -107,10 +107,16 @@ struct Kappa_solve_report {
   double energy() const { return energy_interpolation + energy_curvature + energy_g2 + energy_weight; }
 
   friend std::ostream& operator<<(std::ostream& out, const Kappa_solve_report& r) {
-    return out << "Kappa_solve_report{converged " << r.converged << ", warm " << r.warm_started << ", passes "
-               << r.refinement_passes << ", iterations " << r.iterations << ", residual " << r.residual
-               << " (interpolation " << r.interpolation_residual << ", eq.7 " << r.curvature_residual << ", |kappa| "
-               << r.g2_residual << ", weight " << r.weight_residual << "), bounds active " << r.bounds_active << ", energy " << r.energy() << "}";
+    out << "Kappa_solve_report{converged " << r.converged << ", warm " << r.warm_started << ", passes "
+        << r.refinement_passes << ", iterations " << r.iterations << ", residual " << r.residual << " (interpolation "
+        << r.interpolation_residual << ", eq.7 " << r.curvature_residual << ", |kappa| " << r.g2_residual << ", weight "
+        << r.weight_residual << "), bounds active " << r.bounds_active;
+    if (!r.boundary_points.empty()) {
+      out << " (points on a join:";
+      for (const std::size_t i : r.boundary_points) out << ' ' << i;
+      out << ')';
+    }
+    return out << ", energy " << r.energy() << "}";
   }
 };
 
