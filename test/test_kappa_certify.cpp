@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -487,6 +488,34 @@ TEST(KappaCertify, MovedControlPointFailsInterpolationAndG1) {
   expect_same_certificate(slid, kp::certify_exact(true, index, E, P, w, t, Q, kp::Certify_mode::EXACT), "slid E");
   EXPECT_TRUE(slid.all_g1()) << slid;
   for (std::size_t j = 0; j < n; ++j) EXPECT_EQ(slid.pieces[j].point_on_piece, j != 7 && j != 8) << j;
+  // A piece whose control points are collinear is not a conic piece: the joins are then not
+  // certified at all, and the accessors must not read as success.
+  E[8] = c.exact_pieces[8].source();
+  P[2] = EK::Point_2((E[2].x() + E[3].x()) / 2, (E[2].y() + E[3].y()) / 2);
+  const fair::Kappa_certificate broken = kp::certify_exact(true, index, E, P, w, t, Q);
+  EXPECT_FALSE(broken.pieces[2].valid_piece);
+  EXPECT_FALSE(broken.valid());
+  EXPECT_FALSE(broken.all_g1()) << broken;
+  EXPECT_EQ(broken.max_kappa_mismatch(), std::numeric_limits<double>::infinity());
+}
+
+// Converged curves at extreme scales (the solver normalises; the certificate works on the exact
+// input coordinates): the |kappa| mismatch enclosure must stay tight (no overflow of l^3 or
+// underflow of the cross products), so the certificate holds at 1e+-120 and 1e+-150 too.
+TEST(KappaCertify, ExtremeScales) {
+  std::mt19937 g(17);
+  const std::vector<Kd::Point_2> base = spiky(g, 10, 0.06);
+  for (const double scale : {1e-150, 1e-120, 1e103, 1e120, 1e150}) {
+    std::vector<Kd::Point_2> q;
+    for (const Kd::Point_2& p : base) q.push_back(Kd::Point_2(scale * p.x(), scale * p.y()));
+    fair::Kappa_curve_options o;
+    o.closed = true;
+    const fair::Kappa_curve_2<Kd> curve(q, o);
+    ASSERT_TRUE(curve.report().converged) << "scale " << scale << " " << curve.report();
+    const fair::Kappa_certificate c = fair::certify(curve);
+    EXPECT_TRUE(c.valid()) << "scale " << scale << " " << c;
+    EXPECT_LE(c.max_kappa_mismatch(), 1e-9) << "scale " << scale;
+  }
 }
 
 } // namespace

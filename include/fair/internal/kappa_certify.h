@@ -16,7 +16,8 @@
 // powers of two). Every certified property is invariant under this positive scaling: Q_i ==
 // c_i(t_i), orientation and strict order (G1), the parameters of the curvature extrema
 // (eq. 4 scales by a positive factor), the relative |kappa| mismatch (eq. 5, both curvatures
-// scale by 1/rho); a nonzero interpolation distance is divided by rho >= 1 (bound kept valid).
+// scale by 1/rho); a nonzero interpolation distance is reported as measured on the scaled curve,
+// an upper bound for the unscaled one (rho >= 1; at most 2x loose).
 // Exactly: Q_i == c_i(t_i), E_i shared (C0), orientation(P_{i-1}, E_i, P_i) == COLLINEAR with E_i
 // strictly between (G1). The eq.-4 numerator: interval filter (eq4_filtered_extremum) on
 // enclosures of the exact scaled coordinates -- exact signs of the 5 Bernstein coefficients
@@ -365,10 +366,22 @@ inline void relative_mismatch_interval(const CGAL::Interval_nt<false>* a, const 
                                        const CGAL::Interval_nt<false>& Wb, double& lo, double& hi) {
   typedef CGAL::Interval_nt<false> I;
   CGAL::Protect_FPU_rounding<true> guard;
-  const I d1 = CGAL::abs((p[0] - a[0]) * (e[1] - p[1]) - (p[1] - a[1]) * (e[0] - p[0]));
-  const I d2 = CGAL::abs((r[0] - e[0]) * (b[1] - r[1]) - (r[1] - e[1]) * (b[0] - r[0]));
-  const I l1 = CGAL::sqrt(CGAL::square(e[0] - p[0]) + CGAL::square(e[1] - p[1]));
-  const I l2 = CGAL::sqrt(CGAL::square(r[0] - e[0]) + CGAL::square(r[1] - e[1]));
+  // Edge vectors, scaled by a power of two to about unit size: the ratio is scale invariant,
+  // and unscaled coordinates of 1e+-100 would overflow or underflow l^3 (outward-rounded
+  // scaling keeps every interval an enclosure, also where a small component underflows).
+  I v[4][2] = {{p[0] - a[0], p[1] - a[1]}, {e[0] - p[0], e[1] - p[1]}, {r[0] - e[0], r[1] - e[1]}, {b[0] - r[0], b[1] - r[1]}};
+  double biggest = 0;
+  for (const auto& vi : v)
+    for (const I& c : vi) biggest = std::max(biggest, std::max(std::abs(c.inf()), std::abs(c.sup())));
+  if (biggest > 0 && std::isfinite(biggest)) {
+    const double f = std::ldexp(1.0, -std::ilogb(biggest));
+    for (auto& vi : v)
+      for (I& c : vi) c = c * f;
+  }
+  const I d1 = CGAL::abs(v[0][0] * v[1][1] - v[0][1] * v[1][0]);
+  const I d2 = CGAL::abs(v[2][0] * v[3][1] - v[2][1] * v[3][0]);
+  const I l1 = CGAL::sqrt(CGAL::square(v[1][0]) + CGAL::square(v[1][1]));
+  const I l2 = CGAL::sqrt(CGAL::square(v[2][0]) + CGAL::square(v[2][1]));
   const I k1 = d1 / (Wa * Wa * l1 * l1 * l1), k2 = d2 / (Wb * Wb * l2 * l2 * l2);
   const I m = (k1 - k2) / (k1 + k2);
   lo = m.inf();
