@@ -119,14 +119,7 @@ void run_cardinal_in(const Cardinal_options& o) {
     svg_text = f.curve_svg;
     plot_text = f.curvature_svg;
   }
-  // Write only once everything has been computed: a failure leaves no partial output.
-  if (o.json_out != "-") std::cout << report.str();
-  if (!o.json_out.empty()) {
-    if (o.json_out == "-") std::cout << json_text;
-    else fair::io::write_text_file(o.json_out, json_text);
-  }
-  if (!o.svg_out.empty()) fair::io::write_text_file(o.svg_out, svg_text);
-  if (!o.plot_out.empty()) fair::io::write_text_file(o.plot_out, plot_text);
+  fair_curves::write_outputs(report.str(), o.json_out, json_text, {{o.svg_out, svg_text}, {o.plot_out, plot_text}});
 }
 
 void run_cardinal(const Cardinal_options& o) {

@@ -51,12 +51,7 @@ void run_conic(const Conic_options& o) {
     svg_text = f.curve_svg;
     plot_text = f.curvature_svg;
   }
-  // With "-o -" stdout carries only the JSON, so that it can be piped.
-  if (o.json_out == "-") std::cout << json_text;
-  else std::cout << conic_text(piece, report);
-  if (!o.json_out.empty() && o.json_out != "-") fair::io::write_text_file(o.json_out, json_text);
-  if (!o.svg_out.empty()) fair::io::write_text_file(o.svg_out, svg_text);
-  if (!o.plot_out.empty()) fair::io::write_text_file(o.plot_out, plot_text);
+  write_outputs(conic_text(piece, report), o.json_out, json_text, {{o.svg_out, svg_text}, {o.plot_out, plot_text}});
 }
 
 } // namespace

@@ -134,22 +134,20 @@ void run_kappa(const Kappa_command_options& o) {
     const Curve_figures f = make_curve_figures(curve.pieces(), c);
     svg_text = f.curve_svg;
   }
-  if (o.json_out != "-")
-    std::cout << o.input << ": " << curve.number_of_pieces() << " pieces, " << (options.closed ? "closed" : "open")
+  std::ostringstream report;
+  report << o.input << ": " << curve.number_of_pieces() << " pieces, " << (options.closed ? "closed" : "open")
               << ", weights " << o.weights
               << (options.weights == fair::Kappa_weights::AUTOMATIC ? " (clamp " + format_number(options.weight_clamp) + ")" : "")
               << ", " << (r.converged ? "converged" : "NOT converged") << " after "
               << r.refinement_passes << " passes and " << r.iterations << " iterations, residual "
               << format_number(r.residual, 3) << ", energy " << format_number(r.energy(), 3) << "\n";
-  if (o.json_out != "-" && !r.boundary_points.empty()) {
+  if (!r.boundary_points.empty()) {
     // No interior solution found: name the points that ended on a join (doc/kappa_existence.md).
-    std::cout << "  on a join (t or lambda at 0 or 1), not at a curvature maximum: point";
-    for (const std::size_t i : r.boundary_points) std::cout << " " << i;
-    std::cout << " (0-based)\n";
+    report << "  on a join (t or lambda at 0 or 1), not at a curvature maximum: point";
+    for (const std::size_t i : r.boundary_points) report << " " << i;
+    report << " (0-based)\n";
   }
-  if (o.json_out == "-") std::cout << json_text;
-  else if (!o.json_out.empty()) fair::io::write_text_file(o.json_out, json_text);
-  if (!o.svg_out.empty()) fair::io::write_text_file(o.svg_out, svg_text);
+  write_outputs(report.str(), o.json_out, json_text, {{o.svg_out, svg_text}});
 }
 
 } // namespace

@@ -235,12 +235,7 @@ void report(const std::vector<Piece>& curve, const Metrics_options& o, const Fil
     fair::io::write_json(out, j);
     json_text = out.str();
   }
-  if (o.json_out != "-") std::cout << text.str();
-  if (!o.json_out.empty()) {
-    if (o.json_out == "-") std::cout << json_text;
-    else fair::io::write_text_file(o.json_out, json_text);
-  }
-  if (!o.profile_out.empty()) fair::io::write_text_file(o.profile_out, profile_text);
+  fair_curves::write_outputs(text.str(), o.json_out, json_text, {{o.profile_out, profile_text}});
 }
 
 void run_metrics(const Metrics_options& o) {

@@ -55,15 +55,11 @@ void run_points(const Points_options& o) {
     xmin = std::min(xmin, p.x()); xmax = std::max(xmax, p.x());
     ymin = std::min(ymin, p.y()); ymax = std::max(ymax, p.y());
   }
-  // With "-o -" stdout carries only the JSON, so that it can be piped.
-  if (o.json_out != "-")
-    std::cout << o.input << ": " << data.points.size() << " points, " << (closed ? "closed" : "open")
-            << ", bounding box [" << format_number(xmin, 10) << ", " << format_number(xmax, 10) << "] x ["
-            << format_number(ymin, 10) << ", " << format_number(ymax, 10) << "]\n";
-  if (o.json_out == "-") std::cout << json_text;
-  else if (!o.json_out.empty()) fair::io::write_text_file(o.json_out, json_text);
-  if (!o.csv_out.empty()) fair::io::write_text_file(o.csv_out, csv_text);
-  if (!o.svg_out.empty()) fair::io::write_text_file(o.svg_out, svg_text);
+  std::ostringstream report;
+  report << o.input << ": " << data.points.size() << " points, " << (closed ? "closed" : "open")
+         << ", bounding box [" << format_number(xmin, 10) << ", " << format_number(xmax, 10) << "] x ["
+         << format_number(ymin, 10) << ", " << format_number(ymax, 10) << "]\n";
+  write_outputs(report.str(), o.json_out, json_text, {{o.csv_out, csv_text}, {o.svg_out, svg_text}});
 }
 
 } // namespace

@@ -19,6 +19,7 @@
 
 #include <cstddef>
 #include <cstdio>
+#include <iostream>
 #include <iterator>
 #include <string>
 #include <utility>
@@ -29,6 +30,21 @@ namespace fair_curves {
 /// The kernel of the program: points typed on the command line or read from files are doubles.
 typedef CGAL::Simple_cartesian<double> Kernel;
 typedef Kernel::Point_2 Point_2;
+
+/// Writes what a subcommand computed, only once everything has been computed (a failure leaves
+/// no partial output): the text report on stdout unless the JSON goes there (`-o -`: stdout
+/// carries only the JSON, so that it can be piped), the JSON to stdout or to its file, and each
+/// (file, text) of `files` whose file name is not empty.
+inline void write_outputs(const std::string& report, const std::string& json_out, const std::string& json_text,
+                          const std::vector<std::pair<std::string, std::string>>& files = {}) {
+  if (json_out == "-") std::cout << json_text;
+  else {
+    std::cout << report;
+    if (!json_out.empty()) fair::io::write_text_file(json_out, json_text);
+  }
+  for (const auto& file : files)
+    if (!file.first.empty()) fair::io::write_text_file(file.first, file.second);
+}
 
 /// A finite number given as an option value; anything else is a usage error (exit code 2).
 inline double option_number(const std::string& text, const std::string& option) {
