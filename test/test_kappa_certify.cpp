@@ -6,6 +6,7 @@
 // fair::certify_pieces: the returned pieces themselves, certified piece by piece in O(n).
 
 #include <fair/Kappa_curve_2.h>
+#include <fair/internal/classic_tridiagonal.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
@@ -204,8 +205,49 @@ Exact_inputs inputs_of(const fair::Kappa_curve_2<K>& curve) {
   return in;
 }
 
+// Reference: eq. 18 for the P_i (x and y separately) by plain Gmpq tridiagonal elimination,
+// original coordinates.
+// q: interpolated points of the pieces; s/e: fixed end points of an open curve.
+void exact_eq18(bool closed, const std::vector<CGAL::Gmpq>& qx, const std::vector<CGAL::Gmpq>& qy,
+                       const CGAL::Gmpq& sx, const CGAL::Gmpq& sy, const CGAL::Gmpq& ex, const CGAL::Gmpq& ey,
+                       const std::vector<CGAL::Gmpq>& lambda, const std::vector<CGAL::Gmpq>& t,
+                       const std::vector<CGAL::Gmpq>& w, std::vector<CGAL::Gmpq>& px, std::vector<CGAL::Gmpq>& py) {
+  typedef CGAL::Gmpq Q;
+  const std::size_t n = qx.size();
+  std::vector<Q> a(n, Q(0)), b(n, Q(0)), c(n, Q(0)), dx(n), dy(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Q u = Q(1) - t[i], c0 = u * u, c2 = t[i] * t[i], c1 = Q(2) * u * t[i] * w[i];
+    const Q D = c0 + c1 + c2;
+    dx[i] = D * qx[i];
+    dy[i] = D * qy[i];
+    b[i] = c1;
+    if (closed || i > 0) {
+      a[i] = c0 * (Q(1) - lambda[i]);
+      b[i] += c0 * lambda[i];
+    } else {
+      dx[i] -= c0 * sx;
+      dy[i] -= c0 * sy;
+    }
+    if (closed || i + 1 < n) {
+      const Q& l = lambda[(i + 1) % n];
+      c[i] = c2 * l;
+      b[i] += c2 * (Q(1) - l);
+    } else {
+      dx[i] -= c2 * ex;
+      dy[i] -= c2 * ey;
+    }
+  }
+  if (closed) {
+    px = fair::internal::solve_cyclic_tridiagonal(a, b, c, dx);
+    py = fair::internal::solve_cyclic_tridiagonal(a, b, c, dy);
+  } else {
+    px = fair::internal::solve_tridiagonal(a, b, c, dx);
+    py = fair::internal::solve_tridiagonal(a, b, c, dy);
+  }
+}
+
 // The solver's parameters as rationals (lambda_0 of an open curve, unused, as 1/2) and the exact
-// eq.-18 solution for them by plain rational elimination (kappa_certify.h, exact_eq18).
+// eq.-18 solution for them by plain rational elimination (exact_eq18 above).
 struct Rational_solve {
   std::vector<CGAL::Gmpq> lam, t, w, px, py;
 };
@@ -218,7 +260,7 @@ Rational_solve rational_solve(const Exact_inputs& in) {
     r.t[j] = CGAL::Gmpq(in.t[j]);
     r.w[j] = CGAL::Gmpq(in.w[j]);
   }
-  kp::exact_eq18(in.closed, in.qx, in.qy, in.sx, in.sy, in.ex, in.ey, r.lam, r.t, r.w, r.px, r.py);
+  exact_eq18(in.closed, in.qx, in.qy, in.sx, in.sy, in.ex, in.ey, r.lam, r.t, r.w, r.px, r.py);
   return r;
 }
 
