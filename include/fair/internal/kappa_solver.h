@@ -183,25 +183,21 @@ inline double evaluate_range(const Problem& pb, const State& s, const Block_rang
   return mx;
 }
 
-/// Solves the kappa-curve system; `st` holds the initial state when settings.warm.
-/// Levenberg-Marquardt from `st`; returns the final max |r|. Counts iterations in res.
+/// Levenberg-Marquardt from `st` on the blocks of `range` (all by default); returns the final
+/// max |r|. Counts iterations in res.
 inline double levenberg_marquardt(const Problem& pb, State& st, const Solve_settings& settings, Solve_result& res,
                                   std::size_t max_iterations, const Block_range& range = {}) {
   const std::size_t n = pb.n;
   project_bounds(st);
   const std::size_t na = range.all ? n : range.count, N = 4 * na;
-  // Block of the ii-th active unknown block and its position in the band order.
-  auto block = [&](std::size_t ii) { return range.all ? ii : (range.first + ii) % n; };
+  // Position of the ii-th active unknown block (range_block) in the band order.
   auto pos = [&](std::size_t ii) { return range.all ? (pb.closed ? cyclic_position(ii, n) : ii) : ii; };
   // A contiguous range (count <= n - 3 for closed curves) in natural order couples blocks at
   // distance <= 3 only: half bandwidth 15.
   const std::size_t h = range.all ? normal_bandwidth(pb) : std::min<std::size_t>(15, N - 1);
-  auto evaluate_active = [&](const State& s, std::vector<double>& Fa) { return evaluate_range(pb, s, range, Fa); };
-
   std::vector<double> F, Ftrial, g(N), D(N), delta(N), Abase;
-  double fmax = evaluate_active(st, F);
-  auto cost_of = [](const std::vector<double>& v) { return half_squared_norm(v); };
-  double cost = cost_of(F);
+  double fmax = evaluate_range(pb, st, range, F);
+  double cost = half_squared_norm(F);
   double mu = -1, nu = 2;
   Banded_cholesky chol;
   State trial;
@@ -234,15 +230,15 @@ inline double levenberg_marquardt(const Problem& pb, State& st, const Solve_sett
       chol.solve(delta.data());
       trial = st;
       for (std::size_t ii = 0; ii < na; ++ii) {
-        const std::size_t i = block(ii), p = 4 * pos(ii);
+        const std::size_t i = range_block(pb, range, ii), p = 4 * pos(ii);
         trial.dx[i] += delta[p];
         trial.dy[i] += delta[p + 1];
         trial.lambda[i] += delta[p + 2];
         trial.t[i] += delta[p + 3];
       }
       project_bounds(trial);
-      const double fm = evaluate_active(trial, Ftrial);
-      const double ct = cost_of(Ftrial);
+      const double fm = evaluate_range(pb, trial, range, Ftrial);
+      const double ct = half_squared_norm(Ftrial);
       double pred = 0;
       for (std::size_t k = 0; k < N; ++k) pred += delta[k] * (mu * D[k] * delta[k] - g[k]);
       pred *= 0.5;

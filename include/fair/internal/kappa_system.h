@@ -98,29 +98,17 @@ struct Piece_values {
   S w = S(1.0);
 };
 
-/// Which unknowns of a window carry derivatives: unknown c (x, y, lambda, t) of window block k
-/// is derivative direction slot[k][c] of a Dual number, or a constant when -1.
-struct Window_seeding {
-  int slot[4][4];
-  /// All 16 unknowns, slot 4k+c.
-  static Window_seeding all() {
-    Window_seeding s;
-    for (int k = 0; k < 4; ++k)
-      for (int c = 0; c < 4; ++c) s.slot[k][c] = 4 * k + c;
-    return s;
-  }
-};
-
+/// Seed<S>::variable(v, slot): v as a constant (double) or as derivative direction `slot` of
+/// a Dual number (the window unknown c of block k is slot 4k+c).
 template <class S> struct Seed {
   static S variable(double v, int) { return S(v); }
 };
 template <int N> struct Seed<Dual<N>> {
-  static Dual<N> variable(double v, int slot) { return slot < 0 ? Dual<N>(v) : Dual<N>::variable(v, slot); }
+  static Dual<N> variable(double v, int slot) { return Dual<N>::variable(v, slot); }
 };
 
 template <class S>
-void build_window(const Problem& pb, const State& st, std::size_t i, Window<S>& win,
-                  const Window_seeding& seeding = Window_seeding::all()) {
+void build_window(const Problem& pb, const State& st, std::size_t i, Window<S>& win) {
   const long n = static_cast<long>(pb.n);
   for (int k = 0; k < 4; ++k) {
     long b = static_cast<long>(i) - 2 + k;
@@ -128,12 +116,11 @@ void build_window(const Problem& pb, const State& st, std::size_t i, Window<S>& 
     win.valid[k] = pb.closed || (b >= 0 && b < n);
     if (!win.valid[k]) { win.block[k] = 0; continue; }
     const std::size_t bb = static_cast<std::size_t>(b);
-    const int* slot = seeding.slot[k];
     win.block[k] = bb;
-    win.X[k][0] = Seed<S>::variable(st.dx[bb], slot[0]) + (pb.qx[bb] - pb.qx[i]);
-    win.X[k][1] = Seed<S>::variable(st.dy[bb], slot[1]) + (pb.qy[bb] - pb.qy[i]);
-    win.lam[k] = Seed<S>::variable(st.lambda[bb], slot[2]);
-    win.t[k] = Seed<S>::variable(st.t[bb], slot[3]);
+    win.X[k][0] = Seed<S>::variable(st.dx[bb], 4 * k + 0) + (pb.qx[bb] - pb.qx[i]);
+    win.X[k][1] = Seed<S>::variable(st.dy[bb], 4 * k + 1) + (pb.qy[bb] - pb.qy[i]);
+    win.lam[k] = Seed<S>::variable(st.lambda[bb], 4 * k + 2);
+    win.t[k] = Seed<S>::variable(st.t[bb], 4 * k + 3);
   }
 }
 
