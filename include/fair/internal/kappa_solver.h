@@ -163,6 +163,23 @@ inline std::size_t range_block(const Problem& pb, const Block_range& range, std:
   return range.all ? ii : (range.first + ii) % pb.n;
 }
 
+/// trial = st + alpha * delta on the blocks of `range`, the unknowns of the ii-th block at
+/// delta[4 pos(ii) ...], projected onto the bounds.
+template <class Position>
+void stepped_state(const Problem& pb, const Block_range& range, const State& st, const std::vector<double>& delta,
+                   double alpha, Position pos, State& trial) {
+  trial = st;
+  const std::size_t na = range.all ? pb.n : range.count;
+  for (std::size_t ii = 0; ii < na; ++ii) {
+    const std::size_t i = range_block(pb, range, ii), p = 4 * pos(ii);
+    trial.dx[i] += alpha * delta[p];
+    trial.dy[i] += alpha * delta[p + 1];
+    trial.lambda[i] += alpha * delta[p + 2];
+    trial.t[i] += alpha * delta[p + 3];
+  }
+  project_bounds(trial);
+}
+
 /// The residuals of the blocks of `range` (all: evaluate()) into F; returns max |r|.
 inline double evaluate_range(const Problem& pb, const State& s, const Block_range& range, std::vector<double>& F) {
   if (range.all) return evaluate(pb, s, F);
@@ -228,15 +245,7 @@ inline double levenberg_marquardt(const Problem& pb, State& st, const Solve_sett
       if (!chol.factor()) { mu *= nu; nu *= 2; continue; }
       for (std::size_t k = 0; k < N; ++k) delta[k] = -g[k];
       chol.solve(delta.data());
-      trial = st;
-      for (std::size_t ii = 0; ii < na; ++ii) {
-        const std::size_t i = range_block(pb, range, ii), p = 4 * pos(ii);
-        trial.dx[i] += delta[p];
-        trial.dy[i] += delta[p + 1];
-        trial.lambda[i] += delta[p + 2];
-        trial.t[i] += delta[p + 3];
-      }
-      project_bounds(trial);
+      stepped_state(pb, range, st, delta, 1.0, pos, trial);
       const double fm = evaluate_range(pb, trial, range, Ftrial);
       const double ct = half_squared_norm(Ftrial);
       double pred = 0;
@@ -288,15 +297,7 @@ inline double newton(const Problem& pb, State& st, const Solve_settings& setting
   State trial;
   bool factored = false;
   auto try_step = [&](double alpha) {
-    trial = st;
-    for (std::size_t ii = 0; ii < na; ++ii) {
-      const std::size_t i = range_block(pb, range, ii);
-      trial.dx[i] += alpha * delta[4 * ii];
-      trial.dy[i] += alpha * delta[4 * ii + 1];
-      trial.lambda[i] += alpha * delta[4 * ii + 2];
-      trial.t[i] += alpha * delta[4 * ii + 3];
-    }
-    project_bounds(trial);
+    stepped_state(pb, range, st, delta, alpha, [](std::size_t ii) { return ii; }, trial);
     const double fm = evaluate_range(pb, trial, range, Ftrial);
     const double ct = half_squared_norm(Ftrial);
     // Armijo condition: the directional derivative of 1/2|r|^2 along the Newton step is -|r|^2.
