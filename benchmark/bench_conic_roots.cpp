@@ -12,7 +12,7 @@
 
 #include <fair/Bernstein_root_isolation.h>
 #include <fair/Rational_quadratic_bezier_2.h>
-#include <fair/internal/rational_quadratic_interpolation.h>
+#include <fair/internal/conic/interpolation.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Gmpq.h>
@@ -51,7 +51,7 @@ void BM_eq7_double_interval_filter(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {
     const Raw& r = in[i++ & 4095];
-    benchmark::DoNotOptimize(fair::internal::rational_quadratic_extremum_parameter(r.x0, r.y0, r.qx, r.qy, r.x2, r.y2, r.w));
+    benchmark::DoNotOptimize(fair::internal::conic::rational_quadratic_extremum_parameter(r.x0, r.y0, r.qx, r.qy, r.x2, r.y2, r.w));
   }
   state.SetItemsProcessed(state.iterations());
 }
@@ -65,7 +65,7 @@ void BM_eq7_double_unique_root_of_rounded_quartic(benchmark::State& state) {
     const double v0x = r.x0 - r.qx, v0y = r.y0 - r.qy, v2x = r.x2 - r.qx, v2y = r.y2 - r.qy;
     const double A = v0x * v0x + v0y * v0y, B = v0x * v2x + v0y * v2y, C = v2x * v2x + v2y * v2y;
     const double b[5] = {-r.w * A, -(A + B) / 4, 0.0, (B + C) / 4, r.w * C};
-    benchmark::DoNotOptimize(fair::internal::certified_unique_root(b, 5));
+    benchmark::DoNotOptimize(fair::internal::bernstein::certified_unique_root(b, 5));
   }
   state.SetItemsProcessed(state.iterations());
 }
@@ -97,7 +97,7 @@ std::vector<fair::Rational_quadratic_bezier_2<K>> pieces() {
   std::vector<fair::Rational_quadratic_bezier_2<K>> out;
   for (const Raw& r : inputs()) {
     double p1x, p1y;
-    fair::internal::rational_quadratic_middle_control_point(r.x0, r.y0, r.qx, r.qy, r.x2, r.y2, r.w, 0.37, p1x, p1y);
+    fair::internal::conic::rational_quadratic_middle_control_point(r.x0, r.y0, r.qx, r.qy, r.x2, r.y2, r.w, 0.37, p1x, p1y);
     out.emplace_back(typename K::Point_2(r.x0, r.y0), typename K::Point_2(p1x, p1y), typename K::Point_2(r.x2, r.y2),
                      typename K::FT(r.w));
   }

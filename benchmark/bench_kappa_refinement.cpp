@@ -1,6 +1,6 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// Benchmarks of the alternating passes of Section 5.1 (internal/kappa_refinement.h), the first
+// Benchmarks of the alternating passes of Section 5.1 (internal/kappa/refinement.h), the first
 // phase of every cold fair::Kappa_curve_2 solve, on the closed random star-shaped data of
 // bench_kappa.cpp (n interpolated points):
 //  - one refinement pass (w, t, lambda, P) from the state after 5 passes (the state is restored
@@ -10,7 +10,7 @@
 //    residual evaluations included; counter `passes`.
 // Run: ./bench_kappa_refinement --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
-#include <fair/internal/kappa_refinement.h>
+#include <fair/internal/kappa/refinement.h>
 
 #include <benchmark/benchmark.h>
 

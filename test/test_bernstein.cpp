@@ -3,7 +3,7 @@
 // floating types), on seeded random polynomials.
 
 #include <fair/Bernstein_polynomial.h>
-#include <fair/internal/bernstein_exact.h>
+#include <fair/internal/bernstein/exact.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Gmpfr.h>
@@ -237,7 +237,7 @@ struct Check<Q> {
 template <>
 struct Check<Lazy> {
   static void close(const Lazy& x, const Q& ref, double) {
-    EXPECT_EQ(fair::internal::to_exact_rational(x, "test"), ref);
+    EXPECT_EQ(fair::internal::bernstein::to_exact_rational(x, "test"), ref);
   }
 };
 template <>

@@ -81,7 +81,7 @@ TYPED_TEST(Cardinal_typed, PaperTable1) {
     // The energy at the optimum equals the full-curve sum (end segments contribute 0): exact identity.
     EXPECT_TRUE(best.approximate_energy() == o.energy);
     // It is 144 (S - M^2/D) over the interior sums.
-    const auto s = fair::internal::cardinal_interior_sums<FT>(p, false);
+    const auto s = fair::internal::cardinal::cardinal_interior_sums<FT>(p, false);
     EXPECT_TRUE(o.energy == FT(144) * (s.S() - s.M() * s.M() / s.D()));
   }
 }

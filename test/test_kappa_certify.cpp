@@ -6,7 +6,7 @@
 // fair::certify_pieces: the returned pieces themselves, certified piece by piece in O(n).
 
 #include <fair/Kappa_curve_2.h>
-#include <fair/internal/classic_tridiagonal.h>
+#include <fair/internal/classic/tridiagonal.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
@@ -144,7 +144,7 @@ TEST(KappaCertify, PiecewiseCertificateOfTheReturnedEpeckPieces) {
       for (std::size_t k = 0; k < 3; ++k) {
         const auto& a = c.exact_pieces[j].control_point(k);
         const auto& b = curve.piece(j).control_point(k);
-        EXPECT_TRUE(a.x() == fair::internal::to_gmpq(b.x()) && a.y() == fair::internal::to_gmpq(b.y()))
+        EXPECT_TRUE(a.x() == fair::internal::common::to_gmpq(b.x()) && a.y() == fair::internal::common::to_gmpq(b.y()))
             << "piece " << j << " control point " << k;
       }
     const fair::Kappa_certificate global = fair::certify(curve);
@@ -190,14 +190,14 @@ Exact_inputs inputs_of(const fair::Kappa_curve_2<K>& curve) {
   in.closed = curve.is_closed();
   for (std::size_t j = 0; j < n; ++j) {
     in.index.push_back(curve.point_index(j));
-    in.qx.push_back(fair::internal::to_gmpq(curve.points()[curve.point_index(j)].x()));
-    in.qy.push_back(fair::internal::to_gmpq(curve.points()[curve.point_index(j)].y()));
+    in.qx.push_back(fair::internal::common::to_gmpq(curve.points()[curve.point_index(j)].x()));
+    in.qy.push_back(fair::internal::common::to_gmpq(curve.points()[curve.point_index(j)].y()));
   }
   if (!in.closed) {
-    in.sx = fair::internal::to_gmpq(curve.points()[0].x());
-    in.sy = fair::internal::to_gmpq(curve.points()[0].y());
-    in.ex = fair::internal::to_gmpq(curve.points()[m - 1].x());
-    in.ey = fair::internal::to_gmpq(curve.points()[m - 1].y());
+    in.sx = fair::internal::common::to_gmpq(curve.points()[0].x());
+    in.sy = fair::internal::common::to_gmpq(curve.points()[0].y());
+    in.ex = fair::internal::common::to_gmpq(curve.points()[m - 1].x());
+    in.ey = fair::internal::common::to_gmpq(curve.points()[m - 1].y());
   }
   in.lambda = curve.state().lambda;
   in.t = curve.state().t;
@@ -238,11 +238,11 @@ void exact_eq18(bool closed, const std::vector<CGAL::Gmpq>& qx, const std::vecto
     }
   }
   if (closed) {
-    px = fair::internal::solve_cyclic_tridiagonal(a, b, c, dx);
-    py = fair::internal::solve_cyclic_tridiagonal(a, b, c, dy);
+    px = fair::internal::classic::solve_cyclic_tridiagonal(a, b, c, dx);
+    py = fair::internal::classic::solve_cyclic_tridiagonal(a, b, c, dy);
   } else {
-    px = fair::internal::solve_tridiagonal(a, b, c, dx);
-    py = fair::internal::solve_tridiagonal(a, b, c, dy);
+    px = fair::internal::classic::solve_tridiagonal(a, b, c, dx);
+    py = fair::internal::classic::solve_tridiagonal(a, b, c, dy);
   }
 }
 
@@ -495,7 +495,7 @@ TEST(KappaCertify, MovedControlPointFailsInterpolationAndG1) {
     w[j] = c.exact_pieces[j].weight();
     t[j] = curve.t(j);
     index[j] = j;
-    Q[j] = EK::Point_2(fair::internal::to_gmpq(curve.points()[j].x()), fair::internal::to_gmpq(curve.points()[j].y()));
+    Q[j] = EK::Point_2(fair::internal::common::to_gmpq(curve.points()[j].x()), fair::internal::common::to_gmpq(curve.points()[j].y()));
   }
   E[n] = E[0];
   const fair::Kappa_certificate same = kp::certify_exact(true, index, E, P, w, t, Q);

@@ -6,7 +6,7 @@
 // straightforward reference written here from the paper's formulas in absolute coordinates,
 // and circle reproduction (the paper's main property) by the passes alone.
 
-#include <fair/internal/kappa_refinement.h>
+#include <fair/internal/kappa/refinement.h>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>

@@ -5,7 +5,7 @@
 // kappa_jacobian.h against automatic differentiation over all 16 unknowns of a window, and
 // the Newton phase of kappa_solver.h against Levenberg-Marquardt.
 
-#include <fair/internal/kappa_solver.h>
+#include <fair/internal/kappa/solver.h>
 
 #include <gtest/gtest.h>
 

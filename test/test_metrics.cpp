@@ -194,7 +194,7 @@ TEST(Metrics, RandomCubicsCertifiedCountsAreConsistent) {
     }
     const std::vector<fair::Bezier_2<SC_gmpq>> cq{fair::Bezier_2<SC_gmpq>(q)};
     const std::vector<fair::Bezier_2<SC_double>> cd{fair::Bezier_2<SC_double>(p)};
-    const auto h = fair::internal::homogeneous_exact(cq[0]);
+    const auto h = fair::internal::metrics::homogeneous_exact(cq[0]);
     const auto D = fair::internal::curvature_sign_polynomial(h);
     if (fair::internal::is_zero_polynomial(D)) continue;
     const fair::Feature_report in = fair::inflections(cq);
@@ -230,8 +230,8 @@ TEST(Metrics, ConicPiecesUseTheirOwnCertifiedExtrema) {
   // Schiller, Schaefer); the homogeneous construction here must find the same points.
   typedef fair::Rational_quadratic_bezier_2<SC_gmpq> Conic;
   typedef SC_gmpq::Point_2 P;
-  static_assert(fair::internal::Has_own_curvature_extrema<Conic>::value, "the conic's own extrema are used");
-  static_assert(!fair::internal::Has_own_curvature_extrema<Test_rational_piece<SC_gmpq>>::value, "");
+  static_assert(fair::internal::metrics::Has_own_curvature_extrema<Conic>::value, "the conic's own extrema are used");
+  static_assert(!fair::internal::metrics::Has_own_curvature_extrema<Test_rational_piece<SC_gmpq>>::value, "");
   EXPECT_EQ(fair::curvature_extrema(std::vector<Conic>{Conic(P(3, 0), P(0, 3), P(0, 0), CGAL::Gmpq(3, 10))}).count(), 2u);
   for (const CGAL::Gmpq& w : {CGAL::Gmpq(3, 10), CGAL::Gmpq(1, 2), CGAL::Gmpq(1), CGAL::Gmpq(2)}) {
     const Conic c(P(3, 0), P(0, 3), P(0, 0), w);
@@ -350,13 +350,13 @@ TEST(Metrics, GenericPiecesFallBackToSampling) {
 
 TEST(Metrics, QuadratureAccuracyAndCaps) {
   fair::Quadrature_options o;
-  const auto p = fair::internal::adaptive_integral([](double x) { return std::pow(x, 20); }, 0.0, 1.0, o, "test");
+  const auto p = fair::internal::metrics::adaptive_integral([](double x) { return std::pow(x, 20); }, 0.0, 1.0, o, "test");
   EXPECT_NEAR(p.value, 1.0 / 21, 1e-16);
-  const auto r = fair::internal::adaptive_integral([](double x) { return std::sqrt(x); }, 0.0, 1.0, o, "test");
+  const auto r = fair::internal::metrics::adaptive_integral([](double x) { return std::sqrt(x); }, 0.0, 1.0, o, "test");
   EXPECT_NEAR(r.value, 2.0 / 3, 1e-10);
   EXPECT_GE(r.error_bound, std::fabs(r.value - 2.0 / 3) * 0.999);
   o.max_subintervals = 10;
-  EXPECT_THROW(fair::internal::adaptive_integral([](double x) { return 1 / std::sqrt(x); }, 0.0, 1.0, o, "test"),
+  EXPECT_THROW(fair::internal::metrics::adaptive_integral([](double x) { return 1 / std::sqrt(x); }, 0.0, 1.0, o, "test"),
                fair::Non_convergence_error);
   // A cusp makes the curvature blow up: reported, never NaN.
   typedef SC_double::Point_2 P;

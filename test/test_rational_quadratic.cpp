@@ -104,7 +104,7 @@ CGAL::Gmpq eq7_value(const Kq::Point_2& p0, const Kq::Point_2& qq, const Kq::Poi
 
 template <class K>
 Kq::Point_2 to_q(const typename K::Point_2& p) {
-  return Kq::Point_2(fair::internal::to_gmpq(p.x()), fair::internal::to_gmpq(p.y()));
+  return Kq::Point_2(fair::internal::common::to_gmpq(p.x()), fair::internal::common::to_gmpq(p.y()));
 }
 
 template <class K>
@@ -557,16 +557,16 @@ TYPED_TEST(Rational_quadratic_test, Eq7CertificateOnRandomInputs) {
     const fair::Curvature_extremum_parameter<K> r = fair::curvature_extremum_parameter<K>(p0, qq, p2, w);
     ASSERT_EQ(r.sign_variations, 1);
     ASSERT_EQ(fair::sign_variations(fair::Bernstein_polynomial<CGAL::Gmpq>(std::vector<CGAL::Gmpq>{
-                [&] { return -fair::internal::to_gmpq(w) * (to_q<K>(p0) - to_q<K>(qq)).squared_length(); }(),
+                [&] { return -fair::internal::common::to_gmpq(w) * (to_q<K>(p0) - to_q<K>(qq)).squared_length(); }(),
                 -((to_q<K>(p0) - to_q<K>(qq)) * ((to_q<K>(p0) - to_q<K>(qq)) + (to_q<K>(p2) - to_q<K>(qq)))),
                 CGAL::Gmpq(0),
                 (to_q<K>(p2) - to_q<K>(qq)) * ((to_q<K>(p0) - to_q<K>(qq)) + (to_q<K>(p2) - to_q<K>(qq))),
-                fair::internal::to_gmpq(w) * (to_q<K>(p2) - to_q<K>(qq)).squared_length()})),
+                fair::internal::common::to_gmpq(w) * (to_q<K>(p2) - to_q<K>(qq)).squared_length()})),
               1);
     ASSERT_TRUE(r.t_lower <= r.t_upper);
     ASSERT_TRUE(CGAL::Gmpq(r.t) >= r.t_lower && CGAL::Gmpq(r.t) <= r.t_upper);
     EXPECT_LT(dbl(r.t_upper - r.t_lower), 1e-13 * (1 + r.t));
-    const CGAL::Gmpq wq = fair::internal::to_gmpq(w);
+    const CGAL::Gmpq wq = fair::internal::common::to_gmpq(w);
     const Kq::Point_2 a = to_q<K>(p0), b = to_q<K>(qq), c = to_q<K>(p2);
     if (r.t_lower == r.t_upper) {
       EXPECT_EQ(CGAL::sign(eq7_value(a, b, c, wq, r.t_lower)), CGAL::ZERO);

@@ -21,7 +21,7 @@
 #define FAIR_BERNSTEIN_POLYNOMIAL_H
 
 #include <fair/Errors.h>
-#include <fair/internal/bernstein_sign.h>
+#include <fair/internal/bernstein/sign.h>
 
 #include <CGAL/number_utils.h>
 
@@ -135,7 +135,7 @@ public:
   static Bernstein_polynomial from_power_basis(const std::vector<NT>& a) {
     internal::require(!a.empty(), "Bernstein_polynomial::from_power_basis: empty coefficient vector");
     const std::size_t n = a.size() - 1;
-    const std::vector<std::vector<NT>> C = internal::binomial_table<NT>(n);
+    const std::vector<std::vector<NT>> C = internal::bernstein::binomial_table<NT>(n);
     std::vector<NT> b(n + 1, NT(0));
     for (std::size_t i = 0; i <= n; ++i)
       for (std::size_t k = 0; k <= i; ++k) b[i] = b[i] + C[i][k] * a[k] / C[n][k];
@@ -146,7 +146,7 @@ public:
   /// a_k = C(n,k) sum_{i<=k} (-1)^{k-i} C(k,i) b_i (division free).
   std::vector<NT> to_power_basis() const {
     const std::size_t n = degree();
-    const std::vector<std::vector<NT>> C = internal::binomial_table<NT>(n);
+    const std::vector<std::vector<NT>> C = internal::bernstein::binomial_table<NT>(n);
     std::vector<NT> a(n + 1, NT(0));
     for (std::size_t k = 0; k <= n; ++k) {
       NT s(0);
@@ -188,7 +188,7 @@ public:
   /// Product, of degree m+n: c_k = sum_{i+j=k} C(m,i) C(n,j) / C(m+n,k) p_i q_j.
   friend Bernstein_polynomial operator*(const Bernstein_polynomial& p, const Bernstein_polynomial& q) {
     const std::size_t m = p.degree(), n = q.degree();
-    const std::vector<std::vector<NT>> C = internal::binomial_table<NT>(m + n);
+    const std::vector<std::vector<NT>> C = internal::bernstein::binomial_table<NT>(m + n);
     std::vector<NT> c(m + n + 1, NT(0));
     for (std::size_t i = 0; i <= m; ++i)
       for (std::size_t j = 0; j <= n; ++j) c[i + j] = c[i + j] + (C[m][i] * C[n][j]) * (p.b_[i] * q.b_[j]);
@@ -229,7 +229,7 @@ private:
 /// counted with multiplicity, is at most the variation count and has the same parity.
 template <class NT>
 Sign_variation_count sign_variation_bounds(const Bernstein_polynomial<NT>& p) {
-  return internal::sign_variation_bounds(p.coefficients().begin(), p.coefficients().end());
+  return internal::bernstein::sign_variation_bounds(p.coefficients().begin(), p.coefficients().end());
 }
 
 /// The number of sign variations of the Bernstein coefficients of p, zero coefficients skipped

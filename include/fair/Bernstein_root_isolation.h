@@ -15,7 +15,7 @@
 // constructor throws Precondition_error.
 //
 // Method. Descartes / Vincent-Collins-Akritas bisection on Bernstein coefficients (see
-// internal/bernstein_vca.h): interval-filtered subdivision with exact Gmpq fallback on the
+// internal/bernstein/vca.h): interval-filtered subdivision with exact Gmpq fallback on the
 // subintervals whose sign pattern is uncertain; a sign-variation count of 0 or 1 proves the
 // count of roots in a subinterval. If the bisection reaches depth 30 (roots closer than about
 // 1e-9, or a multiple root inside a subinterval), Yun's square-free factorisation over Q is
@@ -35,10 +35,10 @@
 
 #include <fair/Bernstein_polynomial.h>
 #include <fair/Errors.h>
-#include <fair/internal/bernstein_dyadic.h>
-#include <fair/internal/bernstein_exact.h>
-#include <fair/internal/bernstein_unique_root.h>
-#include <fair/internal/bernstein_vca.h>
+#include <fair/internal/bernstein/dyadic.h>
+#include <fair/internal/bernstein/exact.h>
+#include <fair/internal/bernstein/unique_root.h>
+#include <fair/internal/bernstein/vca.h>
 
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
@@ -81,15 +81,15 @@ public:
   /// non-point interval coefficient; Non_convergence_error if the depth cap is hit.
   template <class NT>
   explicit Bernstein_root_isolation(const Bernstein_polynomial<NT>& p)
-    : p_(internal::to_exact_rationals(p.coefficients(), "Bernstein_root_isolation")) {
+    : p_(internal::bernstein::to_exact_rationals(p.coefficients(), "Bernstein_root_isolation")) {
     const std::vector<CGAL::Gmpq>& E = p_.coefficients();
     bool zero = true;
     for (const CGAL::Gmpq& c : E) zero = zero && CGAL::is_zero(c);
     internal::require(!zero, "Bernstein_root_isolation: the zero polynomial (", p,
                       ") vanishes on all of [0,1]; it has no isolated roots");
-    std::vector<internal::Unprotected_interval> enclosure;
+    std::vector<internal::bernstein::Unprotected_interval> enclosure;
     enclosure.reserve(E.size());
-    for (const NT& c : p.coefficients()) enclosure.push_back(internal::Unprotected_interval(CGAL::to_interval(c)));
+    for (const NT& c : p.coefficients()) enclosure.push_back(internal::bernstein::Unprotected_interval(CGAL::to_interval(c)));
     isolate(std::move(enclosure));
   }
 
@@ -146,30 +146,30 @@ public:
   }
 
 private:
-  void isolate(std::vector<internal::Unprotected_interval> enclosure) {
+  void isolate(std::vector<internal::bernstein::Unprotected_interval> enclosure) {
     const std::vector<CGAL::Gmpq>& E = p_.coefficients();
     {
-      internal::Vca_isolator vca(E, true, std::move(enclosure));
+      internal::bernstein::Vca_isolator vca(E, true, std::move(enclosure));
       if (vca.run(30)) return accept(E, vca.leaves());
     }
     used_square_free_ = true;
-    const std::vector<internal::Q_polynomial> factors =
-        internal::q_square_free_factorization(p_.to_power_basis());
+    const std::vector<internal::bernstein::Q_polynomial> factors =
+        internal::bernstein::q_square_free_factorization(p_.to_power_basis());
     bool square_free = true;
     for (std::size_t k = 1; k < factors.size(); ++k) square_free = square_free && factors[k].size() <= 1;
     if (square_free) {
-      internal::Vca_isolator vca(E);
+      internal::bernstein::Vca_isolator vca(E);
       if (!vca.run(hard_cap)) throw_cap();
       return accept(E, vca.leaves());
     }
     // Square-free part: the product of the factors (monic, so the product is exact).
-    internal::Q_polynomial sqf(1, CGAL::Gmpq(1));
-    for (const internal::Q_polynomial& f : factors) sqf = multiply(sqf, f);
+    internal::bernstein::Q_polynomial sqf(1, CGAL::Gmpq(1));
+    for (const internal::bernstein::Q_polynomial& f : factors) sqf = multiply(sqf, f);
     const std::vector<CGAL::Gmpq> S = Bernstein_polynomial<CGAL::Gmpq>::from_power_basis(sqf).coefficients();
-    internal::Vca_isolator vca(S);
+    internal::bernstein::Vca_isolator vca(S);
     if (!vca.run(hard_cap)) throw_cap();
-    std::vector<internal::Isolation_leaf>& leaves = vca.leaves();
-    for (internal::Isolation_leaf& leaf : leaves) {
+    std::vector<internal::bernstein::Isolation_leaf>& leaves = vca.leaves();
+    for (internal::bernstein::Isolation_leaf& leaf : leaves) {
       leaf.multiplicity = 0;
       for (std::size_t k = 0; k < factors.size() && leaf.multiplicity == 0; ++k) {
         if (factors[k].size() <= 1) continue;
@@ -182,14 +182,14 @@ private:
     accept(S, leaves);
   }
 
-  static internal::Q_polynomial multiply(const internal::Q_polynomial& a, const internal::Q_polynomial& b) {
-    internal::Q_polynomial c(a.size() + b.size() - 1, CGAL::Gmpq(0));
+  static internal::bernstein::Q_polynomial multiply(const internal::bernstein::Q_polynomial& a, const internal::bernstein::Q_polynomial& b) {
+    internal::bernstein::Q_polynomial c(a.size() + b.size() - 1, CGAL::Gmpq(0));
     for (std::size_t i = 0; i < a.size(); ++i)
       for (std::size_t j = 0; j < b.size(); ++j) c[i + j] += a[i] * b[j];
     return c;
   }
 
-  static CGAL::Gmpq horner(const internal::Q_polynomial& a, const CGAL::Gmpq& x) {
+  static CGAL::Gmpq horner(const internal::bernstein::Q_polynomial& a, const CGAL::Gmpq& x) {
     CGAL::Gmpq v(0);
     for (std::size_t k = a.size(); k-- > 0;) v = v * x + a[k];
     return v;
@@ -198,7 +198,7 @@ private:
   // A square-free factor f has at most one root, a simple one, in an isolating leaf (it divides
   // the square-free part); in the open case it has one iff the signs of f just inside the two
   // ends differ, read off the first and last nonzero Bernstein coefficients on [lower, upper].
-  static bool vanishes_in(const internal::Q_polynomial& f, const internal::Isolation_leaf& leaf) {
+  static bool vanishes_in(const internal::bernstein::Q_polynomial& f, const internal::bernstein::Isolation_leaf& leaf) {
     if (leaf.lower == leaf.upper) return CGAL::is_zero(horner(f, leaf.lower));
     const std::vector<CGAL::Gmpq> c =
         Bernstein_polynomial<CGAL::Gmpq>::from_power_basis(f).restricted(leaf.lower, leaf.upper).coefficients();
@@ -210,12 +210,12 @@ private:
     return first != last;
   }
 
-  void accept(const std::vector<CGAL::Gmpq>& witness, const std::vector<internal::Isolation_leaf>& leaves) {
+  void accept(const std::vector<CGAL::Gmpq>& witness, const std::vector<internal::bernstein::Isolation_leaf>& leaves) {
     witness_ = witness;
     witness_intervals_.clear();
     intervals_.clear();
     sign_after_lower_.clear();
-    for (const internal::Isolation_leaf& leaf : leaves) {
+    for (const internal::bernstein::Isolation_leaf& leaf : leaves) {
       Isolating_interval I;
       I.lower = leaf.lower;
       I.upper = leaf.upper;
@@ -233,11 +233,11 @@ private:
 
   void prepare_witness() {
     if (!witness_intervals_.empty()) return;
-    witness_intervals_ = internal::to_intervals(witness_);
+    witness_intervals_ = internal::bernstein::to_intervals(witness_);
     witness_approx_.clear();
-    for (const internal::Unprotected_interval& c : witness_intervals_) witness_approx_.push_back(CGAL::to_double(c));
-    witness_integer_ = internal::integer_scaled(witness_);
-    integer_work_ = internal::Mpz_array(witness_.size() + 3);
+    for (const internal::bernstein::Unprotected_interval& c : witness_intervals_) witness_approx_.push_back(CGAL::to_double(c));
+    witness_integer_ = internal::bernstein::integer_scaled(witness_);
+    integer_work_ = internal::bernstein::Mpz_array(witness_.size() + 3);
     scratch_.resize(witness_.size());
   }
 
@@ -246,9 +246,9 @@ private:
     prepare_witness();
     {
       CGAL::Protect_FPU_rounding<true> protect;
-      const internal::Unprotected_interval t(CGAL::to_interval(x));
-      const internal::Unprotected_interval s = internal::Unprotected_interval(1) - t;
-      std::vector<internal::Unprotected_interval>& w = scratch_;
+      const internal::bernstein::Unprotected_interval t(CGAL::to_interval(x));
+      const internal::bernstein::Unprotected_interval s = internal::bernstein::Unprotected_interval(1) - t;
+      std::vector<internal::bernstein::Unprotected_interval>& w = scratch_;
       w = witness_intervals_;
       for (std::size_t r = 1; r < w.size(); ++r)
         for (std::size_t k = 0; k + r < w.size(); ++k) w[k] = s * w[k] + t * w[k + 1];
@@ -263,26 +263,26 @@ private:
   int exact_witness_sign(const CGAL::Gmpq& x) {
     const std::size_t m = witness_.size();
     unsigned long e = 0;
-    if (internal::dyadic_parts(x, integer_work_[m + 2], e))
-      return internal::sign_bernstein_at_dyadic(witness_integer_, integer_work_[m + 2], e, integer_work_);
+    if (internal::bernstein::dyadic_parts(x, integer_work_[m + 2], e))
+      return internal::bernstein::sign_bernstein_at_dyadic(witness_integer_, integer_work_[m + 2], e, integer_work_);
     return CGAL::sign(Bernstein_polynomial<CGAL::Gmpq>(witness_).evaluate(x));
   }
   int exact_witness_sign(double x) {
     const std::size_t m = witness_.size();
     unsigned long e = 0;
-    internal::dyadic_parts(x, integer_work_[m + 2], e);
-    return internal::sign_bernstein_at_dyadic(witness_integer_, integer_work_[m + 2], e, integer_work_);
+    internal::bernstein::dyadic_parts(x, integer_work_[m + 2], e);
+    return internal::bernstein::sign_bernstein_at_dyadic(witness_integer_, integer_work_[m + 2], e, integer_work_);
   }
 
   // If interval i has double end points, shrinks it to at most max_ulps ulps with the double Newton /
-  // interval-certified bracketing of internal/bernstein_unique_root.h.
+  // interval-certified bracketing of internal/bernstein/unique_root.h.
   void tighten_in_double(std::size_t i, double max_ulps) {
     Isolating_interval& I = intervals_[i];
     if (I.is_point()) return;
     const double L = CGAL::to_double(I.lower), H = CGAL::to_double(I.upper);
     if (CGAL::Gmpq(L) != I.lower || CGAL::Gmpq(H) != I.upper) return;
     prepare_witness();
-    const internal::Double_bracket r = internal::tighten_double_bracket(
+    const internal::bernstein::Double_bracket r = internal::bernstein::tighten_double_bracket(
         witness_intervals_.data(), witness_approx_.data(), witness_.size(), L, H, sign_after_lower_[i],
         L + (H - L) / 2, [this](double x) { return exact_witness_sign(x); }, max_ulps);
     if (r.exact_root) {
@@ -319,11 +319,11 @@ private:
   std::vector<CGAL::Gmpq> witness_;
   // Lazily prepared for refinement: interval enclosures, double approximations and integer
   // coefficients of the witness, and scratch buffers.
-  std::vector<internal::Unprotected_interval> witness_intervals_;
+  std::vector<internal::bernstein::Unprotected_interval> witness_intervals_;
   std::vector<double> witness_approx_;
-  internal::Mpz_array witness_integer_;  // the witness scaled to integer Bernstein coefficients
-  internal::Mpz_array integer_work_;
-  std::vector<internal::Unprotected_interval> scratch_;
+  internal::bernstein::Mpz_array witness_integer_;  // the witness scaled to integer Bernstein coefficients
+  internal::bernstein::Mpz_array integer_work_;
+  std::vector<internal::bernstein::Unprotected_interval> scratch_;
   bool used_square_free_ = false;
 };
 
@@ -334,16 +334,16 @@ std::vector<Isolating_interval> isolate_roots(const Bernstein_polynomial<NT>& p)
 }
 
 /// Fast certified path for the common case of exactly one sign change (see
-/// internal/bernstein_unique_root.h for the method and accuracy).
+/// internal/bernstein/unique_root.h for the method and accuracy).
 /// `max_ulps` (>= 1) bounds the width of the certified bracket.
 inline Unique_root certified_unique_root(const Bernstein_polynomial<double>& p, double max_ulps = 8) {
-  return internal::certified_unique_root(p.coefficients().data(), p.coefficients().size(), max_ulps);
+  return internal::bernstein::certified_unique_root(p.coefficients().data(), p.coefficients().size(), max_ulps);
 }
 
 /// The same on N = degree + 1 coefficients in a std::array: no heap allocation for N <= 32.
 template <std::size_t N>
 Unique_root certified_unique_root(const std::array<double, N>& b, double max_ulps = 8) {
-  return internal::certified_unique_root(b, max_ulps);
+  return internal::bernstein::certified_unique_root(b, max_ulps);
 }
 
 } // namespace fair

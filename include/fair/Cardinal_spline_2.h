@@ -27,8 +27,8 @@
 #include <fair/Bezier_2.h>
 #include <fair/Errors.h>
 #include <fair/Fairness_metrics.h>
-#include <fair/internal/cardinal_optimum.h>
-#include <fair/internal/input_checks.h>
+#include <fair/internal/cardinal/optimum.h>
+#include <fair/internal/common/input_checks.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/number_utils.h>
@@ -74,7 +74,7 @@ std::pair<Point_2, Point_2> cardinal_auxiliary_points_unchecked(const std::vecto
 template <class Point_2>
 std::pair<Point_2, Point_2> cardinal_auxiliary_points(const std::vector<Point_2>& p,
                                                       const typename CGAL::Kernel_traits<Point_2>::Kernel::FT& alpha) {
-  internal::check_interpolation_input(p, 3, false, "cardinal_auxiliary_points");
+  internal::common::check_interpolation_input(p, 3, false, "cardinal_auxiliary_points");
   internal::require(!CGAL::is_zero(alpha), "cardinal_auxiliary_points: alpha = 0 has no optimal auxiliary points (eqs. 16-17 divide by alpha)");
   return internal::cardinal_auxiliary_points_unchecked(p, alpha);
 }
@@ -99,8 +99,8 @@ optimal_cardinal_parameters(const std::vector<Point_2>& p, bool closed = false) 
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
   typedef typename K::FT FT;
   const char* method = closed ? "optimal_cardinal_parameters (closed)" : "optimal_cardinal_parameters (open)";
-  internal::check_interpolation_input(p, closed ? 3 : 4, closed, method);
-  const internal::Cardinal_sums<FT> s = internal::cardinal_interior_sums<FT>(p, closed);
+  internal::common::check_interpolation_input(p, closed ? 3 : 4, closed, method);
+  const internal::cardinal::Cardinal_sums<FT> s = internal::cardinal::cardinal_interior_sums<FT>(p, closed);
   const FT D = s.D(), M = s.M();
   if (CGAL::is_zero(D))
     throw Invalid_input_error(internal::message(
@@ -143,8 +143,8 @@ public:
   ///         Precondition_error unless alpha > 0.
   Cardinal_spline_2(std::vector<Point_2> points, const FT& alpha, const Point_2& aux_start, const Point_2& aux_end)
     : p_(std::move(points)), alpha_(alpha), closed_(false) {
-    internal::check_interpolation_input(p_, 2, false, "Cardinal_spline_2");
-    internal::check_finite_points(std::vector<Point_2>{aux_start, aux_end}, "Cardinal_spline_2 (auxiliary points)");
+    internal::common::check_interpolation_input(p_, 2, false, "Cardinal_spline_2");
+    internal::common::check_finite_points(std::vector<Point_2>{aux_start, aux_end}, "Cardinal_spline_2 (auxiliary points)");
     check_alpha();
     p_.insert(p_.begin(), aux_start);
     p_.push_back(aux_end);
@@ -156,7 +156,7 @@ public:
   Cardinal_spline_2(std::vector<Point_2> points, const FT& alpha, bool closed)
     : p_(std::move(points)), alpha_(alpha), closed_(closed) {
     if (closed) {
-      internal::check_interpolation_input(p_, 3, true, "Cardinal_spline_2 (closed)");
+      internal::common::check_interpolation_input(p_, 3, true, "Cardinal_spline_2 (closed)");
       check_alpha();
     } else {
       check_alpha();
@@ -273,7 +273,7 @@ public:
   /// The approximate curvature variation energy of eq. 10, sum over all segments of
   /// int_0^1 |r_i'''(t)|^2 dt (eq. 9), exact in an exact kernel.
   FT approximate_energy() const {
-    internal::Cardinal_sums<FT> s;
+    internal::cardinal::Cardinal_sums<FT> s;
     const Point_2 *q0, *q1, *q2, *q3;
     for (std::size_t i = 0; i < number_of_segments(); ++i) {
       segment_points(i, q0, q1, q2, q3);

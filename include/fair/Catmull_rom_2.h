@@ -34,8 +34,8 @@
 
 #include <fair/Bezier_2.h>
 #include <fair/Errors.h>
-#include <fair/internal/classic_common.h>
-#include <fair/internal/input_checks.h>
+#include <fair/internal/classic/common.h>
+#include <fair/internal/common/input_checks.h>
 
 #include <cstddef>
 #include <utility>
@@ -59,8 +59,8 @@ public:
                          Knot_spacing spacing = Knot_spacing::uniform)
     : points_(std::move(points)), closed_(closed), spacing_(spacing) {
     const char* method = "Catmull_rom_2";
-    internal::check_interpolation_input(points_, closed ? 3 : 2, closed, method);
-    const std::vector<FT> h = internal::classic_knot_intervals<K>(points_, closed, spacing, method);
+    internal::common::check_interpolation_input(points_, closed ? 3 : 2, closed, method);
+    const std::vector<FT> h = internal::classic::classic_knot_intervals<K>(points_, closed, spacing, method);
     const std::size_t n = points_.size();
     std::vector<Vector_2> m(n);
     if (closed) {
@@ -92,14 +92,14 @@ public:
                 Knot_spacing spacing = Knot_spacing::uniform)
     : points_(std::move(points)), closed_(false), spacing_(spacing) {
     const char* method = "Catmull_rom_2";
-    internal::check_interpolation_input(points_, 2, false, method);
+    internal::common::check_interpolation_input(points_, 2, false, method);
     std::vector<Point_2> extended;
     extended.reserve(points_.size() + 2);
     extended.push_back(before);
     extended.insert(extended.end(), points_.begin(), points_.end());
     extended.push_back(after);
-    internal::check_finite_points(extended, "Catmull_rom_2 (auxiliary points)");
-    const std::vector<FT> he = internal::classic_knot_intervals<K>(extended, false, spacing, method);
+    internal::common::check_finite_points(extended, "Catmull_rom_2 (auxiliary points)");
+    const std::vector<FT> he = internal::classic::classic_knot_intervals<K>(extended, false, spacing, method);
     const std::size_t n = points_.size();
     std::vector<Vector_2> m(n);
     for (std::size_t i = 0; i < n; ++i)
@@ -126,9 +126,9 @@ private:
   }
 
   void assemble(const std::vector<FT>& h, const std::vector<Vector_2>& m) {
-    knots_ = internal::classic_cumulative_knots(h);
+    knots_ = internal::classic::classic_cumulative_knots(h);
     derivatives_ = m;
-    pieces_ = internal::classic_hermite_pieces<K>(points_, m, h, "Catmull_rom_2");
+    pieces_ = internal::classic::classic_hermite_pieces<K>(points_, m, h, "Catmull_rom_2");
   }
 
   std::vector<Point_2> points_;

@@ -30,9 +30,9 @@
 
 #include <fair/Bezier_2.h>
 #include <fair/Errors.h>
-#include <fair/internal/classic_bspline.h>
-#include <fair/internal/classic_common.h>
-#include <fair/internal/input_checks.h>
+#include <fair/internal/classic/bspline.h>
+#include <fair/internal/classic/common.h>
+#include <fair/internal/common/input_checks.h>
 
 #include <cstddef>
 #include <utility>
@@ -61,21 +61,21 @@ public:
     : points_(std::move(points)), closed_(closed), ends_(ends) {
     const char* method = "Cubic_bspline_2";
     const std::size_t minimum = closed ? 3 : (ends == Cubic_bspline_ends::trimmed ? 4 : 2);
-    internal::check_interpolation_input(points_, minimum, closed, method);
+    internal::common::check_interpolation_input(points_, minimum, closed, method);
     if (closed || ends == Cubic_bspline_ends::trimmed) {
       control_ = points_;
     } else {
       const std::size_t n = points_.size();
       const FT two(2), minus_one(-1), zero(0);
       control_.reserve(n + 2);
-      control_.push_back(internal::classic_combine<K>(two, points_[0], minus_one, points_[1], zero, points_[0],
+      control_.push_back(internal::classic::classic_combine<K>(two, points_[0], minus_one, points_[1], zero, points_[0],
                                                       zero, points_[0]));
       control_.insert(control_.end(), points_.begin(), points_.end());
-      control_.push_back(internal::classic_combine<K>(two, points_[n - 1], minus_one, points_[n - 2], zero,
+      control_.push_back(internal::classic::classic_combine<K>(two, points_[n - 1], minus_one, points_[n - 2], zero,
                                                       points_[0], zero, points_[0]));
     }
-    pieces_ = internal::classic_uniform_bspline_pieces<K>(control_, closed);
-    internal::classic_check_finite_pieces(pieces_, method);
+    pieces_ = internal::classic::classic_uniform_bspline_pieces<K>(control_, closed);
+    internal::classic::classic_check_finite_pieces(pieces_, method);
   }
 
   /// The cubic Bezier pieces (piece i spans the knot interval [i, i+1] of the uniform knots,

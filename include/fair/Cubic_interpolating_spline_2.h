@@ -36,9 +36,9 @@
 
 #include <fair/Bezier_2.h>
 #include <fair/Errors.h>
-#include <fair/internal/classic_common.h>
-#include <fair/internal/classic_tridiagonal.h>
-#include <fair/internal/input_checks.h>
+#include <fair/internal/classic/common.h>
+#include <fair/internal/classic/tridiagonal.h>
+#include <fair/internal/common/input_checks.h>
 
 #include <CGAL/number_utils.h>
 
@@ -111,11 +111,11 @@ private:
   void build(const Vector_2& start_derivative, const Vector_2& end_derivative) {
     const char* method = "Cubic_interpolating_spline_2";
     const bool closed = is_closed();
-    internal::check_interpolation_input(points_, closed ? 3 : 2, closed, method);
+    internal::common::check_interpolation_input(points_, closed ? 3 : 2, closed, method);
     const std::vector<Point_2>& p = points_;
     const std::size_t n = p.size();
-    const std::vector<FT> h = internal::classic_knot_intervals<K>(p, closed, spacing_, method);
-    knots_ = internal::classic_cumulative_knots(h);
+    const std::vector<FT> h = internal::classic::classic_knot_intervals<K>(p, closed, spacing_, method);
+    knots_ = internal::classic::classic_cumulative_knots(h);
 
     // Rows of the (cyclic) tridiagonal system, one per point; a = sub, b = diagonal, c = super.
     std::vector<FT> a(n, FT(0)), b(n, FT(0)), c(n, FT(0)), dx(n, FT(0)), dy(n, FT(0));
@@ -156,16 +156,16 @@ private:
     }
     std::vector<FT> mx, my;
     if (closed) {
-      mx = internal::solve_cyclic_tridiagonal(a, b, c, dx);
-      my = internal::solve_cyclic_tridiagonal(a, b, c, dy);
+      mx = internal::classic::solve_cyclic_tridiagonal(a, b, c, dx);
+      my = internal::classic::solve_cyclic_tridiagonal(a, b, c, dy);
     } else {
-      mx = internal::solve_tridiagonal(a, b, c, dx);
-      my = internal::solve_tridiagonal(a, b, c, dy);
+      mx = internal::classic::solve_tridiagonal(a, b, c, dx);
+      my = internal::classic::solve_tridiagonal(a, b, c, dy);
     }
     derivatives_.clear();
     derivatives_.reserve(n);
     for (std::size_t i = 0; i < n; ++i) derivatives_.push_back(Vector_2(mx[i], my[i]));
-    pieces_ = internal::classic_hermite_pieces<K>(p, derivatives_, h, method);
+    pieces_ = internal::classic::classic_hermite_pieces<K>(p, derivatives_, h, method);
   }
 
   std::vector<Point_2> points_;

@@ -29,9 +29,9 @@
 
 #include <fair/Bezier_2.h>
 #include <fair/Errors.h>
-#include <fair/internal/classic_bspline.h>
-#include <fair/internal/classic_common.h>
-#include <fair/internal/input_checks.h>
+#include <fair/internal/classic/bspline.h>
+#include <fair/internal/classic/common.h>
+#include <fair/internal/common/input_checks.h>
 
 #include <cstddef>
 #include <utility>
@@ -52,17 +52,17 @@ public:
   /// coincident consecutive points.
   explicit Cubic_quasi_interpolant_2(std::vector<Point_2> points, bool closed = false)
     : points_(std::move(points)), closed_(closed) {
-    internal::check_interpolation_input(points_, closed ? 3 : 4, closed, "Cubic_quasi_interpolant_2");
+    internal::common::check_interpolation_input(points_, closed ? 3 : 4, closed, "Cubic_quasi_interpolant_2");
     const std::size_t n = points_.size();
     std::vector<Point_2> data;  // the data the (-1,8,-1)/6 rule is applied to
     if (closed) {
       data = points_;
     } else {
-      const Point_2 a1 = internal::classic_cubic_extrapolation<K>(points_[0], points_[1], points_[2], points_[3]);
-      const Point_2 a2 = internal::classic_cubic_extrapolation<K>(a1, points_[0], points_[1], points_[2]);
-      const Point_2 b1 = internal::classic_cubic_extrapolation<K>(points_[n - 1], points_[n - 2], points_[n - 3],
+      const Point_2 a1 = internal::classic::classic_cubic_extrapolation<K>(points_[0], points_[1], points_[2], points_[3]);
+      const Point_2 a2 = internal::classic::classic_cubic_extrapolation<K>(a1, points_[0], points_[1], points_[2]);
+      const Point_2 b1 = internal::classic::classic_cubic_extrapolation<K>(points_[n - 1], points_[n - 2], points_[n - 3],
                                                                   points_[n - 4]);
-      const Point_2 b2 = internal::classic_cubic_extrapolation<K>(b1, points_[n - 1], points_[n - 2], points_[n - 3]);
+      const Point_2 b2 = internal::classic::classic_cubic_extrapolation<K>(b1, points_[n - 1], points_[n - 2], points_[n - 3]);
       data.reserve(n + 4);
       data.push_back(a2);
       data.push_back(a1);
@@ -75,15 +75,15 @@ public:
     if (closed) {
       control_.reserve(m);
       for (std::size_t i = 0; i < m; ++i)
-        control_.push_back(internal::classic_combine<K>(w, data[(i + m - 1) % m], c, data[i], w, data[(i + 1) % m],
+        control_.push_back(internal::classic::classic_combine<K>(w, data[(i + m - 1) % m], c, data[i], w, data[(i + 1) % m],
                                                         zero, data[i]));
     } else {
       control_.reserve(m - 2);
       for (std::size_t i = 1; i + 1 < m; ++i)
-        control_.push_back(internal::classic_combine<K>(w, data[i - 1], c, data[i], w, data[i + 1], zero, data[i]));
+        control_.push_back(internal::classic::classic_combine<K>(w, data[i - 1], c, data[i], w, data[i + 1], zero, data[i]));
     }
-    pieces_ = internal::classic_uniform_bspline_pieces<K>(control_, closed);
-    internal::classic_check_finite_pieces(pieces_, "Cubic_quasi_interpolant_2");
+    pieces_ = internal::classic::classic_uniform_bspline_pieces<K>(control_, closed);
+    internal::classic::classic_check_finite_pieces(pieces_, "Cubic_quasi_interpolant_2");
   }
 
   /// The cubic Bezier pieces; piece i spans the knot interval [i, i+1], from near p_i to near

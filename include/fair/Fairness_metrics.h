@@ -8,7 +8,7 @@
 //  - curvature_profile: curvature against arc length samples;
 //  - arc_length, bending_energy (int kappa^2 ds), curvature_variation_energy (int (dkappa/ds)^2 ds,
 //    or int (dkappa/dt)^2 dt per piece): adaptive Gauss-Kronrod quadrature in double with an
-//    error estimate (internal/metrics_quadrature.h), capped (Non_convergence_error);
+//    error estimate (internal/metrics/quadrature.h), capped (Non_convergence_error);
 //  - inflections and curvature_extrema: CERTIFIED for Bernstein-form pieces. The piece's
 //    homogeneous form (X, Y, W) is converted exactly to rationals and
 //        D = det(P, P', P'')                    (P = (X, Y, W); D = x'y'' - y'x'' when W = 1),
@@ -30,8 +30,8 @@
 #include <fair/Bernstein_polynomial.h>
 #include <fair/Bernstein_root_isolation.h>
 #include <fair/Errors.h>
-#include <fair/internal/metrics_pieces.h>
-#include <fair/internal/metrics_quadrature.h>
+#include <fair/internal/metrics/pieces.h>
+#include <fair/internal/metrics/quadrature.h>
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/number_utils.h>
@@ -100,8 +100,8 @@ Quadrature_estimate integrate_over_curve(const std::vector<Piece>& curve, F f, c
   metrics_check_curve(curve, what);
   Quadrature_estimate total;
   for (const Piece& piece : curve) {
-    Piece_jet<Piece> jet(piece);
-    total += adaptive_integral([&](double t) { return f(jet(t)); }, 0.0, 1.0, o, what);
+    metrics::Piece_jet<Piece> jet(piece);
+    total += metrics::adaptive_integral([&](double t) { return f(jet(t)); }, 0.0, 1.0, o, what);
   }
   return total;
 }
@@ -158,7 +158,7 @@ inline Bernstein_polynomial<CGAL::Gmpq> dot2(const Bernstein_polynomial<CGAL::Gm
 
 /// D = det(P, P', P'') of the homogeneous form (sign of the curvature).
 template <class ET>
-Bernstein_polynomial<ET> curvature_sign_polynomial(const Homogeneous_form<ET>& h) {
+Bernstein_polynomial<ET> curvature_sign_polynomial(const metrics::Homogeneous_form<ET>& h) {
   const Bernstein_polynomial<ET> X1 = h.X.derivative(), Y1 = h.Y.derivative(), W1 = h.W.derivative();
   const Bernstein_polynomial<ET> X2 = X1.derivative(), Y2 = Y1.derivative(), W2 = W1.derivative();
   return h.X * (Y1 * W2 - W1 * Y2) - h.Y * (X1 * W2 - W1 * X2) + h.W * (X1 * Y2 - Y1 * X2);
@@ -166,7 +166,7 @@ Bernstein_polynomial<ET> curvature_sign_polynomial(const Homogeneous_form<ET>& h
 
 /// N, with sign(N) = sign(d kappa / dt) on regular points (see the file comment).
 template <class ET>
-Bernstein_polynomial<ET> curvature_derivative_sign_polynomial(const Homogeneous_form<ET>& h) {
+Bernstein_polynomial<ET> curvature_derivative_sign_polynomial(const metrics::Homogeneous_form<ET>& h) {
   const Bernstein_polynomial<ET> D = curvature_sign_polynomial(h);
   const Bernstein_polynomial<ET> X1 = h.X.derivative(), Y1 = h.Y.derivative(), W1 = h.W.derivative();
   const Bernstein_polynomial<ET> Ax = X1 * h.W - h.X * W1, Ay = Y1 * h.W - h.Y * W1;
@@ -187,8 +187,8 @@ Curve_feature make_feature(const Piece& piece, std::size_t index, double t, cons
   f.piece = index;
   f.t = t;
   f.interval = I;
-  Piece_jet<Piece> jet(piece);
-  const Jet j = jet(t);
+  metrics::Piece_jet<Piece> jet(piece);
+  const metrics::Jet j = jet(t);
   f.x = j.x;
   f.y = j.y;
   const double s2 = j.x1 * j.x1 + j.y1 * j.y1;
@@ -202,16 +202,16 @@ template <class Piece>
 Feature_report certified_features(const std::vector<Piece>& curve, int which, const char* what) {
   metrics_check_curve(curve, what);
   Feature_report report;
-  if constexpr (Piece_kind<Piece>::value == 0) {
+  if constexpr (metrics::Piece_kind<Piece>::value == 0) {
     // Generic pieces: sign changes of kappa (or dkappa/dt) on 512 samples per piece.
     report.certified = false;
     int last = 0;
     for (std::size_t i = 0; i < curve.size(); ++i) {
-      Piece_jet<Piece> jet(curve[i]);
+      metrics::Piece_jet<Piece> jet(curve[i]);
       const int m = 512;
       for (int k = 0; k <= m; ++k) {
         const double t = double(k) / m;
-        const Jet j = jet(t);
+        const metrics::Jet j = jet(t);
         const double v = which == 0 ? (j.x1 * j.y2 - j.y1 * j.x2) : j.curvature_derivative();
         const int s = (v > 0) - (v < 0);
         if (s != 0 && last != 0 && s != last) {
@@ -228,7 +228,7 @@ Feature_report certified_features(const std::vector<Piece>& curve, int which, co
     int last = 0;          // last nonzero gap sign along the curve
     int first = 0;         // first nonzero gap sign along the curve
     for (std::size_t i = 0; i < curve.size(); ++i) {
-      const Homogeneous_form<CGAL::Gmpq> h = homogeneous_exact(curve[i]);
+      const metrics::Homogeneous_form<CGAL::Gmpq> h = metrics::homogeneous_exact(curve[i]);
       report.certified = report.certified && h.exact;
       const Bernstein_polynomial<CGAL::Gmpq> p =
           which == 0 ? curvature_sign_polynomial(h) : curvature_derivative_sign_polynomial(h);
@@ -240,7 +240,7 @@ Feature_report certified_features(const std::vector<Piece>& curve, int which, co
       // A piece that certifies its own curvature extrema provides the interior ones; the signs
       // computed here still decide the changes at the joins.
       bool own = false;
-      if constexpr (Has_own_curvature_extrema<Piece>::value) own = (which == 1);
+      if constexpr (metrics::Has_own_curvature_extrema<Piece>::value) own = (which == 1);
       for (std::size_t g = 0; g < s.gaps.size(); ++g) {
         const int sign = s.gaps[g];
         if (sign == 0) continue;
@@ -259,7 +259,7 @@ Feature_report certified_features(const std::vector<Piece>& curve, int which, co
         }
         last = sign;
       }
-      if constexpr (Has_own_curvature_extrema<Piece>::value) {
+      if constexpr (metrics::Has_own_curvature_extrema<Piece>::value) {
         if (own) {
           for (const auto& x : curve[i].curvature_extrema()) {
             if (x.multiplicity % 2 == 0) continue; // no sign change of kappa': not an extremum
@@ -284,10 +284,10 @@ Feature_report certified_features(const std::vector<Piece>& curve, int which, co
 
 // Sampling of a piece into a polyline with chord <= h (recursive bisection, depth-capped).
 template <class Piece>
-void sample_piece(const Piece_jet<Piece>& jet, double t0, double t1, double x0, double y0, double x1, double y1,
+void sample_piece(const metrics::Piece_jet<Piece>& jet, double t0, double t1, double x0, double y0, double x1, double y1,
                   double h, int depth, std::vector<std::pair<double, double>>& out) {
   const double tm = 0.5 * (t0 + t1);
-  const Jet m = jet(tm);
+  const metrics::Jet m = jet(tm);
   const double chord = std::hypot(x1 - x0, y1 - y0);
   const double sag = std::hypot(m.x - 0.5 * (x0 + x1), m.y - 0.5 * (y0 + y1));
   if (depth >= 40 || (chord <= h && sag <= 0.25 * h)) {
@@ -302,15 +302,15 @@ template <class Piece>
 std::vector<std::pair<double, double>> sample_curve(const std::vector<Piece>& curve, double h) {
   std::vector<std::pair<double, double>> out;
   for (std::size_t i = 0; i < curve.size(); ++i) {
-    Piece_jet<Piece> jet(curve[i]);
-    const Jet a = jet(0.0), b = jet(1.0);
+    metrics::Piece_jet<Piece> jet(curve[i]);
+    const metrics::Jet a = jet(0.0), b = jet(1.0);
     if (i == 0) out.emplace_back(a.x, a.y);
     else if (out.back().first != a.x || out.back().second != a.y) out.emplace_back(a.x, a.y);
     // Split each piece in 4 first so that a closed loop piece is not mistaken for a short chord.
     double tx = 0, px = a.x, py = a.y;
     for (int q = 1; q <= 4; ++q) {
       const double tq = q / 4.0;
-      const Jet e = q == 4 ? b : jet(tq);
+      const metrics::Jet e = q == 4 ? b : jet(tq);
       sample_piece(jet, tx, tq, px, py, e.x, e.y, h, 0, out);
       tx = tq; px = e.x; py = e.y;
     }
@@ -388,14 +388,14 @@ inline double directed_polyline_distance(const std::vector<std::pair<double, dou
 /// Arc length of the curve, int |c'(t)| dt over every piece.
 template <class Piece>
 Quadrature_estimate arc_length(const std::vector<Piece>& curve, const Quadrature_options& options = Quadrature_options()) {
-  return internal::integrate_over_curve(curve, [](const internal::Jet& j) { return j.speed(); }, options, "arc_length");
+  return internal::integrate_over_curve(curve, [](const internal::metrics::Jet& j) { return j.speed(); }, options, "arc_length");
 }
 
 /// Bending (strain) energy int kappa^2 ds = sum over pieces of int_0^1 kappa(t)^2 |c'(t)| dt.
 template <class Piece>
 Quadrature_estimate bending_energy(const std::vector<Piece>& curve, const Quadrature_options& options = Quadrature_options()) {
   return internal::integrate_over_curve(
-      curve, [](const internal::Jet& j) { const double k = j.curvature(); return k * k * j.speed(); }, options,
+      curve, [](const internal::metrics::Jet& j) { const double k = j.curvature(); return k * k * j.speed(); }, options,
       "bending_energy");
 }
 
@@ -408,10 +408,10 @@ Quadrature_estimate curvature_variation_energy(const std::vector<Piece>& curve,
                                                const Quadrature_options& options = Quadrature_options()) {
   if (measure == Energy_measure::arc_length)
     return internal::integrate_over_curve(
-        curve, [](const internal::Jet& j) { const double k = j.curvature_derivative(); return k * k / j.speed(); },
+        curve, [](const internal::metrics::Jet& j) { const double k = j.curvature_derivative(); return k * k / j.speed(); },
         options, "curvature_variation_energy");
   return internal::integrate_over_curve(
-      curve, [](const internal::Jet& j) { const double k = j.curvature_derivative(); return k * k; }, options,
+      curve, [](const internal::metrics::Jet& j) { const double k = j.curvature_derivative(); return k * k; }, options,
       "curvature_variation_energy");
 }
 
@@ -429,13 +429,13 @@ std::vector<Curvature_sample> curvature_profile(const std::vector<Piece>& curve,
   Quadrature_options o = options;
   o.initial_subintervals = 1;
   for (std::size_t i = 0; i < curve.size(); ++i) {
-    internal::Piece_jet<Piece> jet(curve[i]);
+    internal::metrics::Piece_jet<Piece> jet(curve[i]);
     double prev = 0;
     for (std::size_t k = 0; k <= samples_per_piece; ++k) {
       const double t = double(k) / double(samples_per_piece);
       if (k > 0)
-        s += internal::adaptive_integral([&](double u) { return jet(u).speed(); }, prev, t, o, "curvature_profile").value;
-      const internal::Jet j = jet(t);
+        s += internal::metrics::adaptive_integral([&](double u) { return jet(u).speed(); }, prev, t, o, "curvature_profile").value;
+      const internal::metrics::Jet j = jet(t);
       const double s2 = j.x1 * j.x1 + j.y1 * j.y1;
       internal::require(s2 > 0, "curvature_profile: singular point (c' = 0) on piece ", i, " at t = ", t);
       out.push_back(Curvature_sample{i, t, s, j.x, j.y, j.curvature()});
@@ -481,11 +481,11 @@ Circle_deviation max_circle_deviation(const std::vector<Piece>& curve, const typ
   Circle_deviation out;
   const double cx = CGAL::to_double(center.x()), cy = CGAL::to_double(center.y());
   for (std::size_t i = 0; i < curve.size(); ++i) {
-    internal::Piece_jet<Piece> jet(curve[i]);
+    internal::metrics::Piece_jet<Piece> jet(curve[i]);
     std::vector<double> ts{0.0, 1.0};
-    if constexpr (internal::Piece_kind<Piece>::value != 0) {
-      typedef internal::Exact_rational_of<typename Piece::FT> Conv;
-      const internal::Homogeneous_form<CGAL::Gmpq> h = internal::homogeneous_exact(curve[i]);
+    if constexpr (internal::metrics::Piece_kind<Piece>::value != 0) {
+      typedef internal::metrics::Exact_rational_of<typename Piece::FT> Conv;
+      const internal::metrics::Homogeneous_form<CGAL::Gmpq> h = internal::metrics::homogeneous_exact(curve[i]);
       out.certified = out.certified && h.exact && Conv::exact;
       const CGAL::Gmpq Cx = Conv::convert(center.x()), Cy = Conv::convert(center.y());
       const Bernstein_polynomial<CGAL::Gmpq> Bx = h.X - Cx * h.W, By = h.Y - Cy * h.W;
@@ -500,7 +500,7 @@ Circle_deviation max_circle_deviation(const std::vector<Piece>& curve, const typ
       for (int k = 1; k < 4096; ++k) ts.push_back(k / 4096.0);
     }
     for (double t : ts) {
-      const internal::Jet j = jet(t);
+      const internal::metrics::Jet j = jet(t);
       const double d = std::fabs(std::hypot(j.x - cx, j.y - cy) - radius);
       if (d > out.max_deviation || (i == 0 && t == 0.0)) {
         out.max_deviation = d;

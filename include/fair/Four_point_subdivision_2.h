@@ -44,8 +44,8 @@
 #define FAIR_FOUR_POINT_SUBDIVISION_2_H
 
 #include <fair/Errors.h>
-#include <fair/internal/classic_common.h>
-#include <fair/internal/input_checks.h>
+#include <fair/internal/classic/common.h>
+#include <fair/internal/common/input_checks.h>
 
 #include <CGAL/number_utils.h>
 
@@ -118,7 +118,7 @@ public:
                       " points, more than ", max_points);
     std::vector<Point_2> p = points_;
     for (std::size_t r = 0; r < rounds; ++r) p = round(p);
-    internal::classic_check_finite_output(p, "Four_point_subdivision_2::refine");
+    internal::classic::classic_check_finite_output(p, "Four_point_subdivision_2::refine");
     return p;
   }
 
@@ -137,10 +137,10 @@ public:
       e.push_back(q[0]);
       e.push_back(q[1 % n]);
     } else {
-      const Point_2 a1 = internal::classic_cubic_extrapolation<K>(q[0], q[1], q[2], q[3]);
-      const Point_2 a2 = internal::classic_cubic_extrapolation<K>(a1, q[0], q[1], q[2]);
-      const Point_2 b1 = internal::classic_cubic_extrapolation<K>(q[n - 1], q[n - 2], q[n - 3], q[n - 4]);
-      const Point_2 b2 = internal::classic_cubic_extrapolation<K>(b1, q[n - 1], q[n - 2], q[n - 3]);
+      const Point_2 a1 = internal::classic::classic_cubic_extrapolation<K>(q[0], q[1], q[2], q[3]);
+      const Point_2 a2 = internal::classic::classic_cubic_extrapolation<K>(a1, q[0], q[1], q[2]);
+      const Point_2 b1 = internal::classic::classic_cubic_extrapolation<K>(q[n - 1], q[n - 2], q[n - 3], q[n - 4]);
+      const Point_2 b2 = internal::classic::classic_cubic_extrapolation<K>(b1, q[n - 1], q[n - 2], q[n - 3]);
       e.push_back(a2);
       e.push_back(a1);
       e.insert(e.end(), q.begin(), q.end());
@@ -164,7 +164,7 @@ public:
         out.push_back(q[i]);
       }
       if (i < edges)
-        out.push_back(internal::classic_combine<K>(minus_w, e[k - 1], half_w, e[k], half_w, e[k + 1], minus_w, e[k + 2]));
+        out.push_back(internal::classic::classic_combine<K>(minus_w, e[k - 1], half_w, e[k], half_w, e[k + 1], minus_w, e[k + 2]));
     }
     return out;
   }
@@ -177,7 +177,7 @@ public:
 
 private:
   void check() const {
-    internal::check_interpolation_input(points_, closed_ ? 3 : 4, closed_, "Four_point_subdivision_2");
+    internal::common::check_interpolation_input(points_, closed_ ? 3 : 4, closed_, "Four_point_subdivision_2");
   }
 
   std::vector<Point_2> points_;

@@ -16,7 +16,7 @@
 // Open curves (Sec. 6): the first and last points are the fixed end points; the interior
 // points get one piece each. Closed curves: one piece per point, treated cyclically.
 //
-// Numerics: see include/fair/internal/kappa_solver.h. The data are translated and scaled to the
+// Numerics: see include/fair/internal/kappa/solver.h. The data are translated and scaled to the
 // box [-1,1]^2 before solving (so 1e+150 and 1e-150 coordinates behave like unit ones), the
 // initial guess is Algorithm 1 of the paper, and the square system of eqs. 7, 10, 18 (and 16)
 // is solved by Newton's method with a direct O(n) block LU (Levenberg-Marquardt as the fallback),
@@ -35,10 +35,10 @@
 
 #include <fair/Errors.h>
 #include <fair/Rational_quadratic_bezier_2.h>
-#include <fair/internal/input_checks.h>
-#include <fair/internal/kappa_certify.h>
-#include <fair/internal/kappa_solver.h>
-#include <fair/internal/rational_quadratic_exact.h>
+#include <fair/internal/common/input_checks.h>
+#include <fair/internal/kappa/certify.h>
+#include <fair/internal/kappa/solver.h>
+#include <fair/internal/common/exact_conversion.h>
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Simple_cartesian.h>
@@ -194,7 +194,7 @@ private:
 
   void validate() const {
     const char* fn = "Kappa_curve_2";
-    internal::check_interpolation_input(q_, 3, opt_.closed, fn);
+    internal::common::check_interpolation_input(q_, 3, opt_.closed, fn);
     const std::size_t m = q_.size();
     if (opt_.weights == Kappa_weights::FIXED) {
       if (opt_.fixed_weights.size() != m)
@@ -720,13 +720,13 @@ Kappa_certificate certify_curve(const Kappa_curve_2<K>& curve, Certify_mode mode
   for (std::size_t j = 0; j < n; ++j) {
     index[j] = curve.point_index(j);
     const auto& q = curve.points()[index[j]];
-    qx[j] = internal::to_gmpq(q.x());
-    qy[j] = internal::to_gmpq(q.y());
+    qx[j] = internal::common::to_gmpq(q.x());
+    qy[j] = internal::common::to_gmpq(q.y());
   }
   Q sx(0), sy(0), ex(0), ey(0);
   if (!closed) {
-    sx = internal::to_gmpq(curve.points()[0].x()); sy = internal::to_gmpq(curve.points()[0].y());
-    ex = internal::to_gmpq(curve.points()[m - 1].x()); ey = internal::to_gmpq(curve.points()[m - 1].y());
+    sx = internal::common::to_gmpq(curve.points()[0].x()); sy = internal::common::to_gmpq(curve.points()[0].y());
+    ex = internal::common::to_gmpq(curve.points()[m - 1].x()); ey = internal::common::to_gmpq(curve.points()[m - 1].y());
   }
   return certify_parameters(closed, index, qx, qy, sx, sy, ex, ey, st.lambda, st.t, st.w, mode);
 }
@@ -734,7 +734,7 @@ Kappa_certificate certify_curve(const Kappa_curve_2<K>& curve, Certify_mode mode
 } // namespace kappa
 } // namespace internal
 
-/// Certifies `curve` exactly (see internal/kappa_certify.h): the exact curve defined by the
+/// Certifies `curve` exactly (see internal/kappa/certify.h): the exact curve defined by the
 /// solver's rational lambda_i, t_i, w_i and the exact input points. Cost: O(n) products of
 /// O(n)-bit numbers per curve (the exact control points have ~150 n bits); measured 0.07 ms per
 /// piece for closed curves of 20 pieces and 0.54 ms for 100 (see doc/kappa_curves.md). The
@@ -759,7 +759,7 @@ Kappa_certificate certify_pieces(const Kappa_curve_2<K>& curve) {
   typedef Kappa_certificate::Exact_kernel EK;
   typedef EK::Point_2 EP;
   const std::size_t n = curve.number_of_pieces();
-  auto ex = [](const typename K::Point_2& p) { return EP(internal::to_gmpq(p.x()), internal::to_gmpq(p.y())); };
+  auto ex = [](const typename K::Point_2& p) { return EP(internal::common::to_gmpq(p.x()), internal::common::to_gmpq(p.y())); };
   std::vector<EP> E(n + 1), P(n), Qp(n);
   std::vector<CGAL::Gmpq> w(n);
   std::vector<double> t(n);
@@ -768,7 +768,7 @@ Kappa_certificate certify_pieces(const Kappa_curve_2<K>& curve) {
     const auto& pc = curve.piece(j);
     E[j] = ex(pc.control_point(0));
     P[j] = ex(pc.control_point(1));
-    w[j] = internal::to_gmpq(pc.weight());
+    w[j] = internal::common::to_gmpq(pc.weight());
     t[j] = curve.t(j);
     index[j] = curve.point_index(j);
     Qp[j] = ex(curve.points()[index[j]]);

@@ -31,9 +31,9 @@
 #include <fair/Conic_type.h>
 #include <fair/Errors.h>
 #include <fair/Rational_bezier_2.h>
-#include <fair/internal/rational_quadratic_exact.h>
-#include <fair/internal/rational_quadratic_interpolation.h>
-#include <fair/internal/rational_quadratic_scaled.h>
+#include <fair/internal/common/exact_conversion.h>
+#include <fair/internal/conic/interpolation.h>
+#include <fair/internal/conic/scaled.h>
 
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
@@ -117,16 +117,16 @@ void check_finite_value(const NT& x, const char* fn, const char* what) {
 /// roots that are dyadic with at most 32 significant bits after the binary point) and its kind
 /// (E from - to + is a MAXIMUM of |kappa|); -1 when the intervals cannot decide (the caller then
 /// runs the exact isolation). Accuracy: the bracket is a few ulps wide (see
-/// internal/rational_quadratic_interpolation.h); cost ~1 us when no exact evaluation is needed.
+/// internal/conic/interpolation.h); cost ~1 us when no exact evaluation is needed.
 template <class Exact_coefficients>
-int eq4_unique_extremum(const Rq_interval& x0, const Rq_interval& y0, const Rq_interval& x1, const Rq_interval& y1,
-                        const Rq_interval& x2, const Rq_interval& y2, const Rq_interval& w,
+int eq4_unique_extremum(const conic::Rq_interval& x0, const conic::Rq_interval& y0, const conic::Rq_interval& x1, const conic::Rq_interval& y1,
+                        const conic::Rq_interval& x2, const conic::Rq_interval& y2, const conic::Rq_interval& w,
                         Exact_coefficients exact, Curvature_extremum& x) {
-  Rq_interval b[5];
+  conic::Rq_interval b[5];
   int sign[5];
   {
     CGAL::Protect_FPU_rounding<true> guard;
-    const std::vector<Rq_interval> c = eq4_coefficients<Rq_interval>(x0, y0, x1, y1, x2, y2, w);
+    const std::vector<conic::Rq_interval> c = eq4_coefficients<conic::Rq_interval>(x0, y0, x1, y1, x2, y2, w);
     int last = 0, variations = 0;
     for (int i = 0; i < 5; ++i) {
       b[i] = c[static_cast<std::size_t>(i)];
@@ -150,9 +150,9 @@ int eq4_unique_extremum(const Rq_interval& x0, const Rq_interval& y0, const Rq_i
       for (std::size_t i = 0; i < 5; ++i) e[i] = flip > 0 ? CGAL::Gmpq(-v[i]) : v[i];
       have_exact = true;
     }
-    return quartic_sign_exact(e, t);
+    return conic::quartic_sign_exact(e, t);
   };
-  const Rational_quadratic_extremum_parameter r = certified_unique_root_quartic(b, exact_sign);
+  const conic::Rational_quadratic_extremum_parameter r = conic::certified_unique_root_quartic(b, exact_sign);
   x.multiplicity = 1;
   x.kind = sign[0] < 0 ? Curvature_extremum_kind::MAXIMUM : Curvature_extremum_kind::MINIMUM;
   x.t = r.t;
@@ -196,10 +196,10 @@ public:
     internal::require(std::isfinite(wd) && w > FT(0), fn, ": the weight must be finite and > 0, got w = ", wd);
     internal::require(p0 != p2, fn, ": degenerate piece, P0 == P2 = (", CGAL::to_double(p0.x()), ", ",
                       CGAL::to_double(p0.y()), ")");
-    if constexpr (internal::Is_floating_nt<FT>::value) {
+    if constexpr (internal::common::Is_floating_nt<FT>::value) {
       // Exact whatever the scale (Simple_cartesian<double>'s own predicate underflows near 1e-300
       // and overflows near 1e300): interval filter, then the exact rational determinant.
-      orientation_ = internal::exact_orientation_of_doubles(CGAL::to_double(p0.x()), CGAL::to_double(p0.y()),
+      orientation_ = internal::conic::exact_orientation_of_doubles(CGAL::to_double(p0.x()), CGAL::to_double(p0.y()),
                                                             CGAL::to_double(p1.x()), CGAL::to_double(p1.y()),
                                                             CGAL::to_double(p2.x()), CGAL::to_double(p2.y()));
     } else {
@@ -226,18 +226,18 @@ public:
       yd_[i] = CGAL::to_double(p_[i].y());
     }
     wd_ = wd;
-    edges_ = internal::Scaled_edges(xd_, yd_);
+    edges_ = internal::conic::Scaled_edges(xd_, yd_);
     // D = det(P1-P0, P2-P1) as an unscaled (mantissa, exponent) pair; from the exact inputs when
-    // the scaled double determinant cancels (see internal/rational_quadratic_scaled.h).
+    // the scaled double determinant cancels (see internal/conic/scaled.h).
     const double ds = edges_.ex[0] * edges_.ey[1] - edges_.ey[0] * edges_.ex[1];
     if (std::abs(ds) >= 0x1p-40) {
-      area_ = internal::Scaled_double::of(ds);
+      area_ = internal::conic::Scaled_double::of(ds);
       area_.e += 2L * edges_.k;
     } else {
-      using internal::to_gmpq;
+      using internal::common::to_gmpq;
       const CGAL::Gmpq x0 = to_gmpq(p0.x()), y0 = to_gmpq(p0.y()), x1 = to_gmpq(p1.x()), y1 = to_gmpq(p1.y());
       const CGAL::Gmpq x2 = to_gmpq(p2.x()), y2 = to_gmpq(p2.y());
-      area_ = internal::scaled_from_gmpq((x1 - x0) * (y2 - y1) - (y1 - y0) * (x2 - x1));
+      area_ = internal::conic::scaled_from_gmpq((x1 - x0) * (y2 - y1) - (y1 - y0) * (x2 - x1));
     }
   }
 
@@ -311,26 +311,26 @@ public:
 
   /// Signed curvature kappa(t) = 4 w D W^3 / |V|^3 in double (positive iff LEFT_TURN), relative
   /// error ~1e-15 at every scale: computed on the edge vectors scaled by an exact power of two
-  /// and rescaled exactly (internal/rational_quadratic_scaled.h), so it is scale-covariant
+  /// and rescaled exactly (internal/conic/scaled.h), so it is scale-covariant
   /// (kappa of the piece scaled by 2^j is kappa 2^-j, bit for bit).
   /// \throws Precondition_error if t is not in [0,1], or if kappa(t) is not representable in
   /// double (|kappa| > DBL_MAX or below the smallest subnormal).
   double curvature(double t) const {
     internal::require(t >= 0 && t <= 1, "Rational_quadratic_bezier_2::curvature: t = ", t, " is not in [0,1]");
     const double s = 1.0 - t, w = wd_;
-    const internal::Scaled_edges& e = edges_;
+    const internal::conic::Scaled_edges& e = edges_;
     const double Vx = 2.0 * (w * s * s * e.ex[0] + s * t * e.ex[2] + w * t * t * e.ex[1]);
     const double Vy = 2.0 * (w * s * s * e.ey[0] + s * t * e.ey[2] + w * t * t * e.ey[1]);
     const double W = s * s + 2.0 * w * s * t + t * t;
     const double n = std::hypot(Vx, Vy); // |V| 2^-k
     internal::require(n > 0 && std::isfinite(n), "Rational_quadratic_bezier_2::curvature: |c'(", t,
                       ")| W^2 is not representable in double (scaled value ", n, ")");
-    internal::Scaled_double r = internal::Scaled_double::of(W);
-    r /= internal::Scaled_double::of(n);
-    const internal::Scaled_double r1 = r;
+    internal::conic::Scaled_double r = internal::conic::Scaled_double::of(W);
+    r /= internal::conic::Scaled_double::of(n);
+    const internal::conic::Scaled_double r1 = r;
     r *= r1;
     r *= r1;
-    r *= internal::Scaled_double::of(4.0 * w);
+    r *= internal::conic::Scaled_double::of(4.0 * w);
     r *= area_;
     r.e -= 3L * e.k;
     return r.to_double("Rational_quadratic_bezier_2::curvature: the curvature");
@@ -381,7 +381,7 @@ public:
   /// interval arithmetic on enclosures of the exact inputs; when their signs are certain and
   /// show 0 variations (no root in [0,1]) or 1 variation (exactly one simple root in (0,1),
   /// Descartes' rule in the Bernstein basis), the root is bracketed by
-  /// internal::certified_unique_root_quartic (certified for the exact inputs: E(t_lower) and
+  /// internal::conic::certified_unique_root_quartic (certified for the exact inputs: E(t_lower) and
   /// E(t_upper) have opposite exact signs, bracket a few ulps wide, exact fallback inside);
   /// see internal::eq4_unique_extremum. Otherwise the exact isolation below runs.
   std::vector<Curvature_extremum> curvature_extrema() const {
@@ -389,9 +389,9 @@ public:
     {
       Curvature_extremum x;
       const int fast = internal::eq4_unique_extremum(
-        internal::to_interval_nt(p_[0].x()), internal::to_interval_nt(p_[0].y()), internal::to_interval_nt(p_[1].x()),
-        internal::to_interval_nt(p_[1].y()), internal::to_interval_nt(p_[2].x()), internal::to_interval_nt(p_[2].y()),
-        internal::to_interval_nt(w_), [this]() { return exact_eq4(); }, x);
+        internal::common::to_interval_nt(p_[0].x()), internal::common::to_interval_nt(p_[0].y()), internal::common::to_interval_nt(p_[1].x()),
+        internal::common::to_interval_nt(p_[1].y()), internal::common::to_interval_nt(p_[2].x()), internal::common::to_interval_nt(p_[2].y()),
+        internal::common::to_interval_nt(w_), [this]() { return exact_eq4(); }, x);
       if (fast == 0) return out;
       if (fast == 1) {
         out.push_back(x);
@@ -495,7 +495,7 @@ public:
     {
       // Exact: the circle test and eta = -sign(det M) (for large w the conic is nearly the line
       // pair P0P1, P1P2, det M nearly 0, and its sign in double would be rounding noise).
-      using internal::to_gmpq;
+      using internal::common::to_gmpq;
       typedef CGAL::Gmpq Q;
       Q al[3], be[3], ga[3];
       for (int i = 0; i < 3; ++i) {
@@ -545,7 +545,7 @@ public:
   /// eq. 15 in double: the weight minimising the eccentricity for these control points
   /// (scale-invariant: from the edge vectors scaled by an exact power of two).
   double minimum_eccentricity_weight() const {
-    const internal::Scaled_edges& e = edges_;
+    const internal::conic::Scaled_edges& e = edges_;
     return std::sqrt(e.squared_length(2) / (2.0 * (e.squared_length(0) + e.squared_length(1))));
   }
   /// eq. 15 exactly, w_hat = sqrt(w_hat^2) as a CGAL::Sqrt_extension (meant for exact kernels):
@@ -558,10 +558,10 @@ public:
   /// in a floating kernel computed from the edge vectors scaled by an exact power of two (no
   /// overflow or underflow at any scale, relative error ~1e-15).
   static FT minimum_eccentricity_weight_squared(const Point_2& p0, const Point_2& p1, const Point_2& p2) {
-    if constexpr (internal::Is_floating_nt<FT>::value) {
+    if constexpr (internal::common::Is_floating_nt<FT>::value) {
       const double x[3] = {CGAL::to_double(p0.x()), CGAL::to_double(p1.x()), CGAL::to_double(p2.x())};
       const double y[3] = {CGAL::to_double(p0.y()), CGAL::to_double(p1.y()), CGAL::to_double(p2.y())};
-      const internal::Scaled_edges e(x, y);
+      const internal::conic::Scaled_edges e(x, y);
       const double den = 2.0 * (e.squared_length(0) + e.squared_length(1));
       internal::require(!e.degenerate && den > 0 && std::isfinite(den),
                         "minimum_eccentricity_weight_squared (eq. 15): P0 == P1 == P2 = (", x[1], ", ", y[1], ")");
@@ -586,7 +586,7 @@ public:
                       " is not in (0,1)");
     const FT W = denominator(s), r = FT(1) - s;
     FT root(1);
-    internal::require(internal::sqrt_in(W, root), "Rational_quadratic_bezier_2::split: W(s) = ",
+    internal::require(internal::common::sqrt_in(W, root), "Rational_quadratic_bezier_2::split: W(s) = ",
                       CGAL::to_double(W), " at s = ", CGAL::to_double(s),
                       " is not the square of a rational, so the standard-form weights are irrational; "
                       "use split_homogeneous() for an exact split");
@@ -614,7 +614,7 @@ public:
 
 private:
   std::vector<CGAL::Gmpq> exact_eq4() const {
-    using internal::to_gmpq;
+    using internal::common::to_gmpq;
     return internal::eq4_coefficients<CGAL::Gmpq>(to_gmpq(p_[0].x()), to_gmpq(p_[0].y()), to_gmpq(p_[1].x()),
                                                    to_gmpq(p_[1].y()), to_gmpq(p_[2].x()), to_gmpq(p_[2].y()),
                                                    to_gmpq(w_));
@@ -641,7 +641,7 @@ private:
   // eq. 5 on the scaled edge i (0: P1-P0, 1: P2-P1): D / (2 w^2 |e_i|^3), rescaled exactly.
   double end_curvature(int i) const {
     const double l = std::hypot(edges_.ex[i], edges_.ey[i]); // in [1, 2 sqrt 2) or exactly scaled
-    internal::Scaled_double r = area_, wq = internal::Scaled_double::of(wd_), lq = internal::Scaled_double::of(l);
+    internal::conic::Scaled_double r = area_, wq = internal::conic::Scaled_double::of(wd_), lq = internal::conic::Scaled_double::of(l);
     r /= wq;
     r /= wq;
     r /= lq;
@@ -656,8 +656,8 @@ private:
   FT w_;
   CGAL::Orientation orientation_;
   double xd_[3], yd_[3], wd_;
-  internal::Scaled_edges edges_;  // P1-P0, P2-P1, P2-P0 times 2^-k (exact power of two)
-  internal::Scaled_double area_;  // D = det(P1-P0, P2-P1), unscaled
+  internal::conic::Scaled_edges edges_;  // P1-P0, P2-P1, P2-P0 times 2^-k (exact power of two)
+  internal::conic::Scaled_double area_;  // D = det(P1-P0, P2-P1), unscaled
 };
 
 // ---------------------------------------------------------------- interpolation (eq. 6, eq. 7)
@@ -682,7 +682,7 @@ struct Curvature_extremum_parameter {
 /// points P0, P2, weight w, passing through Q at t (eq. 6), has a critical point of curvature
 /// at Q. Verifies EXACTLY (Appendix A) that the eq.-A.1 coefficients have exactly one sign
 /// variation, so the root is unique and simple, then refines it with a certified bracket (see
-/// internal/rational_quadratic_interpolation.h for the method and accuracy).
+/// internal/conic/interpolation.h for the method and accuracy).
 /// For a floating kernel the double fast path (interval filter, exact fallback) is used; for an
 /// exact kernel the coefficients and their signs are exact and the bracket is certified by
 /// interval evaluation of enclosures of the exact coefficients, exact evaluation if needed.
@@ -700,8 +700,8 @@ Curvature_extremum_parameter<K> curvature_extremum_parameter(const typename K::P
   const FT A = v0x * v0x + v0y * v0y, C = v2x * v2x + v2y * v2y;
   const FT AB = v0x * sx + v0y * sy, BC = v2x * sx + v2y * sy;
   const FT quarter = FT(1) / FT(4);
-  if constexpr (internal::Is_floating_nt<FT>::value) {
-    const internal::Rational_quadratic_extremum_parameter r = internal::rational_quadratic_extremum_parameter(
+  if constexpr (internal::common::Is_floating_nt<FT>::value) {
+    const internal::conic::Rational_quadratic_extremum_parameter r = internal::conic::rational_quadratic_extremum_parameter(
       CGAL::to_double(p0.x()), CGAL::to_double(p0.y()), CGAL::to_double(q.x()), CGAL::to_double(q.y()),
       CGAL::to_double(p2.x()), CGAL::to_double(p2.y()), CGAL::to_double(w));
     out.polynomial = Bernstein_polynomial<FT>(std::vector<FT>{-(w * A), -(AB * quarter), FT(0), BC * quarter, w * C});
@@ -726,21 +726,21 @@ Curvature_extremum_parameter<K> curvature_extremum_parameter(const typename K::P
     out.polynomial = Bernstein_polynomial<FT>(b);
     // Appendix A, exactly: the signs of A, A+B, B+C, C (w > 0 checked above).
     const int sA = CGAL::sign(A), sAB = CGAL::sign(AB), sBC = CGAL::sign(BC), sC = CGAL::sign(C);
-    const int variations = internal::eq7_sign_variations(sA, sAB, sBC, sC, 1);
+    const int variations = internal::conic::eq7_sign_variations(sA, sAB, sBC, sC, 1);
     internal::require(variations == 1 && sA > 0 && sC > 0 && sign_variations(out.polynomial) == 1, fn,
                       ": internal error: eq. A.1 has ", variations, " sign variations");
     out.sign_variations = variations;
-    internal::Rq_interval bi[5];
-    for (int i = 0; i < 5; ++i) bi[i] = internal::to_interval_nt(b[i]);
+    internal::conic::Rq_interval bi[5];
+    for (int i = 0; i < 5; ++i) bi[i] = internal::common::to_interval_nt(b[i]);
     bool have_exact = false;
     std::array<CGAL::Gmpq, 5> exact;
-    const internal::Rational_quadratic_extremum_parameter r =
-      internal::certified_unique_root_quartic(bi, [&](double t) {
+    const internal::conic::Rational_quadratic_extremum_parameter r =
+      internal::conic::certified_unique_root_quartic(bi, [&](double t) {
         if (!have_exact) {
-          for (int i = 0; i < 5; ++i) exact[static_cast<std::size_t>(i)] = internal::to_gmpq(b[i]);
+          for (int i = 0; i < 5; ++i) exact[static_cast<std::size_t>(i)] = internal::common::to_gmpq(b[i]);
           have_exact = true;
         }
-        return internal::quartic_sign_exact(exact, t);
+        return internal::conic::quartic_sign_exact(exact, t);
       });
     out.t = r.t;
     out.t_lower = CGAL::Gmpq(r.t_lower);

@@ -10,7 +10,7 @@
 #define FAIR_IO_READ_POINTS_H
 
 #include <fair/Errors.h>
-#include <fair/internal/input_checks.h>
+#include <fair/internal/common/input_checks.h>
 #include <fair/io/internal/json_lines.h>
 #include <fair/io/internal/number_parsing.h>
 
@@ -282,7 +282,7 @@ void check_point_file(const Point_file<Kernel>& data, std::size_t minimum, bool 
     }
   }
   // The shared checks (also finiteness, which the parser already guarantees).
-  fair::internal::check_interpolation_input(data.points, minimum, closed, method);
+  fair::internal::common::check_interpolation_input(data.points, minimum, closed, method);
 }
 
 } // namespace io

@@ -26,6 +26,7 @@
 
 namespace fair {
 namespace internal {
+namespace cardinal {
 
 /// The number type the sums of eq. 10 are accumulated in. For EPECK's lazy numbers the sums are
 /// accumulated directly in the exact type: a lazy sum of n terms would build a DAG of depth n
@@ -168,6 +169,7 @@ Cardinal_sums<FT> cardinal_interior_sums(const std::vector<Point_2>& p, bool clo
   return s;
 }
 
+} // namespace cardinal
 } // namespace internal
 } // namespace fair
 

@@ -39,6 +39,7 @@ struct Sign_variation_count {
 };
 
 namespace internal {
+namespace bernstein {
 
 /// Rows 0..n of Pascal's triangle in NT, built by additions only (exact for exact NT, and for
 /// double as long as the entries stay below 2^53, i.e. n <= 55).
@@ -96,6 +97,7 @@ Sign_variation_count sign_variation_bounds(Iterator first, Iterator last) {
   return out;
 }
 
+} // namespace bernstein
 } // namespace internal
 } // namespace fair
 

@@ -7,13 +7,14 @@
 #define FAIR_INTERNAL_CLASSIC_BSPLINE_H
 
 #include <fair/Bezier_2.h>
-#include <fair/internal/classic_common.h>
+#include <fair/internal/classic/common.h>
 
 #include <cstddef>
 #include <vector>
 
 namespace fair {
 namespace internal {
+namespace classic {
 
 /// The Bezier pieces of the uniform cubic B-spline with control points d_0..d_{m-1}.
 /// Open: m - 3 pieces, piece j uses d_j..d_{j+3} (needs m >= 4). Closed: m pieces, piece j uses
@@ -36,6 +37,7 @@ std::vector<Bezier_2<K>> classic_uniform_bspline_pieces(const std::vector<typena
   return pieces;
 }
 
+} // namespace classic
 } // namespace internal
 } // namespace fair
 

@@ -19,8 +19,8 @@
 // nonzero is exact (the piece's orientation is decided exactly), and this keeps its relative
 // accuracy near 1e-16 even for nearly collinear control points.
 
-#ifndef FAIR_INTERNAL_RATIONAL_QUADRATIC_SCALED_H
-#define FAIR_INTERNAL_RATIONAL_QUADRATIC_SCALED_H
+#ifndef FAIR_INTERNAL_CONIC_SCALED_H
+#define FAIR_INTERNAL_CONIC_SCALED_H
 
 #include <fair/Errors.h>
 
@@ -36,6 +36,7 @@
 
 namespace fair {
 namespace internal {
+namespace conic {
 
 /// A double value m 2^e with m = 0 or 0.5 <= |m| < 1 (never overflows or underflows).
 struct Scaled_double {
@@ -136,7 +137,8 @@ struct Scaled_edges {
   double squared_length(int i) const { return ex[i] * ex[i] + ey[i] * ey[i]; }
 };
 
+} // namespace conic
 } // namespace internal
 } // namespace fair
 
-#endif // FAIR_INTERNAL_RATIONAL_QUADRATIC_SCALED_H
+#endif // FAIR_INTERNAL_CONIC_SCALED_H

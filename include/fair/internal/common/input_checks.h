@@ -4,8 +4,8 @@
 // fair::Invalid_input_error with a message that names the method, the offending index
 // and the offending values.
 
-#ifndef FAIR_INTERNAL_INPUT_CHECKS_H
-#define FAIR_INTERNAL_INPUT_CHECKS_H
+#ifndef FAIR_INTERNAL_COMMON_INPUT_CHECKS_H
+#define FAIR_INTERNAL_COMMON_INPUT_CHECKS_H
 
 #include <fair/Errors.h>
 
@@ -17,6 +17,7 @@
 
 namespace fair {
 namespace internal {
+namespace common {
 
 /// Throws unless every coordinate converts to a finite double.
 template <class Point_2>
@@ -60,7 +61,8 @@ void check_interpolation_input(const std::vector<Point_2>& points, std::size_t m
   check_distinct_consecutive(points, closed, method);
 }
 
+} // namespace common
 } // namespace internal
 } // namespace fair
 
-#endif // FAIR_INTERNAL_INPUT_CHECKS_H
+#endif // FAIR_INTERNAL_COMMON_INPUT_CHECKS_H

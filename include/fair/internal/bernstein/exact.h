@@ -28,6 +28,7 @@
 
 namespace fair {
 namespace internal {
+namespace bernstein {
 
 // ------------------------------------------------------------------ exact conversion to Q
 // A double, a Gmpfr and a point interval are dyadic rationals: their conversion is exact.
@@ -157,6 +158,7 @@ inline std::vector<Q_polynomial> q_square_free_factorization(Q_polynomial f) {
   return factors;
 }
 
+} // namespace bernstein
 } // namespace internal
 } // namespace fair
 

@@ -10,7 +10,7 @@
 
 #include <fair/Bezier_2.h>
 #include <fair/Errors.h>
-#include <fair/internal/input_checks.h>
+#include <fair/internal/common/input_checks.h>
 
 #include <CGAL/number_utils.h>
 
@@ -41,6 +41,7 @@ inline const char* to_string(Knot_spacing s) {
 }
 
 namespace internal {
+namespace classic {
 
 /// The knot intervals h_i between consecutive points (n - 1 of them, or n for a closed curve
 /// where h_{n-1} runs from p_{n-1} back to p_0). Throws Invalid_input_error when a non-uniform
@@ -177,6 +178,7 @@ std::vector<Bezier_2<K>> classic_hermite_pieces(const std::vector<typename K::Po
   return pieces;
 }
 
+} // namespace classic
 } // namespace internal
 } // namespace fair
 

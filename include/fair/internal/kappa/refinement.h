@@ -14,8 +14,8 @@
 #ifndef FAIR_INTERNAL_KAPPA_REFINEMENT_H
 #define FAIR_INTERNAL_KAPPA_REFINEMENT_H
 
-#include <fair/internal/kappa_banded.h>
-#include <fair/internal/kappa_system.h>
+#include <fair/internal/kappa/banded.h>
+#include <fair/internal/kappa/system.h>
 
 #include <algorithm>
 #include <cmath>

@@ -32,7 +32,7 @@ struct Quadrature_options {
   std::size_t initial_subintervals = 4;
 };
 
-/// A quadrature result: the value, an error estimate (see internal/metrics_quadrature.h) and cost.
+/// A quadrature result: the value, an error estimate (see internal/metrics/quadrature.h) and cost.
 struct Quadrature_estimate {
   double value = 0;
   double error_bound = 0;
@@ -49,6 +49,7 @@ struct Quadrature_estimate {
 };
 
 namespace internal {
+namespace metrics {
 
 struct Gk_interval {
   double a, b, kronrod, error;
@@ -142,6 +143,7 @@ Quadrature_estimate adaptive_integral(F f, double a, double b, const Quadrature_
   return out;
 }
 
+} // namespace metrics
 } // namespace internal
 } // namespace fair
 

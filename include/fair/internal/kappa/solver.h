@@ -31,12 +31,12 @@
 #ifndef FAIR_INTERNAL_KAPPA_SOLVER_H
 #define FAIR_INTERNAL_KAPPA_SOLVER_H
 
-#include <fair/internal/kappa_banded.h>
-#include <fair/internal/kappa_block_lu.h>
-#include <fair/internal/kappa_dual.h>
-#include <fair/internal/kappa_jacobian.h>
-#include <fair/internal/kappa_refinement.h>
-#include <fair/internal/kappa_system.h>
+#include <fair/internal/kappa/banded.h>
+#include <fair/internal/kappa/block_lu.h>
+#include <fair/internal/kappa/dual.h>
+#include <fair/internal/kappa/jacobian.h>
+#include <fair/internal/kappa/refinement.h>
+#include <fair/internal/kappa/system.h>
 
 #include <algorithm>
 #include <cmath>

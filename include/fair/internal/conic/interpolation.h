@@ -23,7 +23,7 @@
 // exactly with CGAL::Gmpq when the intervals cannot decide) and counts the variations.
 //
 // Root refinement: the shared certified-bracket mechanism of the Bernstein internals,
-// fair::internal::tighten_double_bracket (internal/bernstein_unique_root.h), fed with interval
+// fair::internal::bernstein::tighten_double_bracket (internal/bernstein/unique_root.h), fed with interval
 // ENCLOSURES of the exact coefficients (CGAL::Interval_nt, outward rounding) and an exact
 // fallback that evaluates f exactly (CGAL::Gmpq) at double points: safeguarded Newton in double,
 // a bracket grown by certified interval signs, then shrunk to <= 32 ulps by bisection with the
@@ -38,12 +38,12 @@
 // Unlike fair::certified_unique_root (Bernstein_root_isolation.h), which certifies the root of
 // the quartic with ROUNDED double coefficients, this certifies the root for the exact inputs.
 
-#ifndef FAIR_INTERNAL_RATIONAL_QUADRATIC_INTERPOLATION_H
-#define FAIR_INTERNAL_RATIONAL_QUADRATIC_INTERPOLATION_H
+#ifndef FAIR_INTERNAL_CONIC_INTERPOLATION_H
+#define FAIR_INTERNAL_CONIC_INTERPOLATION_H
 
 #include <fair/Errors.h>
-#include <fair/internal/bernstein_unique_root.h>
-#include <fair/internal/rational_quadratic_exact.h>
+#include <fair/internal/bernstein/unique_root.h>
+#include <fair/internal/common/exact_conversion.h>
 
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
@@ -58,6 +58,7 @@
 
 namespace fair {
 namespace internal {
+namespace conic {
 
 typedef CGAL::Interval_nt<false> Rq_interval;
 
@@ -108,7 +109,7 @@ inline CGAL::Sign quartic_sign_exact(const std::array<CGAL::Gmpq, 5>& b, double 
 /// Certified root of a quartic in Bernstein form on [0,1] that is known to have a unique simple
 /// root in (0,1) with f(0) < 0 < f(1). `b` encloses the exact coefficients (intervals);
 /// `exact_sign(t)` returns the exact sign of f at a double t. A thin adapter over the one shared
-/// mechanism, fair::internal::tighten_double_bracket (internal/bernstein_unique_root.h):
+/// mechanism, fair::internal::bernstein::tighten_double_bracket (internal/bernstein/unique_root.h):
 /// safeguarded Newton on the midpoints of the enclosures, started at the chord crossing, then a
 /// bracket grown by interval signs and shrunk to <= 32 ulps with the exact fallback. Since `b`
 /// encloses the EXACT coefficients, the bracket is certified for the exact inputs.
@@ -130,7 +131,7 @@ Rational_quadratic_extremum_parameter certified_unique_root_quartic(const Rq_int
   // max_ulps = 32: the interval-certified bracket grown around Newton's iterate is usually that
   // narrow already, so the exact fallback (Gmpq, ~1 us) is rarely needed; 8 would trigger it on
   // most inputs, whose enclosures are wider than point intervals.
-  const Double_bracket r = tighten_double_bracket(b, c, 5, 0.0, 1.0, -1, start, counted, 32.0);
+  const bernstein::Double_bracket r = bernstein::tighten_double_bracket(b, c, 5, 0.0, 1.0, -1, start, counted, 32.0);
   out.t = r.root;
   out.t_lower = r.lower;
   out.t_upper = r.upper;
@@ -222,7 +223,8 @@ inline void rational_quadratic_middle_control_point(double p0x, double p0y, doub
   p1y = qy - (s * s * (p0y - qy) + t * t * (p2y - qy)) / d;
 }
 
+} // namespace conic
 } // namespace internal
 } // namespace fair
 
-#endif // FAIR_INTERNAL_RATIONAL_QUADRATIC_INTERPOLATION_H
+#endif // FAIR_INTERNAL_CONIC_INTERPOLATION_H

@@ -33,7 +33,7 @@
 #ifndef FAIR_INTERNAL_KAPPA_BLOCK_LU_H
 #define FAIR_INTERNAL_KAPPA_BLOCK_LU_H
 
-#include <fair/internal/kappa_banded.h>
+#include <fair/internal/kappa/banded.h>
 
 #include <algorithm>
 #include <array>

@@ -14,8 +14,8 @@
 #ifndef FAIR_INTERNAL_KAPPA_JACOBIAN_H
 #define FAIR_INTERNAL_KAPPA_JACOBIAN_H
 
-#include <fair/internal/kappa_dual.h>
-#include <fair/internal/kappa_system.h>
+#include <fair/internal/kappa/dual.h>
+#include <fair/internal/kappa/system.h>
 
 #include <cmath>
 #include <cstddef>

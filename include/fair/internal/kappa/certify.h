@@ -33,7 +33,7 @@
 #define FAIR_INTERNAL_KAPPA_CERTIFY_H
 
 #include <fair/Errors.h>
-#include <fair/internal/rational_quadratic_exact.h>
+#include <fair/internal/common/exact_conversion.h>
 #include <fair/Rational_quadratic_bezier_2.h>
 
 #include <CGAL/FPU.h>

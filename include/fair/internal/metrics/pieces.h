@@ -14,7 +14,7 @@
 #include <fair/Bernstein_polynomial.h>
 #include <fair/Bezier_2.h>
 #include <fair/Errors.h>
-#include <fair/internal/bernstein_exact.h>
+#include <fair/internal/bernstein/exact.h>
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Lazy_exact_nt.h>
@@ -28,6 +28,7 @@
 
 namespace fair {
 namespace internal {
+namespace metrics {
 
 // ---------------------------------------------------------------- exact rational conversion
 /// The exact rational type used to certify features of pieces with number type FT, and whether
@@ -54,7 +55,7 @@ template <class ET>
 struct Exact_rational_of<CGAL::Lazy_exact_nt<ET>> {
   typedef CGAL::Gmpq Type;
   static const bool exact = true;
-  static Type convert(const CGAL::Lazy_exact_nt<ET>& x) { return exact_value_to_gmpq(CGAL::exact(x)); }
+  static Type convert(const CGAL::Lazy_exact_nt<ET>& x) { return bernstein::exact_value_to_gmpq(CGAL::exact(x)); }
 };
 
 // ---------------------------------------------------------------- classification
@@ -268,6 +269,7 @@ Homogeneous_form<typename Exact_rational_of<typename P::FT>::Type> homogeneous_e
   return h;
 }
 
+} // namespace metrics
 } // namespace internal
 } // namespace fair
 

@@ -6,8 +6,8 @@
 // Rational_quadratic_bezier_2 always runs on the exact rational values of the inputs, whatever
 // the kernel: a double coordinate is the dyadic rational it stores.
 
-#ifndef FAIR_INTERNAL_RATIONAL_QUADRATIC_EXACT_H
-#define FAIR_INTERNAL_RATIONAL_QUADRATIC_EXACT_H
+#ifndef FAIR_INTERNAL_COMMON_EXACT_CONVERSION_H
+#define FAIR_INTERNAL_COMMON_EXACT_CONVERSION_H
 
 #include <fair/Errors.h>
 
@@ -26,6 +26,7 @@
 
 namespace fair {
 namespace internal {
+namespace common {
 
 /// The exact rational value of x. \throws Precondition_error for a non-finite double.
 inline CGAL::Gmpq to_gmpq(double x) {
@@ -110,7 +111,8 @@ CGAL::Interval_nt<false> to_interval_nt(const NT& x) {
   return CGAL::Interval_nt<false>(CGAL::to_interval(x));
 }
 
+} // namespace common
 } // namespace internal
 } // namespace fair
 
-#endif // FAIR_INTERNAL_RATIONAL_QUADRATIC_EXACT_H
+#endif // FAIR_INTERNAL_COMMON_EXACT_CONVERSION_H

@@ -37,6 +37,7 @@
 
 namespace fair {
 namespace internal {
+namespace classic {
 
 /// Rows between two forced exact evaluations in the solvers (for lazy number types only).
 constexpr std::size_t classic_prune_stride = 128;
@@ -122,6 +123,7 @@ std::vector<NT> solve_cyclic_tridiagonal(const std::vector<NT>& a, const std::ve
   return x;
 }
 
+} // namespace classic
 } // namespace internal
 } // namespace fair
 

@@ -31,7 +31,7 @@
 #ifndef FAIR_INTERNAL_KAPPA_SYSTEM_H
 #define FAIR_INTERNAL_KAPPA_SYSTEM_H
 
-#include <fair/internal/kappa_dual.h>
+#include <fair/internal/kappa/dual.h>
 
 #include <algorithm>
 #include <cmath>

@@ -28,7 +28,7 @@
 
 #include <fair/Bernstein_polynomial.h>
 #include <fair/Errors.h>
-#include <fair/internal/bernstein_sign.h>
+#include <fair/internal/bernstein/sign.h>
 
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
@@ -41,6 +41,7 @@
 
 namespace fair {
 namespace internal {
+namespace bernstein {
 
 /// One root found by the bisection: the closed interval [lower, upper] (a point when
 /// lower == upper, else the root is in the open interval), its multiplicity when known (0 when
@@ -223,6 +224,7 @@ private:
   std::vector<Isolation_leaf> leaves_;
 };
 
+} // namespace bernstein
 } // namespace internal
 } // namespace fair
 

@@ -18,6 +18,7 @@
 
 namespace fair {
 namespace internal {
+namespace bernstein {
 
 /// A fixed-size array of GMP integers (RAII, deep copies).
 class Mpz_array {
@@ -148,6 +149,7 @@ inline int exact_sign_bernstein_at(const double* b, std::size_t m, double x) {
   return sign_bernstein_at_dyadic(B, work[m + 2], e, work);
 }
 
+} // namespace bernstein
 } // namespace internal
 } // namespace fair
 

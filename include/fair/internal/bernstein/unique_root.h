@@ -26,7 +26,7 @@
 #define FAIR_INTERNAL_BERNSTEIN_UNIQUE_ROOT_H
 
 #include <fair/Errors.h>
-#include <fair/internal/bernstein_dyadic.h>
+#include <fair/internal/bernstein/dyadic.h>
 
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
@@ -57,6 +57,7 @@ struct Unique_root {
 };
 
 namespace internal {
+namespace bernstein {
 
 constexpr std::size_t unique_root_stack_coefficients = 32;
 
@@ -275,6 +276,7 @@ Unique_root certified_unique_root(const std::array<double, N>& b, double max_ulp
   return certified_unique_root(b.data(), N, max_ulps);
 }
 
+} // namespace bernstein
 } // namespace internal
 } // namespace fair
 
