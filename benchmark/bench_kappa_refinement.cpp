@@ -56,13 +56,13 @@ void pass(benchmark::State& state, kp::Weight_mode mode) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
-void BM_kappa_refinement_pass_unit(benchmark::State& state) { pass(state, kp::Weight_mode::unit); }
-void BM_kappa_refinement_pass_automatic(benchmark::State& state) { pass(state, kp::Weight_mode::automatic); }
+void BM_kappa_refinement_pass_unit(benchmark::State& state) { pass(state, kp::Weight_mode::UNIT); }
+void BM_kappa_refinement_pass_automatic(benchmark::State& state) { pass(state, kp::Weight_mode::AUTOMATIC); }
 BENCHMARK(BM_kappa_refinement_pass_unit)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_kappa_refinement_pass_automatic)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
 void BM_kappa_initial_guess(benchmark::State& state) {
-  const kp::Problem pb = random_star(static_cast<std::size_t>(state.range(0)), 1, kp::Weight_mode::unit);
+  const kp::Problem pb = random_star(static_cast<std::size_t>(state.range(0)), 1, kp::Weight_mode::UNIT);
   for (auto _ : state) {
     kp::State st;
     kp::initial_guess(pb, st);
@@ -72,7 +72,7 @@ void BM_kappa_initial_guess(benchmark::State& state) {
 BENCHMARK(BM_kappa_initial_guess)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
 void BM_kappa_refine_to_1e3(benchmark::State& state) {
-  const kp::Problem pb = random_star(static_cast<std::size_t>(state.range(0)), 1, kp::Weight_mode::unit);
+  const kp::Problem pb = random_star(static_cast<std::size_t>(state.range(0)), 1, kp::Weight_mode::UNIT);
   std::size_t passes = 0;
   for (auto _ : state) {
     kp::State st;

@@ -110,10 +110,10 @@ TYPED_TEST(Cardinal_typed, InterpolatesAndIsC1AndMatchesBezierPieces) {
   typedef typename K::FT FT;
   const auto p = data_set_1<K>();
   const auto c = fair::Cardinal_spline_2<K>::optimal(p);
-  ASSERT_EQ(c.number_of_segments(), p.size() - 1);
-  const auto pieces = c.bezier_pieces();
+  ASSERT_EQ(c.number_of_pieces(), p.size() - 1);
+  const auto pieces = c.pieces();
   const FT ts[] = {FT(0), FT(1) / FT(3), FT(1) / FT(2), FT(7) / FT(8), FT(1)};
-  for (std::size_t i = 0; i < c.number_of_segments(); ++i) {
+  for (std::size_t i = 0; i < c.number_of_pieces(); ++i) {
     // eq. 3: r_i(0) = p_i, r_i(1) = p_{i+1} (with this class's numbering).
     if (is_exact<K>()) {
       EXPECT_TRUE(c.point(i, FT(0)) == p[i]);
@@ -137,7 +137,7 @@ TYPED_TEST(Cardinal_typed, InterpolatesAndIsC1AndMatchesBezierPieces) {
         EXPECT_NEAR(d<K>(sa.x()), d<K>(sb.x()), 1e-9);
       }
     }
-    if (i + 1 < c.number_of_segments() && is_exact<K>()) {
+    if (i + 1 < c.number_of_pieces() && is_exact<K>()) {
       // eq. 4: tangent alpha (p_{i+1} - p_{i-1}) at p_i from both sides: C1.
       EXPECT_TRUE(c.derivative(i, FT(1)) == c.derivative(i + 1, FT(0)));
       EXPECT_TRUE(c.derivative(i + 1, FT(0)) == c.alpha() * (p[i + 2] - p[i]));
@@ -146,10 +146,10 @@ TYPED_TEST(Cardinal_typed, InterpolatesAndIsC1AndMatchesBezierPieces) {
   if (is_exact<K>()) {
     // At the optimum the two end segments are parabolic: r''' = 0 (eqs. 16-17).
     EXPECT_TRUE(c.third_derivative(0) == typename K::Vector_2(0, 0));
-    EXPECT_TRUE(c.third_derivative(c.number_of_segments() - 1) == typename K::Vector_2(0, 0));
+    EXPECT_TRUE(c.third_derivative(c.number_of_pieces() - 1) == typename K::Vector_2(0, 0));
     // eq. 10 equals the sum over segments of |r'''|^2 (eq. 9; r''' is constant on a segment).
     FT sum(0);
-    for (std::size_t i = 0; i < c.number_of_segments(); ++i) sum += c.third_derivative(i).squared_length();
+    for (std::size_t i = 0; i < c.number_of_pieces(); ++i) sum += c.third_derivative(i).squared_length();
     EXPECT_TRUE(sum == c.approximate_energy());
     // Global parameter.
     EXPECT_TRUE(c.point(FT(5) / FT(2)) == c.point(2, FT(1) / FT(2)));
@@ -157,7 +157,7 @@ TYPED_TEST(Cardinal_typed, InterpolatesAndIsC1AndMatchesBezierPieces) {
     EXPECT_TRUE(c.tension() == FT(1) - FT(2) * c.alpha());
   }
   EXPECT_THROW(c.point(FT(9)), fair::Precondition_error);
-  EXPECT_THROW(c.point(c.number_of_segments(), FT(0)), fair::Precondition_error);
+  EXPECT_THROW(c.point(c.number_of_pieces(), FT(0)), fair::Precondition_error);
   EXPECT_EQ(c.data_points().size(), p.size());
 }
 
@@ -173,7 +173,7 @@ TYPED_TEST(Cardinal_typed, ClosedSquareIsExactCircleLike) {
   EXPECT_TRUE(o.energy == FT(0));
   const auto c = fair::Cardinal_spline_2<K>::optimal(sq, true);
   EXPECT_TRUE(c.is_closed());
-  EXPECT_EQ(c.number_of_segments(), 4u);
+  EXPECT_EQ(c.number_of_pieces(), 4u);
   EXPECT_TRUE(c.point(3, FT(1)) == sq[0]);
   EXPECT_TRUE(c.derivative(3, FT(1)) == c.derivative(0, FT(0)));
   EXPECT_TRUE(c.approximate_energy() == FT(0));
@@ -242,7 +242,7 @@ TYPED_TEST(Cardinal_typed, BadInputIsRejected) {
   EXPECT_THROW(fair::cardinal_auxiliary_points(three, FT(0)), fair::Precondition_error);
   // Two points with explicit auxiliary points: one segment.
   const fair::Cardinal_spline_2<K> two(std::vector<P>{P(0, 0), P(1, 0)}, FT(1) / FT(2), P(-1, 1), P(2, 1));
-  EXPECT_EQ(two.number_of_segments(), 1u);
+  EXPECT_EQ(two.number_of_pieces(), 1u);
 }
 
 // ------------------------------------------------------------------------ random property tests
@@ -341,7 +341,7 @@ TEST(Cardinal, TrueCurvatureVariation) {
     const auto o = fair::optimal_cardinal_parameters(p);
     const auto best = fair::Cardinal_spline_2<SC_double>::optimal(p);
     const auto cr = fair::Cardinal_spline_2<SC_double>::catmull_rom(p, o.aux_start, o.aux_end);
-    for (auto m : {fair::Energy_measure::parameter, fair::Energy_measure::arc_length}) {
+    for (auto m : {fair::Energy_measure::PARAMETER, fair::Energy_measure::ARC_LENGTH}) {
       const fair::Quadrature_estimate eb = best.curvature_variation_energy(m), ec = cr.curvature_variation_energy(m);
       EXPECT_LE(eb.error_bound, 1e-9 * eb.value + 1e-13);
       EXPECT_LT(eb.value, ec.value) << set;

@@ -27,3 +27,20 @@ TEST(Errors, HierarchyIsCatchableAsFairError) {
   EXPECT_EQ(n.iterations(), 10u);
   EXPECT_DOUBLE_EQ(n.residual(), 1e-3);
 }
+
+TEST(Errors, AssertThrowsInternalErrorNamingExpressionFileAndLine) {
+  EXPECT_NO_THROW(FAIR_ASSERT(1 + 1 == 2));
+  const int line = __LINE__ + 2;
+  try {
+    FAIR_ASSERT_MSG(2 + 2 == 5, "sum = ", 4);
+    FAIL() << "FAIR_ASSERT_MSG(false) did not throw";
+  } catch (const fair::Precondition_error&) {
+    FAIL() << "a broken invariant must not look like a caller's mistake";
+  } catch (const fair::Internal_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("2 + 2 == 5 does not hold: sum = 4"), std::string::npos) << what;
+    EXPECT_NE(what.find("test_errors.cpp:" + std::to_string(line)), std::string::npos) << what;
+    EXPECT_EQ(e.line(), line);
+  }
+  EXPECT_THROW(FAIR_ASSERT(false), fair::Error);
+}

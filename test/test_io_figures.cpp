@@ -54,7 +54,7 @@ TYPED_TEST(SamplingKernels, ParabolaArcLengthCurvatureAndNormalsMatchClosedForms
   const std::vector<fair::Bezier_2<K>> curve = {unit_parabola<K>()};
   const fair::Sampled_curve s = fair::sample_curve(curve, 32);
   ASSERT_EQ(s.samples.size(), 33u);
-  ASSERT_EQ(s.piece_count(), 1u);
+  ASSERT_EQ(s.number_of_pieces(), 1u);
   const double total = 2 * parabola_length(1);  // sqrt(5) + asinh(2)/2
   EXPECT_NEAR(s.length(), total, 1e-13 * total);
   for (const fair::Curve_sample& c : s.samples) {

@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "test_support.h"
+
 namespace {
 
 typedef CGAL::Simple_cartesian<double> Kd;
@@ -31,10 +33,7 @@ typename K::Point_2 pt(double x, double y) {
 
 template <class K>
 class Kappa_typed : public ::testing::Test {};
-typedef ::testing::Types<Kd, CGAL::Exact_predicates_inexact_constructions_kernel,
-                         CGAL::Exact_predicates_exact_constructions_kernel, CGAL::Simple_cartesian<CGAL::Gmpq>>
-    Kernels;
-TYPED_TEST_SUITE(Kappa_typed, Kernels);
+TYPED_TEST_SUITE(Kappa_typed, fair_test::All_kernels);
 
 // Yan et al. 2017 / the rational kappa-curve paper (w = 1): the open polynomial kappa-curve
 // through (-1,0), (0,1), (1,0), (2,1) has the pieces {(-1,0), (-0.08187, 1.71183), (0.5,0.5)}
@@ -448,7 +447,7 @@ TEST(Kappa, BoundaryRootNamesThePoint) {
   EXPECT_LE(check_curve(c).interpolation, 1e-12);
 }
 
-TEST(Kappa, HundredThousandPoints) {
+TEST(Kappa, HundredThousandPointsStress) {
   std::mt19937 g(1);
   const std::vector<Pd> p = spiky_star(g, 100000, 0.05);
   fair::Kappa_curve_options o;

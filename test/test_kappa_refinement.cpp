@@ -134,8 +134,8 @@ void reference_pass(const kp::Problem& pb, kp::State& st) {
     const Pt p0 = piece_start(pb, st, i), p1 = P(pb, st, i), p2 = piece_end(pb, st, i);
     // Weight: 1, fixed, or eqs. 15-16 (clamped minimum-eccentricity weight).
     w[i] = 1;
-    if (pb.mode == kp::Weight_mode::fixed) w[i] = pb.weight[i];
-    if (pb.mode == kp::Weight_mode::automatic) {
+    if (pb.mode == kp::Weight_mode::FIXED) w[i] = pb.weight[i];
+    if (pb.mode == kp::Weight_mode::AUTOMATIC) {
       const double what = std::sqrt(dot(p2 - p0, p2 - p0) / (2 * (dot(p0 - p1, p0 - p1) + dot(p2 - p1, p2 - p1))));
       w[i] = std::max(pb.tension[i] * what, pb.clamp);
     }
@@ -282,7 +282,7 @@ TEST(KappaRefinement, Eq18AgreesWithDenseSolve) {
   for (bool closed : {true, false})
     for (std::size_t n : {1, 2, 3, 4, 5, 8, 33, 60})
       for (int kind = 0; kind < 3; ++kind) {
-        kp::Problem pb = star(n, closed, kp::Weight_mode::fixed, static_cast<unsigned>(n * 10 + kind));
+        kp::Problem pb = star(n, closed, kp::Weight_mode::FIXED, static_cast<unsigned>(n * 10 + kind));
         kp::State st;
         st.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
@@ -330,7 +330,7 @@ TEST(KappaRefinement, Eq18AgreesWithDenseSolve) {
 
 TEST(KappaRefinement, Eq18NonFiniteDataFailsAndKeepsState) {
   for (bool closed : {true, false}) {
-    kp::Problem pb = star(12, closed, kp::Weight_mode::unit, 3);
+    kp::Problem pb = star(12, closed, kp::Weight_mode::UNIT, 3);
     kp::State st;
     st.resize(pb.n);
     st.dx.assign(pb.n, 0.25);
@@ -349,14 +349,14 @@ TEST(KappaRefinement, Eq18NonFiniteDataFailsAndKeepsState) {
 TEST(KappaRefinement, PassAgreesWithReferenceImplementation) {
   kp::Refinement_workspace ws;
   for (bool closed : {true, false})
-    for (kp::Weight_mode mode : {kp::Weight_mode::unit, kp::Weight_mode::fixed, kp::Weight_mode::automatic})
+    for (kp::Weight_mode mode : {kp::Weight_mode::UNIT, kp::Weight_mode::FIXED, kp::Weight_mode::AUTOMATIC})
       for (std::size_t n : {3, 4, 7, 40}) {
         const kp::Problem pb = star(n, closed, mode, static_cast<unsigned>(n + 100 * static_cast<int>(mode)));
         kp::State st;
         kp::initial_guess(pb, st, ws);
         kp::State ref;
         ref.resize(n);
-        if (mode == kp::Weight_mode::fixed) ref.w = pb.weight;
+        if (mode == kp::Weight_mode::FIXED) ref.w = pb.weight;
         dense_eq18(pb, ref, ref.dx, ref.dy);
         EXPECT_LE(max_abs_diff(st.dx, ref.dx), 1e-13) << "initial guess, n=" << n;
         EXPECT_LE(max_abs_diff(st.dy, ref.dy), 1e-13) << "initial guess, n=" << n;
@@ -383,7 +383,7 @@ TEST(KappaRefinement, PassAgreesWithReferenceImplementation) {
 TEST(KappaRefinement, WorkspaceReuseAndOverloadsGiveIdenticalResults) {
   kp::Refinement_workspace ws;
   for (std::size_t n : {50, 9, 120, 3}) {  // the workspace shrinks and grows
-    const kp::Problem pb = star(n, n % 2 == 0, kp::Weight_mode::automatic, static_cast<unsigned>(n));
+    const kp::Problem pb = star(n, n % 2 == 0, kp::Weight_mode::AUTOMATIC, static_cast<unsigned>(n));
     kp::State a, b;
     kp::initial_guess(pb, a, ws);
     kp::initial_guess(pb, b);
@@ -410,7 +410,7 @@ TEST(KappaRefinement, PassesReproduceTheCircle) {
     kp::Problem pb;
     pb.closed = true;
     pb.n = n;
-    pb.mode = kp::Weight_mode::automatic;
+    pb.mode = kp::Weight_mode::AUTOMATIC;
     pb.tension.assign(n, 1.0);
     const double R = 3.5, cx = -2, cy = 7;
     for (std::size_t i = 0; i < n; ++i) {
@@ -434,7 +434,7 @@ TEST(KappaRefinement, PassesReproduceTheCircle) {
 
 TEST(KappaRefinement, RefineStopsAtTheThresholdAndReducesTheResidual) {
   for (bool closed : {true, false}) {
-    const kp::Problem pb = star(60, closed, kp::Weight_mode::automatic, 11);
+    const kp::Problem pb = star(60, closed, kp::Weight_mode::AUTOMATIC, 11);
     kp::State st;
     kp::initial_guess(pb, st);
     std::vector<double> F;

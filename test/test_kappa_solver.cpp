@@ -260,7 +260,7 @@ TEST(KappaJacobian, MatchesFullAutomaticDifferentiation) {
 // Straight control polygons (cross products 0, |kappa| = 0 on one side of a join) and the
 // end blocks of open curves.
 TEST(KappaJacobian, DegenerateJoinsAndOpenEnds) {
-  for (const Weight_mode mode : {Weight_mode::unit, Weight_mode::automatic}) {
+  for (const Weight_mode mode : {Weight_mode::UNIT, Weight_mode::AUTOMATIC}) {
     Problem pb;
     pb.closed = false;
     pb.n = 5;
@@ -303,9 +303,9 @@ Problem star(std::size_t n, unsigned seed, Weight_mode mode) {
 // automatic weights on small sets, two passes can leave the start outside Newton's basin;
 // solve() then falls back to more passes and Levenberg-Marquardt, as test_kappa.cpp exercises.)
 TEST(KappaNewton, ReachesTheLevenbergMarquardtRootQuickly) {
-  const std::pair<Weight_mode, std::size_t> cases[] = {{Weight_mode::unit, 24}, {Weight_mode::unit, 50},
-                                                       {Weight_mode::unit, 400}, {Weight_mode::automatic, 100},
-                                                       {Weight_mode::automatic, 400}};
+  const std::pair<Weight_mode, std::size_t> cases[] = {{Weight_mode::UNIT, 24}, {Weight_mode::UNIT, 50},
+                                                       {Weight_mode::UNIT, 400}, {Weight_mode::AUTOMATIC, 100},
+                                                       {Weight_mode::AUTOMATIC, 400}};
   for (const auto& mode_and_size : cases) {
       const Weight_mode mode = mode_and_size.first;
       const std::size_t n = mode_and_size.second;
@@ -333,7 +333,7 @@ TEST(KappaNewton, ReachesTheLevenbergMarquardtRootQuickly) {
 
 // The cold solve takes the fast path (two passes, then Newton) on regular data and reports it.
 TEST(KappaNewton, ColdSolveUsesTheFastPath) {
-  const Problem pb = star(1000, 3, Weight_mode::unit);
+  const Problem pb = star(1000, 3, Weight_mode::UNIT);
   State st;
   const Solve_result res = solve(pb, st, Solve_settings{});
   EXPECT_TRUE(res.converged);
@@ -349,7 +349,7 @@ TEST(KappaNewton, IterationCapHoldsForTheWholeSolve) {
   std::uniform_real_distribution<double> U(0, 1);
   int warm_converged = 0;
   for (int trial = 0; trial < 40; ++trial) {
-    Problem pb = star(30 + static_cast<std::size_t>(trial), 100 + static_cast<unsigned>(trial), Weight_mode::unit);
+    Problem pb = star(30 + static_cast<std::size_t>(trial), 100 + static_cast<unsigned>(trial), Weight_mode::UNIT);
     pb.closed = trial % 2 == 0;
     pb.sx = 1.2; pb.sy = -0.3; pb.ex = 1.2; pb.ey = 0.3;
     Solve_settings tight;
@@ -374,7 +374,7 @@ TEST(KappaNewton, IterationCapHoldsForTheWholeSolve) {
 
 // A local (range) Newton solve only changes the unknowns of its range and zeroes their residuals.
 TEST(KappaNewton, RangeSolveTouchesOnlyItsBlocks) {
-  Problem pb = star(60, 5, Weight_mode::unit);
+  Problem pb = star(60, 5, Weight_mode::UNIT);
   State st;
   ASSERT_TRUE(solve(pb, st, Solve_settings{}).converged);
   pb.qx[30] *= 1.01;

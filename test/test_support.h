@@ -27,6 +27,7 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel EPICK;
 typedef CGAL::Exact_predicates_exact_constructions_kernel EPECK;
 typedef CGAL::Simple_cartesian<CGAL::Gmpq> SC_gmpq;
 typedef ::testing::Types<SC_double, EPICK, EPECK, SC_gmpq> All_kernels;
+typedef ::testing::Types<SC_double, EPICK> Floating_kernels;
 
 // True for the kernels whose number type is exact (EPECK, SC_gmpq).
 template <class K>
@@ -35,34 +36,47 @@ constexpr bool is_exact() {
          !std::is_floating_point<typename K::FT>::value;
 }
 
-// a == b exactly in an exact kernel, to a relative 1e-11 otherwise.
+// The one comparison of the tests. same<K>(a, b, rel): a == b exactly in an exact kernel; in a
+// floating-point kernel |a - b| <= rel (1 + max(|a|, |b|)) -- for numbers, and for points and
+// vectors coordinate by coordinate. The tolerance is visible at every call site that needs
+// another than the default.
+inline ::testing::AssertionResult same_double(double x, double y, double rel) {
+  if (std::fabs(x - y) <= rel * (1.0 + std::max(std::fabs(x), std::fabs(y)))) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << x << " vs " << y << " differ by " << std::fabs(x - y) << " (rel " << rel << ")";
+}
+
+// Numbers: any arguments convertible to FT (int, double, CGAL expression results).
 template <class K>
-void expect_equal(const typename K::FT& a, const typename K::FT& b, const char* what) {
+::testing::AssertionResult same(const typename K::FT& a, const typename K::FT& b, double rel = 1e-12) {
   if (is_exact<K>()) {
-    EXPECT_TRUE(a == b) << what << ": " << CGAL::to_double(a) << " != " << CGAL::to_double(b);
-  } else {
-    const double x = CGAL::to_double(a), y = CGAL::to_double(b);
-    EXPECT_NEAR(x, y, 1e-11 * (1 + std::max(std::fabs(x), std::fabs(y)))) << what;
+    if (a == b) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << CGAL::to_double(a) << " != " << CGAL::to_double(b) << " (exact)";
   }
+  return same_double(CGAL::to_double(a), CGAL::to_double(b), rel);
 }
 
-// expect_equal on both coordinates of two points (or vectors).
-template <class K, class P>
-void expect_equal_xy(const P& a, const P& b, const char* what) {
-  expect_equal<K>(a.x(), b.x(), what);
-  expect_equal<K>(a.y(), b.y(), what);
+// Points and vectors: coordinate by coordinate.
+template <class K, class T, class = std::enable_if_t<!std::is_convertible<T, typename K::FT>::value>>
+::testing::AssertionResult same(const T& a, const T& b, double rel = 1e-12) {
+  if (is_exact<K>()) {
+    if (a == b) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << a << " != " << b << " (exact)";
+  }
+  ::testing::AssertionResult x = same_double(CGAL::to_double(a.x()), CGAL::to_double(b.x()), rel);
+  if (!x) return x << " in x of " << a << " vs " << b;
+  ::testing::AssertionResult y = same_double(CGAL::to_double(a.y()), CGAL::to_double(b.y()), rel);
+  if (!y) return y << " in y of " << a << " vs " << b;
+  return ::testing::AssertionSuccess();
 }
 
-// Points (or vectors) equal exactly in an exact kernel, and in a floating-point kernel each
-// coordinate to tol * (1 + |coordinate of a|).
-template <class K, class T>
-void expect_same(const T& a, const T& b, double tol = 1e-12) {
-  if (is_exact<K>()) {
-    EXPECT_TRUE(a == b) << a << " vs " << b;
-  } else {
-    EXPECT_NEAR(CGAL::to_double(a.x()), CGAL::to_double(b.x()), tol * (1 + std::fabs(CGAL::to_double(a.x()))));
-    EXPECT_NEAR(CGAL::to_double(a.y()), CGAL::to_double(b.y()), tol * (1 + std::fabs(CGAL::to_double(a.y()))));
-  }
+// The ULP variant: two doubles at most `ulps` units in the last place apart (for results that
+// must be correctly rounded or nearly so, where a relative tolerance would hide a lost bit).
+inline ::testing::AssertionResult same_ulps(double a, double b, double ulps) {
+  if (a == b) return ::testing::AssertionSuccess();
+  if (!std::isfinite(a) || !std::isfinite(b)) return ::testing::AssertionFailure() << a << " vs " << b;
+  const double ulp = std::nextafter(std::max(std::fabs(a), std::fabs(b)), HUGE_VAL) - std::max(std::fabs(a), std::fabs(b));
+  if (std::fabs(a - b) <= ulps * ulp) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << a << " vs " << b << " are " << std::fabs(a - b) / ulp << " ulps apart (max " << ulps << ")";
 }
 
 // n random points with coordinates k/8, |k| <= 800: exactly representable in double, so every
@@ -83,18 +97,6 @@ std::vector<typename K::Point_2> random_points(std::mt19937& rng, std::size_t n)
 template <class K>
 typename K::FT q(int n, int d = 1) {
   return typename K::FT(n) / typename K::FT(d);
-}
-
-// a == b exactly in an exact kernel, |a - b| <= rel (1 + |b|) in a floating kernel.
-template <class K>
-::testing::AssertionResult same(const typename K::FT& a, const typename K::FT& b, double rel = 1e-13) {
-  const double x = CGAL::to_double(a), y = CGAL::to_double(b);
-  if (is_exact<K>()) {
-    if (a == b) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << x << " != " << y << " (exact)";
-  }
-  if (std::fabs(x - y) <= rel * (1.0 + std::fabs(y))) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << x << " vs " << y << " differ by " << std::fabs(x - y);
 }
 
 } // namespace fair_test

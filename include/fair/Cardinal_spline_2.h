@@ -127,7 +127,7 @@ optimal_cardinal_parameters(const std::vector<Point_2>& p, bool closed = false) 
 
 /// \brief A Cardinal spline curve (eqs. 1-2), open with two auxiliary points or closed.
 ///
-/// Models a piecewise curve whose pieces are exactly cubic Bezier_2<K> pieces (bezier_pieces()).
+/// Models a piecewise curve whose pieces are exactly cubic Bezier_2<K> pieces (pieces()).
 template <class K>
 class Cardinal_spline_2 {
 public:
@@ -197,7 +197,7 @@ public:
   }
 
   /// Number of segments: n for an open curve on n+1 points, N for a closed one on N points.
-  std::size_t number_of_segments() const { return closed_ ? p_.size() : p_.size() - 3; }
+  std::size_t number_of_pieces() const { return closed_ ? p_.size() : p_.size() - 3; }
 
   /// The four points (q0, q1, q2, q3) that define segment i (eq. 1).
   void segment_points(std::size_t i, const Point_2*& q0, const Point_2*& q1, const Point_2*& q2, const Point_2*& q3) const {
@@ -237,11 +237,11 @@ public:
     return combine(i, b) - CGAL::ORIGIN;
   }
 
-  /// The point at the global parameter u in [0, number_of_segments()]: segment floor(u) (the last
-  /// segment for u = number_of_segments()) at t = u - floor(u).
+  /// The point at the global parameter u in [0, number_of_pieces()]: segment floor(u) (the last
+  /// segment for u = number_of_pieces()) at t = u - floor(u).
   /// \throws Precondition_error for u outside that range.
   Point_2 point(const FT& u) const {
-    const std::size_t S = number_of_segments();
+    const std::size_t S = number_of_pieces();
     internal::require(!(u < FT(0)) && !(FT(static_cast<double>(S)) < u), "Cardinal_spline_2::point: u = ",
                       CGAL::to_double(u), " is outside [0, ", S, "]");
     double f = std::floor(CGAL::to_double(u));
@@ -255,7 +255,7 @@ public:
 
   /// Segment i as the cubic Bezier piece q1, q1 + alpha (q2 - q0)/3, q2 - alpha (q3 - q1)/3, q2
   /// (same parametrisation: piece(t) = r_i(t) identically).
-  Piece bezier_piece(std::size_t i) const {
+  Piece piece(std::size_t i) const {
     const Point_2 *q0, *q1, *q2, *q3;
     segment_points(i, q0, q1, q2, q3);
     const FT c = alpha_ / FT(3);
@@ -263,10 +263,10 @@ public:
                  Point_2(q2->x() - c * (q3->x() - q1->x()), q2->y() - c * (q3->y() - q1->y())), *q2);
   }
   /// All segments as cubic Bezier pieces, joined end to start (C^1 at the joins).
-  std::vector<Piece> bezier_pieces() const {
+  std::vector<Piece> pieces() const {
     std::vector<Piece> out;
-    out.reserve(number_of_segments());
-    for (std::size_t i = 0; i < number_of_segments(); ++i) out.push_back(bezier_piece(i));
+    out.reserve(number_of_pieces());
+    for (std::size_t i = 0; i < number_of_pieces(); ++i) out.push_back(piece(i));
     return out;
   }
 
@@ -275,7 +275,7 @@ public:
   FT approximate_energy() const {
     internal::cardinal::Cardinal_sums<FT> s;
     const Point_2 *q0, *q1, *q2, *q3;
-    for (std::size_t i = 0; i < number_of_segments(); ++i) {
+    for (std::size_t i = 0; i < number_of_pieces(); ++i) {
       segment_points(i, q0, q1, q2, q3);
       s.add(*q0, *q1, *q2, *q3);
     }
@@ -283,12 +283,12 @@ public:
   }
 
   /// The true curvature variation energy, summed over the segments:
-  /// measure = Energy_measure::parameter gives sum_i int_0^1 (d kappa/dt)^2 dt (eq. 5),
-  /// measure = Energy_measure::arc_length gives int (d kappa/ds)^2 ds. Adaptive Gauss-Kronrod
+  /// measure = Energy_measure::PARAMETER gives sum_i int_0^1 (d kappa/dt)^2 dt (eq. 5),
+  /// measure = Energy_measure::ARC_LENGTH gives int (d kappa/ds)^2 ds. Adaptive Gauss-Kronrod
   /// quadrature with the error bound and caps of fair::curvature_variation_energy.
-  Quadrature_estimate curvature_variation_energy(Energy_measure measure = Energy_measure::parameter,
+  Quadrature_estimate curvature_variation_energy(Energy_measure measure = Energy_measure::PARAMETER,
                                                  const Quadrature_options& options = Quadrature_options()) const {
-    return fair::curvature_variation_energy(bezier_pieces(), measure, options);
+    return fair::curvature_variation_energy(pieces(), measure, options);
   }
 
 private:
@@ -298,8 +298,8 @@ private:
                       " must be finite and > 0 (alpha = (1 - tension)/2; alpha <= 0 collapses or reverses the tangents)");
   }
   void check_segment(std::size_t i) const {
-    internal::require(i < number_of_segments(), "Cardinal_spline_2: segment index ", i, " >= number of segments ",
-                      number_of_segments());
+    internal::require(i < number_of_pieces(), "Cardinal_spline_2: segment index ", i, " >= number of segments ",
+                      number_of_pieces());
   }
   void basis(const FT& t, FT* b) const { // eq. 2
     const FT a = alpha_, t2 = t * t, t3 = t2 * t;

@@ -56,7 +56,7 @@ public:
   /// spline. Throws Invalid_input_error for too few points, non-finite coordinates or coincident
   /// consecutive points (and, when closed, coincident last and first points).
   explicit Catmull_rom_2(std::vector<Point_2> points, bool closed = false,
-                         Knot_spacing spacing = Knot_spacing::uniform)
+                         Knot_spacing spacing = Knot_spacing::UNIFORM)
     : points_(std::move(points)), closed_(closed), spacing_(spacing) {
     const char* method = "Catmull_rom_2";
     internal::common::check_interpolation_input(points_, closed ? 3 : 2, closed, method);
@@ -89,7 +89,7 @@ public:
   /// its neighbour (then the end derivative is (p_1 - p_0)/2); with centripetal/chordal knots it
   /// must differ from it. Throws Invalid_input_error for bad data or auxiliary points.
   Catmull_rom_2(std::vector<Point_2> points, const Point_2& before, const Point_2& after,
-                Knot_spacing spacing = Knot_spacing::uniform)
+                Knot_spacing spacing = Knot_spacing::UNIFORM)
     : points_(std::move(points)), closed_(false), spacing_(spacing) {
     const char* method = "Catmull_rom_2";
     internal::common::check_interpolation_input(points_, 2, false, method);
@@ -109,6 +109,7 @@ public:
 
   /// The cubic Bezier pieces; piece i runs from point i to point i+1 (mod n when closed).
   const std::vector<Piece>& pieces() const { return pieces_; }
+  std::size_t number_of_pieces() const { return pieces_.size(); }
   const std::vector<Point_2>& points() const { return points_; }
   /// The knots u_0 = 0 < u_1 < ... (one more than the number of pieces).
   const std::vector<FT>& knots() const { return knots_; }

@@ -41,7 +41,7 @@
 namespace fair {
 
 /// End handling of an open Cubic_bspline_2.
-enum class Cubic_bspline_ends { interpolate_end_points, trimmed };
+enum class Cubic_bspline_ends { INTERPOLATE_END_POINTS, TRIMMED };
 
 template <class K>
 class Cubic_bspline_2 {
@@ -57,12 +57,12 @@ public:
   /// consecutive points (rejected for every classic method, so that comparisons use the same
   /// admissible data; a doubled control point would also make the curve singular).
   explicit Cubic_bspline_2(std::vector<Point_2> points, bool closed = false,
-                           Cubic_bspline_ends ends = Cubic_bspline_ends::interpolate_end_points)
+                           Cubic_bspline_ends ends = Cubic_bspline_ends::INTERPOLATE_END_POINTS)
     : points_(std::move(points)), closed_(closed), ends_(ends) {
     const char* method = "Cubic_bspline_2";
-    const std::size_t minimum = closed ? 3 : (ends == Cubic_bspline_ends::trimmed ? 4 : 2);
+    const std::size_t minimum = closed ? 3 : (ends == Cubic_bspline_ends::TRIMMED ? 4 : 2);
     internal::common::check_interpolation_input(points_, minimum, closed, method);
-    if (closed || ends == Cubic_bspline_ends::trimmed) {
+    if (closed || ends == Cubic_bspline_ends::TRIMMED) {
       control_ = points_;
     } else {
       const std::size_t n = points_.size();
@@ -81,6 +81,7 @@ public:
   /// The cubic Bezier pieces (piece i spans the knot interval [i, i+1] of the uniform knots,
   /// starting at the knot of p_i; for `trimmed`, at the knot of p_{i+1}).
   const std::vector<Piece>& pieces() const { return pieces_; }
+  std::size_t number_of_pieces() const { return pieces_.size(); }
   const std::vector<Point_2>& points() const { return points_; }
   /// The control polygon actually used (the data, plus the two phantom points for
   /// interpolate_end_points).

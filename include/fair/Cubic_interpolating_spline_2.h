@@ -22,7 +22,7 @@
 // The system is strictly diagonally dominant; it is solved per coordinate by the Thomas
 // algorithm (open) or by Sherman-Morrison on the cyclic system (periodic): O(n) time and memory.
 //
-// Exactness: with Knot_spacing::uniform every number is rational in the data, so in an exact
+// Exactness: with Knot_spacing::UNIFORM every number is rational in the data, so in an exact
 // kernel (EPECK, Simple_cartesian<Gmpq>) the pieces interpolate exactly, and C1, C2 and the end
 // conditions hold exactly. Centripetal/chordal knots are computed in double and converted
 // exactly to FT (see Knot_spacing); the solve is then exact for those knots.
@@ -50,7 +50,7 @@
 namespace fair {
 
 /// End conditions of the C2 cubic interpolating spline.
-enum class Spline_end_condition { natural, clamped, periodic };
+enum class Spline_end_condition { NATURAL, CLAMPED, PERIODIC };
 
 template <class K>
 class Cubic_interpolating_spline_2 {
@@ -66,10 +66,10 @@ public:
   /// Throws Invalid_input_error for too few points, non-finite coordinates or coincident
   /// consecutive points, and Precondition_error for end = clamped (use the other constructor).
   explicit Cubic_interpolating_spline_2(std::vector<Point_2> points,
-                                        Spline_end_condition end = Spline_end_condition::natural,
-                                        Knot_spacing spacing = Knot_spacing::uniform)
+                                        Spline_end_condition end = Spline_end_condition::NATURAL,
+                                        Knot_spacing spacing = Knot_spacing::UNIFORM)
     : points_(std::move(points)), end_(end), spacing_(spacing) {
-    internal::require(end != Spline_end_condition::clamped,
+    internal::require(end != Spline_end_condition::CLAMPED,
                       "Cubic_interpolating_spline_2: a clamped spline needs its two end derivatives; "
                       "use the constructor taking start_derivative and end_derivative");
     build(Vector_2(FT(0), FT(0)), Vector_2(FT(0), FT(0)));
@@ -80,8 +80,8 @@ public:
   /// Throws Invalid_input_error as above, and for a non-finite derivative.
   Cubic_interpolating_spline_2(std::vector<Point_2> points, const Vector_2& start_derivative,
                                const Vector_2& end_derivative,
-                               Knot_spacing spacing = Knot_spacing::uniform)
-    : points_(std::move(points)), end_(Spline_end_condition::clamped), spacing_(spacing) {
+                               Knot_spacing spacing = Knot_spacing::UNIFORM)
+    : points_(std::move(points)), end_(Spline_end_condition::CLAMPED), spacing_(spacing) {
     check_vector(start_derivative, "start_derivative");
     check_vector(end_derivative, "end_derivative");
     build(start_derivative, end_derivative);
@@ -90,6 +90,7 @@ public:
   /// The cubic Bezier pieces; piece i runs from point i to point i+1 (mod the point count when
   /// periodic), with local parameter t = (u - u_i) / h_i.
   const std::vector<Piece>& pieces() const { return pieces_; }
+  std::size_t number_of_pieces() const { return pieces_.size(); }
   /// The interpolated points.
   const std::vector<Point_2>& points() const { return points_; }
   /// The knots u_0 = 0 < u_1 < ... (one more than the number of pieces).
@@ -98,7 +99,7 @@ public:
   const std::vector<Vector_2>& derivatives() const { return derivatives_; }
   Spline_end_condition end_condition() const { return end_; }
   Knot_spacing knot_spacing() const { return spacing_; }
-  bool is_closed() const { return end_ == Spline_end_condition::periodic; }
+  bool is_closed() const { return end_ == Spline_end_condition::PERIODIC; }
 
 private:
   static void check_vector(const Vector_2& v, const char* name) {
@@ -136,7 +137,7 @@ private:
       }
     } else {
       for (std::size_t i = 1; i + 1 < n; ++i) interior_row(i, i - 1, i + 1, h[i - 1], h[i]);
-      if (end_ == Spline_end_condition::natural) {
+      if (end_ == Spline_end_condition::NATURAL) {
         b[0] = two;
         c[0] = FT(1);
         dx[0] = three * (p[1].x() - p[0].x()) / h[0];

@@ -89,6 +89,7 @@ public:
   /// The cubic Bezier pieces; piece i spans the knot interval [i, i+1], from near p_i to near
   /// p_{i+1} (exactly, where the fourth difference vanishes).
   const std::vector<Piece>& pieces() const { return pieces_; }
+  std::size_t number_of_pieces() const { return pieces_.size(); }
   const std::vector<Point_2>& points() const { return points_; }
   /// The B-spline control points c_i (for an open curve c_{-1}..c_{n+1}, from the extended data).
   const std::vector<Point_2>& control_polygon() const { return control_; }

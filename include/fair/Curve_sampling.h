@@ -54,7 +54,7 @@ struct Sampled_curve {
   std::vector<double> piece_start;
 
   double length() const { return piece_start.empty() ? 0.0 : piece_start.back(); }
-  std::size_t piece_count() const { return piece_start.empty() ? 0 : piece_start.size() - 1; }
+  std::size_t number_of_pieces() const { return piece_start.empty() ? 0 : piece_start.size() - 1; }
 };
 
 namespace internal {

@@ -62,6 +62,21 @@ private:
   double residual_;
 };
 
+/// A broken invariant inside the library: a bug in fair, never a problem of the caller's data.
+/// Callers that catch Precondition_error or Invalid_input_error to repair their input do not
+/// receive it. The message names the failed condition, the file and the line.
+class Internal_error : public Error {
+public:
+  Internal_error(const std::string& what, const char* file, int line)
+    : Error(std::string(file) + ":" + std::to_string(line) + ": internal error: " + what), file_(file), line_(line) {}
+  const char* file() const noexcept { return file_; }
+  int line() const noexcept { return line_; }
+
+private:
+  const char* file_;
+  int line_;
+};
+
 namespace internal {
 
 /// Concatenates its arguments with operator<< into one message.
@@ -79,7 +94,22 @@ void require(bool condition, const Args&... args) {
   if (!condition) throw Precondition_error(message(args...));
 }
 
+/// Throws Internal_error recording the condition, file and line unless `condition` holds.
+template <class... Args>
+void check_invariant(bool condition, const char* expression, const char* file, int line, const Args&... args) {
+  if (!condition) throw Internal_error(message(expression, " does not hold", (sizeof...(args) ? ": " : ""), args...), file, line);
+}
+
 } // namespace internal
 } // namespace fair
+
+/// FAIR_ASSERT(condition): an invariant of the library's own algorithms, not a check of user
+/// input. Always on, also in release builds (a CAD kernel must not go on past a broken
+/// invariant): throws fair::Internal_error naming the expression, the file and the line.
+/// FAIR_ASSERT_MSG(condition, parts...) appends the parts (operator<<) to the message.
+#define FAIR_ASSERT(condition) \
+  ::fair::internal::check_invariant(static_cast<bool>(condition), #condition, __FILE__, __LINE__)
+#define FAIR_ASSERT_MSG(condition, ...) \
+  ::fair::internal::check_invariant(static_cast<bool>(condition), #condition, __FILE__, __LINE__, __VA_ARGS__)
 
 #endif // FAIR_ERRORS_H

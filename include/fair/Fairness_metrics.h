@@ -47,8 +47,8 @@ namespace fair {
 
 /// Measure of the curvature variation energy.
 enum class Energy_measure {
-  arc_length, ///< int (d kappa / ds)^2 ds: geometric, independent of the parametrisation
-  parameter   ///< sum over pieces of int_0^1 (d kappa / dt)^2 dt (Li's eq. 5)
+  ARC_LENGTH, ///< int (d kappa / ds)^2 ds: geometric, independent of the parametrisation
+  PARAMETER   ///< sum over pieces of int_0^1 (d kappa / dt)^2 dt (Li's eq. 5)
 };
 
 /// One sample of the curvature profile.
@@ -400,13 +400,13 @@ Quadrature_estimate bending_energy(const std::vector<Piece>& curve, const Quadra
 }
 
 /// Curvature variation energy: int (dkappa/ds)^2 ds = sum int_0^1 (dkappa/dt)^2 / |c'| dt
-/// (Energy_measure::arc_length), or sum int_0^1 (dkappa/dt)^2 dt (Energy_measure::parameter, eq. 5
+/// (Energy_measure::ARC_LENGTH), or sum int_0^1 (dkappa/dt)^2 dt (Energy_measure::PARAMETER, eq. 5
 /// of Li's paper). Derivatives of order 3 are exact for Bernstein-form pieces.
 template <class Piece>
 Quadrature_estimate curvature_variation_energy(const std::vector<Piece>& curve,
-                                               Energy_measure measure = Energy_measure::arc_length,
+                                               Energy_measure measure = Energy_measure::ARC_LENGTH,
                                                const Quadrature_options& options = Quadrature_options()) {
-  if (measure == Energy_measure::arc_length)
+  if (measure == Energy_measure::ARC_LENGTH)
     return internal::integrate_over_curve(
         curve, [](const internal::metrics::Jet& j) { const double k = j.curvature_derivative(); return k * k / j.speed(); },
         options, "curvature_variation_energy");
@@ -543,7 +543,7 @@ Fairness_report fairness_report(const std::vector<Piece>& curve, const Quadratur
   r.pieces = curve.size();
   r.length = arc_length(curve, options);
   r.bending = bending_energy(curve, options);
-  r.curvature_variation = curvature_variation_energy(curve, Energy_measure::arc_length, options);
+  r.curvature_variation = curvature_variation_energy(curve, Energy_measure::ARC_LENGTH, options);
   const std::vector<Curvature_sample> prof = curvature_profile(curve, 64, options);
   r.min_curvature = r.max_curvature = prof.front().curvature;
   for (const Curvature_sample& s : prof) {

@@ -56,7 +56,7 @@
 namespace fair {
 
 /// Which rule Four_point_subdivision_2 applies.
-enum class Four_point_variant { interpolatory, relaxed };
+enum class Four_point_variant { INTERPOLATORY, RELAXED };
 
 template <class K>
 class Four_point_subdivision_2 {
@@ -76,7 +76,7 @@ public:
   /// and Precondition_error unless 0 < w < (sqrt(5) - 1)/8 (the C1 range of DLG 1987).
   explicit Four_point_subdivision_2(std::vector<Point_2> points, bool closed = false,
                                     const FT& w = FT(1) / FT(16))
-    : points_(std::move(points)), closed_(closed), variant_(Four_point_variant::interpolatory), w_(w),
+    : points_(std::move(points)), closed_(closed), variant_(Four_point_variant::INTERPOLATORY), w_(w),
       gamma_(0) {
     check();
     const double wd = CGAL::to_double(w);
@@ -91,9 +91,9 @@ public:
   Four_point_subdivision_2(std::vector<Point_2> points, bool closed, Four_point_variant variant,
                            const FT& gamma = FT(-3) / FT(128))
     : points_(std::move(points)), closed_(closed), variant_(variant), w_(FT(1) / FT(16)),
-      gamma_(variant == Four_point_variant::relaxed ? gamma : FT(0)) {
+      gamma_(variant == Four_point_variant::RELAXED ? gamma : FT(0)) {
     check();
-    internal::require(variant == Four_point_variant::interpolatory ||
+    internal::require(variant == Four_point_variant::INTERPOLATORY ||
                           (FT(-1) / FT(16) <= gamma && gamma <= FT(0)),
                       "Four_point_subdivision_2: relaxation gamma = ", CGAL::to_double(gamma),
                       " is outside [-1/16, 0]");
@@ -148,7 +148,7 @@ public:
       e.push_back(b2);
     }
     const FT half_w = FT(1) / FT(2) + w_, minus_w = -w_;
-    const bool relaxed = variant_ == Four_point_variant::relaxed;
+    const bool relaxed = variant_ == Four_point_variant::RELAXED;
     const FT g = gamma_, g4 = FT(-4) * gamma_, g6 = FT(1) + FT(6) * gamma_;
     const std::size_t edges = closed_ ? n : n - 1;
     std::vector<Point_2> out;

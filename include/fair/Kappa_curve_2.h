@@ -270,13 +270,13 @@ private:
     if (!opt_.closed) { pb.sx = x[0]; pb.sy = y[0]; pb.ex = x[m - 1]; pb.ey = y[m - 1]; }
     pb.clamp = opt_.weight_clamp;
     switch (opt_.weights) {
-      case Kappa_weights::UNIT: pb.mode = kp::Weight_mode::unit; break;
+      case Kappa_weights::UNIT: pb.mode = kp::Weight_mode::UNIT; break;
       case Kappa_weights::FIXED:
-        pb.mode = kp::Weight_mode::fixed;
+        pb.mode = kp::Weight_mode::FIXED;
         pb.weight.assign(opt_.fixed_weights.begin() + first, opt_.fixed_weights.begin() + first + pb.n);
         break;
       case Kappa_weights::AUTOMATIC:
-        pb.mode = kp::Weight_mode::automatic;
+        pb.mode = kp::Weight_mode::AUTOMATIC;
         if (opt_.tension.empty()) pb.tension.assign(pb.n, 1.0);
         else pb.tension.assign(opt_.tension.begin() + first, opt_.tension.begin() + first + pb.n);
         break;

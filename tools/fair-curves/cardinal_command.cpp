@@ -60,10 +60,10 @@ void run_cardinal_in(const Cardinal_options& o) {
   } else {
     curve.emplace(data.points, alpha, false); // the auxiliary points of eqs. 19-20 for this alpha
   }
-  const auto pieces = curve->bezier_pieces();
+  const auto pieces = curve->pieces();
   const FT energy_approx = curve->approximate_energy();
-  const fair::Quadrature_estimate e_t = curve->curvature_variation_energy(fair::Energy_measure::parameter);
-  const fair::Quadrature_estimate e_s = curve->curvature_variation_energy(fair::Energy_measure::arc_length);
+  const fair::Quadrature_estimate e_t = curve->curvature_variation_energy(fair::Energy_measure::PARAMETER);
+  const fair::Quadrature_estimate e_s = curve->curvature_variation_energy(fair::Energy_measure::ARC_LENGTH);
 
   nlohmann::json extra{{"method", "cardinal"},
                        {"closed", closed},

@@ -47,7 +47,7 @@ std::string point_text(const Point_2& p) {
 void add_case(fair::io::Gallery& gallery, const fair::Cardinal_spline_2<Kernel>& curve, const std::string& title,
               const std::string& caption, std::vector<std::pair<std::string, std::string>> rows,
               const Point_2* circle_centre = nullptr) {
-  const auto pieces = curve.bezier_pieces();
+  const auto pieces = curve.pieces();
   const fair::Feature_report infl = fair::inflections(pieces);
   fair_curves::Curve_case c;
   c.title = title;
@@ -66,7 +66,7 @@ void add_case(fair::io::Gallery& gallery, const fair::Cardinal_spline_2<Kernel>&
   }
   rows.emplace_back("curvature variation, eq. 10 (sum int |r'''|^2)", format_number(curve.approximate_energy(), 6));
   rows.emplace_back("curvature variation, eq. 5 (sum int (dk/dt)^2 dt)",
-                    format_number(curve.curvature_variation_energy(fair::Energy_measure::parameter).value, 6));
+                    format_number(curve.curvature_variation_energy(fair::Energy_measure::PARAMETER).value, 6));
   rows.emplace_back("int (dk/ds)^2 ds", format_number(fair::curvature_variation_energy(pieces).value, 6));
   rows.emplace_back("bending energy int k^2 ds", format_number(fair::bending_energy(pieces).value, 6));
   rows.emplace_back("inflections (certified interval isolation, marked i)", std::to_string(infl.count()));

@@ -124,12 +124,12 @@ void add_classic_cases(fair::io::Gallery& gallery) {
                  "by the Thomas algorithm; zero curvature at both ends (natural end conditions).",
                  false);
   add_piece_case(gallery,
-                 fair::Cubic_interpolating_spline_2<Kernel>(data, fair::Spline_end_condition::natural,
-                                                            fair::Knot_spacing::chordal)
+                 fair::Cubic_interpolating_spline_2<Kernel>(data, fair::Spline_end_condition::NATURAL,
+                                                            fair::Knot_spacing::CHORDAL)
                      .pieces(),
                  data, "C2 cubic interpolating spline, natural, chordal knots",
                  "The same spline with knot intervals equal to the chord lengths.", false);
-  add_piece_case(gallery, fair::Catmull_rom_2<Kernel>(data, false, fair::Knot_spacing::centripetal).pieces(), data,
+  add_piece_case(gallery, fair::Catmull_rom_2<Kernel>(data, false, fair::Knot_spacing::CENTRIPETAL).pieces(), data,
                  "Catmull-Rom spline, centripetal knots",
                  "Local C1 interpolation: the tangent at each point is that of the parabola through it and its two "
                  "neighbours. Curvature jumps at every data point.",
@@ -149,7 +149,7 @@ void add_classic_cases(fair::io::Gallery& gallery) {
                     "4-point subdivision (Dyn, Levin, Gregory), w = 1/16, 5 rounds",
                     "The interpolatory 4-point scheme: C1 limit, reproduces cubics.");
   add_polyline_case(gallery,
-                    fair::Four_point_subdivision_2<Kernel>(data, false, fair::Four_point_variant::relaxed).refine(5),
+                    fair::Four_point_subdivision_2<Kernel>(data, false, fair::Four_point_variant::RELAXED).refine(5),
                     data, "Relaxed 4-point subdivision, gamma = -3/128, 5 rounds",
                     "Old points move by gamma times their fourth difference: C2 limit, reproduces cubics, does not "
                     "interpolate (compare Fig. 2d of Karciauskas and Peters, which uses the relaxed scheme of "

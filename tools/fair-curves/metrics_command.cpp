@@ -165,7 +165,7 @@ template <class Piece>
 void report(const std::vector<Piece>& curve, const Metrics_options& o, const File_curve* other) {
   const fair::Fairness_report r = fair::fairness_report(curve);
   const fair::Feature_report infl = fair::inflections(curve), ext = fair::curvature_extrema(curve);
-  const fair::Quadrature_estimate cv_t = fair::curvature_variation_energy(curve, fair::Energy_measure::parameter);
+  const fair::Quadrature_estimate cv_t = fair::curvature_variation_energy(curve, fair::Energy_measure::PARAMETER);
   using fair_curves::format_number;
   std::ostringstream text; // the report: on stdout unless stdout is the JSON ("-o -")
   text << o.input << ": " << r.pieces << " pieces\n"

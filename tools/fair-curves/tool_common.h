@@ -109,8 +109,8 @@ Curve_figures make_curve_figures(const PieceRange& pieces, const Curve_case& c) 
   std::vector<fair::io::Plot_mark> plot_marks;
   for (const Curve_mark& m : c.marks) {
     auto it = std::begin(pieces);
-    fair::internal::require(m.piece < out.sampled.piece_count(), "make_curve_figures: mark on piece ", m.piece,
-                            " of a curve of ", out.sampled.piece_count(), " pieces");
+    fair::internal::require(m.piece < out.sampled.number_of_pieces(), "make_curve_figures: mark on piece ", m.piece,
+                            " of a curve of ", out.sampled.number_of_pieces(), " pieces");
     std::advance(it, static_cast<std::ptrdiff_t>(m.piece));
     typedef typename std::iterator_traits<decltype(it)>::value_type Piece;
     const auto p = it->point(typename Piece::FT(m.t));

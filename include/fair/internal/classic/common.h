@@ -29,13 +29,13 @@ namespace fair {
 /// std::sqrt) and converted exactly to FT. Everything after that is carried out in FT, so in an
 /// exact kernel the curve interpolates exactly and is exactly C1/C2 *for those rounded knots*;
 /// only the knots themselves carry a relative error of about 1e-16.
-enum class Knot_spacing { uniform, centripetal, chordal };
+enum class Knot_spacing { UNIFORM, CENTRIPETAL, CHORDAL };
 
 inline const char* to_string(Knot_spacing s) {
   switch (s) {
-    case Knot_spacing::uniform: return "uniform";
-    case Knot_spacing::centripetal: return "centripetal";
-    case Knot_spacing::chordal: return "chordal";
+    case Knot_spacing::UNIFORM: return "uniform";
+    case Knot_spacing::CENTRIPETAL: return "centripetal";
+    case Knot_spacing::CHORDAL: return "chordal";
   }
   return "?";
 }
@@ -57,7 +57,7 @@ std::vector<typename K::FT> classic_knot_intervals(const std::vector<typename K:
   std::vector<FT> h;
   h.reserve(m);
   for (std::size_t i = 0; i < m; ++i) {
-    if (spacing == Knot_spacing::uniform) {
+    if (spacing == Knot_spacing::UNIFORM) {
       h.push_back(FT(1));
       continue;
     }
@@ -66,7 +66,7 @@ std::vector<typename K::FT> classic_knot_intervals(const std::vector<typename K:
     const double dx = CGAL::to_double(p[j].x() - p[i].x());
     const double dy = CGAL::to_double(p[j].y() - p[i].y());
     const double d = std::hypot(dx, dy);
-    const double hi = (spacing == Knot_spacing::chordal) ? d : std::sqrt(d);
+    const double hi = (spacing == Knot_spacing::CHORDAL) ? d : std::sqrt(d);
     if (!(hi > 0) || !std::isfinite(hi))
       throw Invalid_input_error(message(method, ": ", to_string(spacing), " knot interval between points ", i,
                                         " and ", j, " is ", hi, " (distance ", d,

@@ -56,7 +56,7 @@ inline void add_piece_gradient(const Window<double>& win, int k, bool start, boo
 inline double piece_weight_gradient(const Problem& pb, const State& st, std::size_t i, const Window<double>& win,
                                     int k, double g[6]) {
   for (int c = 0; c < 6; ++c) g[c] = 0.0;
-  if (pb.mode != Weight_mode::automatic) return window_piece_weight(pb, st, i, win, k);
+  if (pb.mode != Weight_mode::AUTOMATIC) return window_piece_weight(pb, st, i, win, k);
   Piece_values<double> pv;
   piece_values(pb, st, i, win, k, pv);
   typedef Dual<6> D6;
@@ -157,7 +157,7 @@ inline void block_jacobian(const Problem& pb, const State& st, std::size_t i, Ja
   }
   if (end) dk2[14] += std::abs(cr2) * s2;                 // fac2 = lambda_{i+1}
   dk2[10] += 2.0 * k2 / (1.0 - lam);                      // (1 - lambda_i)^-2
-  if (pb.mode == Weight_mode::automatic) {
+  if (pb.mode == Weight_mode::AUTOMATIC) {
     for (int c = 0; c < 16; ++c) gw[c] = 0.0;
     add_piece_gradient(win, 2, start, end, w.d.data(), gw);  // w_i^-2
     for (int c = 0; c < 16; ++c) dk2[c] -= 2.0 * k2 / wc * gw[c];

@@ -308,8 +308,8 @@ inline void refinement_pass(const Problem& pb, State& st, Refinement_workspace& 
       E2[0] = pb.ex - qx[i]; E2[1] = pb.ey - qy[i];
     }
     double w = 1.0;
-    if (pb.mode == Weight_mode::fixed) w = pb.weight[i];
-    else if (pb.mode == Weight_mode::automatic) w = automatic_weight<double>(E0, X2, E2, pb.tension[i], pb.clamp);
+    if (pb.mode == Weight_mode::FIXED) w = pb.weight[i];
+    else if (pb.mode == Weight_mode::AUTOMATIC) w = automatic_weight<double>(E0, X2, E2, pb.tension[i], pb.clamp);
     neww[i] = w;
     const double A = E0[0] * E0[0] + E0[1] * E0[1];
     const double B = E0[0] * E2[0] + E0[1] * E2[1];
@@ -351,7 +351,7 @@ inline void refinement_pass(const Problem& pb, State& st) {
 /// Initial guess of Algorithm 1 (lines 2-5): lambda = t = 1/2, w = 1 (or the fixed weights).
 inline void initial_guess(const Problem& pb, State& st, Refinement_workspace& ws) {
   st.resize(pb.n);
-  if (pb.mode == Weight_mode::fixed) st.w = pb.weight;
+  if (pb.mode == Weight_mode::FIXED) st.w = pb.weight;
   solve_eq18(pb, st, ws);
 }
 

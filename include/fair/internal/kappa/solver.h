@@ -398,10 +398,10 @@ inline Solve_result finish(const Problem& pb, State& st, const Solve_settings& s
     st.w = w;
     if (!solve_eq18(pb, st)) st = backup;
     Problem frozen = pb;
-    frozen.mode = Weight_mode::fixed;
+    frozen.mode = Weight_mode::FIXED;
     frozen.weight = st.w;
     res.residual = evaluate(frozen, st, F, &res);
-    if (pb.mode == Weight_mode::automatic) {
+    if (pb.mode == Weight_mode::AUTOMATIC) {
       std::vector<double> wt(n, 1.0);
       evaluate(pb, st, F, nullptr, &wt);
       for (std::size_t i = 0; i < n; ++i) {

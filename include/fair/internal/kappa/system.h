@@ -42,7 +42,7 @@ namespace fair {
 namespace internal {
 namespace kappa {
 
-enum class Weight_mode { unit, fixed, automatic };
+enum class Weight_mode { UNIT, FIXED, AUTOMATIC };
 
 /// The (normalised) data of one solve. Block i interpolates (qx[i], qy[i]).
 struct Problem {
@@ -50,7 +50,7 @@ struct Problem {
   std::size_t n = 0;
   std::vector<double> qx, qy;
   double sx = 0, sy = 0, ex = 0, ey = 0;  // open curves: the fixed end points Q_0, Q_{m-1}
-  Weight_mode mode = Weight_mode::unit;
+  Weight_mode mode = Weight_mode::UNIT;
   std::vector<double> weight;   // mode fixed: w_i
   std::vector<double> tension;  // mode automatic: mu_i of eq. 16
   double clamp = 0.5;           // mode automatic: lower clamp of eq. 16
@@ -140,9 +140,9 @@ S automatic_weight(const S* E0, const S* P, const S* E2, double mu, double clamp
 template <class S>
 S piece_weight(const Problem& pb, std::size_t j, const S* E0, const S* P, const S* E2) {
   switch (pb.mode) {
-    case Weight_mode::fixed: return S(pb.weight[j]);
-    case Weight_mode::automatic: return automatic_weight(E0, P, E2, pb.tension[j], pb.clamp);
-    case Weight_mode::unit: break;
+    case Weight_mode::FIXED: return S(pb.weight[j]);
+    case Weight_mode::AUTOMATIC: return automatic_weight(E0, P, E2, pb.tension[j], pb.clamp);
+    case Weight_mode::UNIT: break;
   }
   return S(1.0);
 }
@@ -170,7 +170,7 @@ void piece_values(const Problem& pb, const State& st, std::size_t i, const Windo
 /// formed only when the weight depends on them).
 template <class S>
 S window_piece_weight(const Problem& pb, const State& st, std::size_t i, const Window<S>& win, int k) {
-  if (pb.mode != Weight_mode::automatic) return piece_weight<S>(pb, win.block[k], nullptr, nullptr, nullptr);
+  if (pb.mode != Weight_mode::AUTOMATIC) return piece_weight<S>(pb, win.block[k], nullptr, nullptr, nullptr);
   Piece_values<S> pv;
   piece_values(pb, st, i, win, k, pv);
   return pv.w;
