@@ -39,6 +39,7 @@
 #include <fair/internal/bernstein/exact.h>
 #include <fair/internal/bernstein/unique_root.h>
 #include <fair/internal/bernstein/vca.h>
+#include <fair/internal/common/exact_conversion.h>
 
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
@@ -81,7 +82,7 @@ public:
   /// non-point interval coefficient; Non_convergence_error if the depth cap is hit.
   template <class NT>
   explicit Bernstein_root_isolation(const Bernstein_polynomial<NT>& p)
-    : p_(internal::bernstein::to_exact_rationals(p.coefficients(), "Bernstein_root_isolation")) {
+    : p_(exact_coefficients(p.coefficients())) {
     const std::vector<CGAL::Gmpq>& E = p_.coefficients();
     bool zero = true;
     for (const CGAL::Gmpq& c : E) zero = zero && CGAL::is_zero(c);
@@ -146,6 +147,14 @@ public:
   }
 
 private:
+  template <class NT>
+  static std::vector<CGAL::Gmpq> exact_coefficients(const std::vector<NT>& c) {
+    std::vector<CGAL::Gmpq> out;
+    out.reserve(c.size());
+    for (const NT& x : c) out.push_back(internal::common::to_gmpq(x, "Bernstein_root_isolation: coefficient"));
+    return out;
+  }
+
   void isolate(std::vector<internal::bernstein::Unprotected_interval> enclosure) {
     const std::vector<CGAL::Gmpq>& E = p_.coefficients();
     {
