@@ -35,6 +35,7 @@
 
 #include <fair/Bernstein_polynomial.h>
 #include <fair/Errors.h>
+#include <fair/Unique_root.h>
 #include <fair/internal/bernstein/dyadic.h>
 #include <fair/internal/bernstein/exact.h>
 #include <fair/internal/bernstein/unique_root.h>
