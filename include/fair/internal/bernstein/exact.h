@@ -37,7 +37,7 @@ inline Q_polynomial q_derivative(const Q_polynomial& a) {
 
 /// Euclidean division a = q b + r with deg r < deg b; b must be nonzero.
 inline std::pair<Q_polynomial, Q_polynomial> q_divmod(Q_polynomial a, const Q_polynomial& b) {
-  require(!b.empty(), "q_divmod: division by the zero polynomial");
+  FAIR_ASSERT_MSG(!b.empty(), "q_divmod: division by the zero polynomial");
   trim(a);
   Q_polynomial q;
   if (a.size() >= b.size()) q.assign(a.size() - b.size() + 1, CGAL::Gmpq(0));
@@ -88,7 +88,7 @@ inline Q_polynomial q_subtract(Q_polynomial a, const Q_polynomial& b) {
 /// factor square-free, monic, and the factors pairwise coprime (factors may be constant 1).
 inline std::vector<Q_polynomial> q_square_free_factorization(Q_polynomial f) {
   trim(f);
-  require(!f.empty(), "q_square_free_factorization: zero polynomial");
+  FAIR_ASSERT_MSG(!f.empty(), "q_square_free_factorization: zero polynomial");
   std::vector<Q_polynomial> factors;
   if (f.size() == 1) return factors;
   const Q_polynomial df = q_derivative(f);

@@ -48,7 +48,7 @@ constexpr int short_dyadic_root_bits = 32;
 
 /// Bisections of an isolating interval while looking for the sign of E next to its root. One
 /// always suffices (an end that is itself a root is bisected away, or the root becomes a point);
-/// the cap only turns a bug into an error instead of a loop.
+/// the cap only turns a bug into an Internal_error instead of a loop.
 constexpr int max_sign_search_bisections = 4000;
 
 /// The Bernstein coefficients of the numerator of kappa'(t), eq. 4 of the paper, in any number
@@ -159,8 +159,7 @@ inline std::vector<Curvature_extremum> isolated_curvature_extrema(const Bernstei
         if (right == 0) iso.refine(i, J.width() / 2);
       }
     }
-    require(right != 0, "Rational_quadratic_bezier_2::curvature_extrema: internal error, no sign ",
-            "next to the root in ", iso[i]);
+    FAIR_ASSERT_MSG(right != 0, "Rational_quadratic_bezier_2::curvature_extrema: no sign next to the root in ", iso[i]);
     const int left = (I.multiplicity % 2 == 1) ? -right : right;
     if (I.multiplicity % 2 == 0) x.kind = Curvature_extremum_kind::STATIONARY;
     else x.kind = (left < 0 && right > 0) ? Curvature_extremum_kind::MAXIMUM : Curvature_extremum_kind::MINIMUM;

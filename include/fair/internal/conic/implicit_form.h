@@ -86,8 +86,7 @@ inline double eccentricity(const std::array<CGAL::Gmpq, 6>& exact, const Scaled_
   const double cd = s * be[1] * be[1] - m * be[0] * be[2];
   const double R = std::hypot(ad - cd, bd);
   const double den = eta * (ad + cd) + R;
-  require(den > 0 && R >= 0, "Rational_quadratic_bezier_2::eccentricity: internal error, R = ", R,
-          ", eta (a+c) + R = ", den);
+  FAIR_ASSERT_MSG(den > 0 && R >= 0, "Rational_quadratic_bezier_2::eccentricity: R = ", R, ", eta (a+c) + R = ", den);
   return std::sqrt(2.0 * R / den);
 }
 

@@ -62,6 +62,12 @@ namespace conic {
 
 typedef CGAL::Interval_nt<false> Rq_interval;
 
+/// Width cap of the certified eq.-7 bracket, in ulps of its upper end: the interval-certified
+/// bracket grown around Newton's iterate is usually that narrow already, so the exact fallback
+/// (Gmpq) is rarely needed; 8 would trigger it on most inputs, whose enclosures are wider than
+/// point intervals.
+constexpr double eq7_bracket_ulps = 32;
+
 /// Result of the certified unique-root solver of eq. 7.
 struct Rational_quadratic_extremum_parameter {
   double t = 0.5;       ///< double estimate of the root, t_lower <= t <= t_upper
@@ -127,10 +133,8 @@ Rational_quadratic_extremum_parameter certified_unique_root_quartic(const Rq_int
     ++out.exact_evaluations;
     return int(exact_sign(t));
   };
-  // max_ulps = 32: the interval-certified bracket grown around Newton's iterate is usually that
-  // narrow already, so the exact fallback (Gmpq, ~1 us) is rarely needed; 8 would trigger it on
-  // most inputs, whose enclosures are wider than point intervals.
-  const bernstein::Double_bracket r = bernstein::tighten_double_bracket(b, c, 5, 0.0, 1.0, -1, start, counted, 32.0);
+  const bernstein::Double_bracket r =
+    bernstein::tighten_double_bracket(b, c, 5, 0.0, 1.0, -1, start, counted, eq7_bracket_ulps);
   out.t = r.root;
   out.t_lower = r.lower;
   out.t_upper = r.upper;
@@ -195,10 +199,9 @@ rational_quadratic_extremum_parameter(double p0x, double p0y, double qx, double 
   }
   const int variations = eq7_sign_variations(sA, sAB, sBC, sC, 1);
   // Appendix A: exactly one variation. Anything else is a bug, never a property of the input.
-  require(variations == 1 && sA > 0 && sC > 0, fn,
-          ": internal error: eq. A.1 has ", variations, " sign variations (signs A ", sA, ", A+B ", sAB,
-          ", B+C ", sBC, ", C ", sC, ") for P0 = (", p0x, ", ", p0y, "), Q = (", qx, ", ", qy,
-          "), P2 = (", p2x, ", ", p2y, "), w = ", w);
+  FAIR_ASSERT_MSG(variations == 1 && sA > 0 && sC > 0, fn, ": eq. A.1 has ", variations,
+                  " sign variations (signs A ", sA, ", A+B ", sAB, ", B+C ", sBC, ", C ", sC, ") for P0 = (", p0x,
+                  ", ", p0y, "), Q = (", qx, ", ", qy, "), P2 = (", p2x, ", ", p2y, "), w = ", w);
   // The unique simple root with f(0) < 0 < f(1) exactly (the enclosures of b0, b4 may straddle
   // 0 after underflow; the shared bracket mechanism then decides by exact signs).
   Rational_quadratic_extremum_parameter out =
@@ -236,7 +239,8 @@ Rational_quadratic_extremum_parameter exact_rational_quadratic_extremum_paramete
   const int sA = -int(CGAL::sign(b[0])), sAB = -int(CGAL::sign(b[1])), sBC = int(CGAL::sign(b[3]));
   const int sC = int(CGAL::sign(b[4]));
   const int variations = eq7_sign_variations(sA, sAB, sBC, sC, 1);
-  require(variations == 1 && sA > 0 && sC > 0, fn, ": internal error: eq. A.1 has ", variations, " sign variations");
+  // Appendix A: exactly one variation. Anything else is a bug, never a property of the input.
+  FAIR_ASSERT_MSG(variations == 1 && sA > 0 && sC > 0, fn, ": eq. A.1 has ", variations, " sign variations");
   Rq_interval bi[5];
   for (int i = 0; i < 5; ++i) bi[i] = common::to_interval_nt(b[static_cast<std::size_t>(i)]);
   std::optional<std::array<CGAL::Gmpq, 5>> exact; // Gmpq construction allocates: only on demand
