@@ -3,7 +3,7 @@
 // floating types), on seeded random polynomials.
 
 #include <fair/Bernstein_polynomial.h>
-#include <fair/internal/bernstein/exact.h>
+#include <fair/internal/common/exact_conversion.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Gmpfr.h>
@@ -237,7 +237,7 @@ struct Check<Q> {
 template <>
 struct Check<Lazy> {
   static void close(const Lazy& x, const Q& ref, double) {
-    EXPECT_EQ(fair::internal::bernstein::to_exact_rational(x, "test"), ref);
+    EXPECT_EQ(fair::internal::common::to_gmpq(x), ref);
   }
 };
 template <>
@@ -303,6 +303,29 @@ TYPED_TEST(BernsteinTyped, OperationsAgreeWithExactArithmetic) {
     TestFixture::same(fair::Bernstein_polynomial<NT>::from_power_basis(a), pq, scale * 64);
     EXPECT_EQ(fair::sign_variations(p), fair::sign_variations(pq));
   }
+}
+
+// ------------------------------------------------------------------ the one exact conversion
+
+TEST(ExactConversion, EveryAcceptedNumberTypeConvertsExactly) {
+  using fair::internal::common::to_gmpq;
+  EXPECT_EQ(to_gmpq(0.1), Q(0.1)); // the dyadic rational the double stores
+  EXPECT_EQ(to_gmpq(-7), Q(-7));
+  EXPECT_EQ(to_gmpq(Q(1, 3)), Q(1, 3));
+  EXPECT_EQ(to_gmpq(Lazy(1) / 3), Q(1, 3));
+  EXPECT_EQ(to_gmpq(CGAL::Gmpfr(0.75)), Q(3, 4));
+  EXPECT_EQ(to_gmpq(I(0.125)), Q(1, 8));
+  boost::multiprecision::mpq_rational third(1);
+  third /= 3;
+  EXPECT_EQ(to_gmpq(third), Q(1, 3));
+  EXPECT_EQ(fair::internal::common::from_gmpq<boost::multiprecision::mpq_rational>(Q(1, 3)), third);
+#ifdef CGAL_USE_GMPXX
+  EXPECT_EQ(to_gmpq(mpq_class(2, 5)), Q(2, 5));
+#endif
+  EXPECT_THROW(to_gmpq(std::nan("")), fair::Precondition_error);
+  EXPECT_THROW(to_gmpq(HUGE_VAL), fair::Precondition_error);
+  EXPECT_THROW(to_gmpq(CGAL::Gmpfr(std::nan(""))), fair::Precondition_error);
+  EXPECT_THROW(to_gmpq(I(0, 1)), fair::Precondition_error);
 }
 
 } // namespace

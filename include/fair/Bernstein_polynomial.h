@@ -21,6 +21,7 @@
 #define FAIR_BERNSTEIN_POLYNOMIAL_H
 
 #include <fair/Errors.h>
+#include <fair/Sign_variation_count.h>
 #include <fair/internal/bernstein/sign.h>
 
 #include <CGAL/number_utils.h>

@@ -35,10 +35,12 @@
 
 #include <fair/Bernstein_polynomial.h>
 #include <fair/Errors.h>
+#include <fair/Unique_root.h>
 #include <fair/internal/bernstein/dyadic.h>
 #include <fair/internal/bernstein/exact.h>
 #include <fair/internal/bernstein/unique_root.h>
 #include <fair/internal/bernstein/vca.h>
+#include <fair/internal/common/exact_conversion.h>
 
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
@@ -81,7 +83,7 @@ public:
   /// non-point interval coefficient; Non_convergence_error if the depth cap is hit.
   template <class NT>
   explicit Bernstein_root_isolation(const Bernstein_polynomial<NT>& p)
-    : p_(internal::bernstein::to_exact_rationals(p.coefficients(), "Bernstein_root_isolation")) {
+    : p_(exact_coefficients(p.coefficients())) {
     const std::vector<CGAL::Gmpq>& E = p_.coefficients();
     bool zero = true;
     for (const CGAL::Gmpq& c : E) zero = zero && CGAL::is_zero(c);
@@ -115,7 +117,8 @@ public:
                       intervals_.size(), " roots)");
     internal::require(width > 0, "Bernstein_root_isolation::refine: width ", width, " must be positive");
     for (int step = 0; intervals_[i].upper - intervals_[i].lower > width; ++step) {
-      if (step > 100000) throw Non_convergence_error("Bernstein_root_isolation::refine: bisection cap", 100000, 0.0);
+      if (step > max_refine_bisections)
+        throw Non_convergence_error("Bernstein_root_isolation::refine: bisection cap", max_refine_bisections, 0.0);
       bisect(i);
     }
   }
@@ -134,7 +137,9 @@ public:
     if (I.is_point()) return L;
     if (CGAL::Gmpq(L) == I.lower && CGAL::Gmpq(H) == I.upper && H <= std::nextafter(L, 2.0)) return L;
     for (int step = 0; !I.is_point() && CGAL::to_double(I.lower) != CGAL::to_double(I.upper); ++step) {
-      if (step > 5000) throw Non_convergence_error("Bernstein_root_isolation::root_approximation: bisection cap", 5000, 0.0);
+      if (step > max_approximation_bisections)
+        throw Non_convergence_error("Bernstein_root_isolation::root_approximation: bisection cap",
+                                    max_approximation_bisections, 0.0);
       bisect(i);
     }
     return CGAL::to_double(I.lower);
@@ -146,11 +151,19 @@ public:
   }
 
 private:
+  template <class NT>
+  static std::vector<CGAL::Gmpq> exact_coefficients(const std::vector<NT>& c) {
+    std::vector<CGAL::Gmpq> out;
+    out.reserve(c.size());
+    for (const NT& x : c) out.push_back(internal::common::to_gmpq(x, "Bernstein_root_isolation: coefficient"));
+    return out;
+  }
+
   void isolate(std::vector<internal::bernstein::Unprotected_interval> enclosure) {
     const std::vector<CGAL::Gmpq>& E = p_.coefficients();
     {
       internal::bernstein::Vca_isolator vca(E, true, std::move(enclosure));
-      if (vca.run(30)) return accept(E, vca.leaves());
+      if (vca.run(square_free_depth)) return accept(E, vca.leaves());
     }
     used_square_free_ = true;
     const std::vector<internal::bernstein::Q_polynomial> factors =
@@ -175,9 +188,8 @@ private:
         if (factors[k].size() <= 1) continue;
         if (vanishes_in(factors[k], leaf)) leaf.multiplicity = static_cast<int>(k + 1);
       }
-      if (leaf.multiplicity == 0)
-        throw Error(internal::message("Bernstein_root_isolation: internal error, no square-free factor of ", p_,
-                                      " vanishes in [", leaf.lower, ", ", leaf.upper, "]"));
+      FAIR_ASSERT_MSG(leaf.multiplicity != 0, "Bernstein_root_isolation: no square-free factor of ", p_,
+                      " vanishes in [", leaf.lower, ", ", leaf.upper, "]");
     }
     accept(S, leaves);
   }
@@ -311,7 +323,16 @@ private:
     }
   }
 
+  // Bisection depth after which multiple roots are suspected and the square-free factorisation
+  // runs (roots closer than 2^-30, about 1e-9, are rare for distinct roots).
+  static constexpr int square_free_depth = 30;
+  // Subdivision depth cap of a square-free polynomial (roots closer than 2^-4000).
   static constexpr int hard_cap = 4000;
+  // Bisections of refine(): a requested width down to 2^-100000.
+  static constexpr int max_refine_bisections = 100000;
+  // Bisections of root_approximation() after the double tightening: the ends reach the same
+  // double after at most ~1100 halvings of [0,1] (subnormals included); the cap is a safety net.
+  static constexpr int max_approximation_bisections = 5000;
 
   Bernstein_polynomial<CGAL::Gmpq> p_;
   std::vector<Isolating_interval> intervals_;

@@ -36,6 +36,7 @@
 
 #include <fair/Bezier_2.h>
 #include <fair/Errors.h>
+#include <fair/Knot_spacing.h>
 #include <fair/internal/classic/common.h>
 #include <fair/internal/classic/tridiagonal.h>
 #include <fair/internal/common/input_checks.h>

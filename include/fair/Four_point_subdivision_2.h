@@ -70,6 +70,8 @@ public:
   static constexpr std::size_t max_rounds = 20;
   /// The largest polyline refine() produces.
   static constexpr std::size_t max_points = std::size_t(1) << 24;
+  /// (sqrt(5) - 1) / 8, the upper end of the tension range in which the DLG scheme is C1 (DLG 1987).
+  static constexpr double max_c1_tension = 0.15450849718747373;
 
   /// The interpolatory DLG scheme with tension w (default 1/16). Throws Invalid_input_error for
   /// too few points (4 open, 3 closed), non-finite coordinates or coincident consecutive points,
@@ -80,7 +82,7 @@ public:
       gamma_(0) {
     check();
     const double wd = CGAL::to_double(w);
-    internal::require(w > FT(0) && wd < 0.15450849718747373,
+    internal::require(w > FT(0) && wd < max_c1_tension,
                       "Four_point_subdivision_2: tension w = ", wd,
                       " is outside the C1 range (0, (sqrt(5)-1)/8 = 0.1545...)");
   }

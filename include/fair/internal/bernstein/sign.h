@@ -8,6 +8,7 @@
 #define FAIR_INTERNAL_BERNSTEIN_SIGN_H
 
 #include <fair/Errors.h>
+#include <fair/Sign_variation_count.h>
 
 #include <CGAL/Uncertain.h>
 #include <CGAL/enum.h>
@@ -19,25 +20,6 @@
 #include <vector>
 
 namespace fair {
-
-/// Bounds on the number of sign variations of a coefficient sequence whose signs may be
-/// uncertain (CGAL::Interval_nt). For exact and floating NT, lower == upper always.
-/// An uncertain coefficient may take any sign (including 0), so `lower` counts it as zero and
-/// `upper` lets it take whichever sign maximises the count.
-struct Sign_variation_count {
-  int lower = 0;
-  int upper = 0;
-  /// The count is known. It may be known even when some signs are not: (?) gives 0..0, while
-  /// (+, ?) gives 0..1.
-  bool certain() const { return lower == upper; }
-  /// The count; \throws Precondition_error if it is not certain.
-  int count() const {
-    internal::require(certain(), "Sign_variation_count::count: the sign variation count is uncertain, between ",
-                      lower, " and ", upper);
-    return lower;
-  }
-};
-
 namespace internal {
 namespace bernstein {
 

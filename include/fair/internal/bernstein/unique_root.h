@@ -26,6 +26,7 @@
 #define FAIR_INTERNAL_BERNSTEIN_UNIQUE_ROOT_H
 
 #include <fair/Errors.h>
+#include <fair/Unique_root.h>
 #include <fair/internal/bernstein/dyadic.h>
 
 #include <CGAL/FPU.h>
@@ -40,26 +41,29 @@
 #include <vector>
 
 namespace fair {
-
-/// Result of certified_unique_root.
-struct Unique_root {
-  enum Status {
-    UNIQUE_ROOT, ///< exactly one distinct root in [0,1]; it lies in [lower, upper]
-    NO_ROOT,     ///< certainly no root in [0,1]
-    UNDECIDED    ///< the coefficients do not prove 0 or 1 roots: use Bernstein_root_isolation
-  };
-  Status status = UNDECIDED;
-  double root = 0;   ///< for UNIQUE_ROOT: a point of [lower, upper]
-  double lower = 0;  ///< certified bracket (lower == upper == root when the root is exact)
-  double upper = 0;
-  int sign_variations = 0;          ///< of the coefficient sequence, zeros skipped
-  bool used_exact_fallback = false; ///< whether some sign needed exact Gmpq evaluation
-};
-
 namespace internal {
 namespace bernstein {
 
+/// Coefficient count up to which the work arrays live on the stack (no heap allocation).
 constexpr std::size_t unique_root_stack_coefficients = 32;
+
+/// Newton iterations of tighten_double_bracket: from the control polygon's crossing a handful
+/// suffice (quadratic convergence, a bisection step whenever Newton leaves the bracket); the cap
+/// only bounds an iteration that wanders in the rounding noise.
+constexpr int max_newton_iterations = 100;
+
+/// Newton stops once |p(t)| is below this fraction of n eps max|b_i| (the rounding noise of a
+/// double de Casteljau evaluation of degree n - 1 is a small multiple of that bound).
+constexpr double newton_noise_fraction = 0.25;
+
+/// Growth factor of the steps that grow the certified bracket from one ulp: slower than
+/// doubling, so the bracket rarely overshoots 8 ulps and needs exact bisection.
+constexpr double bracket_growth_factor = 1.5;
+
+/// Steps of bracket growth and of bisection: 1.5^k times the smallest subnormal reaches 1 after
+/// fewer than 1840 steps, and halving [0, 1] reaches adjacent doubles after fewer than 1100, so
+/// the cap is never the reason a loop ends.
+constexpr int max_bracket_steps = 2200;
 
 /// Interval enclosure of p(x) for interval coefficients c; needs rounding protection.
 inline CGAL::Interval_nt<false> interval_de_casteljau(const CGAL::Interval_nt<false>* c, std::size_t m, double x,
@@ -130,8 +134,8 @@ Double_bracket tighten_double_bracket(const CGAL::Interval_nt<false>* c, const d
   double lo = L, hi = H;
   double noise = 0;
   for (std::size_t i = 0; i < m; ++i) noise = std::max(noise, std::fabs(approx[i]));
-  noise *= 0.25 * double(m) * std::numeric_limits<double>::epsilon();
-  for (int it = 0; it < 100; ++it) {
+  noise *= newton_noise_fraction * double(m) * std::numeric_limits<double>::epsilon();
+  for (int it = 0; it < max_newton_iterations; ++it) {
     double f, df;
     double_de_casteljau(approx, m, t, wd, f, df);
     if (std::fabs(f) <= noise) break;
@@ -162,13 +166,13 @@ Double_bracket tighten_double_bracket(const CGAL::Interval_nt<false>* c, const d
   };
   int s;
   if (interval_sign(t, s) && classify(t, s)) return out;
-  // Grow a certified end on each side of t by steps growing from one ulp by a factor 1.5
-  // (slower than doubling, so the bracket rarely overshoots 8 ulps and needs exact bisection),
-  // interval signs only; reaching L or H ends the search (their sides are known).
+  // Grow a certified end on each side of t by steps growing from one ulp by
+  // bracket_growth_factor, interval signs only; reaching L or H ends the search (their sides
+  // are known).
   for (int side = 0; side < 2; ++side) {
     double d = std::fabs(t) * std::numeric_limits<double>::epsilon();
     if (d < std::numeric_limits<double>::denorm_min()) d = std::numeric_limits<double>::denorm_min();
-    for (int k = 0; k < 2200; ++k, d *= 1.5) {
+    for (int k = 0; k < max_bracket_steps; ++k, d *= bracket_growth_factor) {
       if (side == 0 ? A >= t : B <= t) break; // this side is certified already
       const double x = side == 0 ? t - d : t + d;
       if (side == 0 ? x <= A : x >= B) break;
@@ -177,7 +181,7 @@ Double_bracket tighten_double_bracket(const CGAL::Interval_nt<false>* c, const d
   }
   // Shrink to at most max_ulps ulps by bisection, exact fallback where the interval is
   // inconclusive.
-  for (int k = 0; k < 2200; ++k) {
+  for (int k = 0; k < max_bracket_steps; ++k) {
     const double ulp = std::nextafter(B, std::numeric_limits<double>::infinity()) - B;
     if (B - A <= max_ulps * ulp) break;
     const double mid = A + (B - A) / 2;

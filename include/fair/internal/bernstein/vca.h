@@ -182,7 +182,9 @@ public:
 
 private:
   // A subdivision node [lo, hi]. Its end points are dyadic k / 2^depth: they are kept as exact
-  // doubles while depth <= 52 (cheap), and as Gmpq below.
+  // doubles while depth <= max_double_node_depth (cheap), and as Gmpq below.
+  // k / 2^depth in [0,1] is an exact double while depth <= 52 (53-bit significand).
+  static constexpr int max_double_node_depth = 52;
   struct Node {
     double lo_d = 0, hi_d = 1;
     CGAL::Gmpq lo_q, hi_q;
@@ -197,7 +199,7 @@ private:
     // Halves this node: it becomes [lo, mid] and `right` becomes [mid, hi].
     void bisect(Node& right) {
       right.depth = ++depth;
-      if (!rational && depth <= 52) {
+      if (!rational && depth <= max_double_node_depth) {
         const double mid = 0.5 * (lo_d + hi_d); // exact: both are multiples of 2^-(depth-1)
         right.lo_d = mid;
         right.hi_d = hi_d;

@@ -1,16 +1,22 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// Exact conversions used by the conic pieces: the exact rational value of a kernel number
-// (double, CGAL::Gmpq, mpq_class, CGAL::Lazy_exact_nt<...>) as a CGAL::Gmpq, and the exact
-// square root of a rational when it is rational. The certified root isolation of
-// Rational_quadratic_bezier_2 always runs on the exact rational values of the inputs, whatever
-// the kernel: a double coordinate is the dyadic rational it stores.
+// Exact conversions of the number types the library accepts: the exact rational value of a
+// kernel number or polynomial coefficient as a CGAL::Gmpq (to_gmpq), and back (from_gmpq), and
+// the exact square root of a rational when it is rational. The certified algorithms (root
+// isolation, curvature extrema, kappa certificates, fairness metrics) run on the exact rational
+// values of the inputs, whatever the kernel: a double coordinate is the dyadic rational it
+// stores, and so are a CGAL::Gmpfr and a point CGAL::Interval_nt.
+//
+// The one gmpxx test is CGAL_USE_GMPXX: CGAL itself uses mpq_class (EPECK's exact type, and
+// <CGAL/mpq_class.h>) exactly when it is defined; otherwise EPECK's exact type is CGAL::Gmpq or
+// boost::multiprecision's GMP rational (CGAL 5.5 picks by configuration), both covered here.
 
 #ifndef FAIR_INTERNAL_COMMON_EXACT_CONVERSION_H
 #define FAIR_INTERNAL_COMMON_EXACT_CONVERSION_H
 
 #include <fair/Errors.h>
 
+#include <CGAL/Gmpfr.h>
 #include <CGAL/Gmpq.h>
 #include <CGAL/Gmpz.h>
 #include <CGAL/Interval_nt.h>
@@ -20,6 +26,8 @@
 #include <CGAL/mpq_class.h>
 #endif
 
+#include <boost/multiprecision/gmp.hpp>
+
 #include <cmath>
 #include <type_traits>
 #include <gmp.h>
@@ -28,18 +36,42 @@ namespace fair {
 namespace internal {
 namespace common {
 
+// Every overload takes the name of the calling function for the error message.
+
 /// The exact rational value of x. \throws Precondition_error for a non-finite double.
-inline CGAL::Gmpq to_gmpq(double x) {
-  require(std::isfinite(x), "to_gmpq: non-finite value ", x);
+inline CGAL::Gmpq to_gmpq(double x, const char* context = "to_gmpq") {
+  require(std::isfinite(x), context, ": the value ", x, " is not finite");
   return CGAL::Gmpq(x);
 }
-inline CGAL::Gmpq to_gmpq(const CGAL::Gmpq& x) { return x; }
+inline CGAL::Gmpq to_gmpq(int x, const char* = "to_gmpq") { return CGAL::Gmpq(x); }
+inline CGAL::Gmpq to_gmpq(const CGAL::Gmpq& x, const char* = "to_gmpq") { return x; }
+/// \throws Precondition_error for NaN or an infinity.
+inline CGAL::Gmpq to_gmpq(const CGAL::Gmpfr& x, const char* context = "to_gmpq") {
+  require(x.is_number(), context, ": the value ", x, " is not finite");
+  return CGAL::Gmpq(x);
+}
+/// A point interval [x, x] is the number x. \throws Precondition_error for a wider interval
+/// (certified algorithms are about one number, not a range) or a non-finite end.
+template <bool Protected>
+CGAL::Gmpq to_gmpq(const CGAL::Interval_nt<Protected>& x, const char* context = "to_gmpq") {
+  require(x.inf() == x.sup(), context, ": the interval [", x.inf(), ", ", x.sup(),
+          "] is not a single number; certified results are about one exact number, so pass point "
+          "intervals or exact values");
+  return to_gmpq(x.inf(), context);
+}
+/// boost::multiprecision's GMP rational (an exact type of EPECK, see the file comment).
+template <boost::multiprecision::expression_template_option E>
+CGAL::Gmpq to_gmpq(const boost::multiprecision::number<boost::multiprecision::gmp_rational, E>& x,
+                   const char* = "to_gmpq") {
+  return CGAL::Gmpq(x.backend().data());
+}
 #ifdef CGAL_USE_GMPXX
-inline CGAL::Gmpq to_gmpq(const mpq_class& x) { return CGAL::Gmpq(x.get_mpq_t()); }
+inline CGAL::Gmpq to_gmpq(const mpq_class& x, const char* = "to_gmpq") { return CGAL::Gmpq(x.get_mpq_t()); }
 #endif
+/// Lazy exact numbers (EPECK's FT): the exact value, computed on demand.
 template <class ET>
-CGAL::Gmpq to_gmpq(const CGAL::Lazy_exact_nt<ET>& x) {
-  return to_gmpq(x.exact());
+CGAL::Gmpq to_gmpq(const CGAL::Lazy_exact_nt<ET>& x, const char* context = "to_gmpq") {
+  return to_gmpq(x.exact(), context);
 }
 
 /// Converts an exact rational back to the number type NT (exact unless NT is a floating type,
@@ -55,6 +87,14 @@ struct From_gmpq<double> {
 template <class ET>
 struct From_gmpq<CGAL::Lazy_exact_nt<ET>> {
   CGAL::Lazy_exact_nt<ET> operator()(const CGAL::Gmpq& q) const { return CGAL::Lazy_exact_nt<ET>(From_gmpq<ET>()(q)); }
+};
+template <boost::multiprecision::expression_template_option E>
+struct From_gmpq<boost::multiprecision::number<boost::multiprecision::gmp_rational, E>> {
+  boost::multiprecision::number<boost::multiprecision::gmp_rational, E> operator()(const CGAL::Gmpq& q) const {
+    boost::multiprecision::number<boost::multiprecision::gmp_rational, E> r;
+    mpq_set(r.backend().data(), q.mpq());
+    return r;
+  }
 };
 #ifdef CGAL_USE_GMPXX
 template <>

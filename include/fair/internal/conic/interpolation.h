@@ -62,6 +62,12 @@ namespace conic {
 
 typedef CGAL::Interval_nt<false> Rq_interval;
 
+/// Width cap of the certified eq.-7 bracket, in ulps of its upper end: the interval-certified
+/// bracket grown around Newton's iterate is usually that narrow already, so the exact fallback
+/// (Gmpq) is rarely needed; 8 would trigger it on most inputs, whose enclosures are wider than
+/// point intervals.
+constexpr double eq7_bracket_ulps = 32;
+
 /// Result of the certified unique-root solver of eq. 7.
 struct Rational_quadratic_extremum_parameter {
   double t = 0.5;       ///< double estimate of the root, t_lower <= t <= t_upper
@@ -84,17 +90,16 @@ inline int eq7_sign_variations(int sign_A, int sign_AB, int sign_BC, int sign_C,
   return count;
 }
 
-/// Exact Bernstein coefficients of eq. 7 (eq. A.1) from exact coordinates.
-inline std::array<CGAL::Gmpq, 5> eq7_coefficients_exact(const CGAL::Gmpq& p0x, const CGAL::Gmpq& p0y,
-                                                        const CGAL::Gmpq& qx, const CGAL::Gmpq& qy,
-                                                        const CGAL::Gmpq& p2x, const CGAL::Gmpq& p2y,
-                                                        const CGAL::Gmpq& w) {
-  const CGAL::Gmpq v0x = p0x - qx, v0y = p0y - qy, v2x = p2x - qx, v2y = p2y - qy;
-  const CGAL::Gmpq sx = v0x + v2x, sy = v0y + v2y;
-  const CGAL::Gmpq A = v0x * v0x + v0y * v0y, C = v2x * v2x + v2y * v2y;
-  const CGAL::Gmpq AB = v0x * sx + v0y * sy, BC = v2x * sx + v2y * sy; // A+B, B+C
-  const CGAL::Gmpq quarter(1, 4);
-  return {{-(w * A), -(AB * quarter), CGAL::Gmpq(0), BC * quarter, w * C}};
+/// Bernstein coefficients of eq. 7 (eq. A.1) in any number type (exact for an exact one).
+template <class NT>
+std::array<NT, 5> eq7_coefficients(const NT& p0x, const NT& p0y, const NT& qx, const NT& qy, const NT& p2x,
+                                   const NT& p2y, const NT& w) {
+  const NT v0x = p0x - qx, v0y = p0y - qy, v2x = p2x - qx, v2y = p2y - qy;
+  const NT sx = v0x + v2x, sy = v0y + v2y;
+  const NT A = v0x * v0x + v0y * v0y, C = v2x * v2x + v2y * v2y;
+  const NT AB = v0x * sx + v0y * sy, BC = v2x * sx + v2y * sy; // A+B, B+C
+  const NT quarter = NT(1) / NT(4);
+  return {{-(w * A), -(AB * quarter), NT(0), BC * quarter, w * C}};
 }
 
 /// f(t) exactly, de Casteljau on Gmpq coefficients.
@@ -128,10 +133,8 @@ Rational_quadratic_extremum_parameter certified_unique_root_quartic(const Rq_int
     ++out.exact_evaluations;
     return int(exact_sign(t));
   };
-  // max_ulps = 32: the interval-certified bracket grown around Newton's iterate is usually that
-  // narrow already, so the exact fallback (Gmpq, ~1 us) is rarely needed; 8 would trigger it on
-  // most inputs, whose enclosures are wider than point intervals.
-  const bernstein::Double_bracket r = bernstein::tighten_double_bracket(b, c, 5, 0.0, 1.0, -1, start, counted, 32.0);
+  const bernstein::Double_bracket r =
+    bernstein::tighten_double_bracket(b, c, 5, 0.0, 1.0, -1, start, counted, eq7_bracket_ulps);
   out.t = r.root;
   out.t_lower = r.lower;
   out.t_upper = r.upper;
@@ -180,7 +183,7 @@ rational_quadratic_extremum_parameter(double p0x, double p0y, double qx, double 
   std::optional<std::array<CGAL::Gmpq, 5>> exact; // Gmpq construction allocates: only on demand
   auto exact_coefficients = [&]() -> const std::array<CGAL::Gmpq, 5>& {
     if (!exact)
-      exact.emplace(eq7_coefficients_exact(CGAL::Gmpq(p0x), CGAL::Gmpq(p0y), CGAL::Gmpq(qx), CGAL::Gmpq(qy),
+      exact.emplace(eq7_coefficients<CGAL::Gmpq>(CGAL::Gmpq(p0x), CGAL::Gmpq(p0y), CGAL::Gmpq(qx), CGAL::Gmpq(qy),
                                            CGAL::Gmpq(p2x), CGAL::Gmpq(p2y), CGAL::Gmpq(w)));
     return *exact;
   };
@@ -196,15 +199,58 @@ rational_quadratic_extremum_parameter(double p0x, double p0y, double qx, double 
   }
   const int variations = eq7_sign_variations(sA, sAB, sBC, sC, 1);
   // Appendix A: exactly one variation. Anything else is a bug, never a property of the input.
-  require(variations == 1 && sA > 0 && sC > 0, fn,
-          ": internal error: eq. A.1 has ", variations, " sign variations (signs A ", sA, ", A+B ", sAB,
-          ", B+C ", sBC, ", C ", sC, ") for P0 = (", p0x, ", ", p0y, "), Q = (", qx, ", ", qy,
-          "), P2 = (", p2x, ", ", p2y, "), w = ", w);
+  FAIR_ASSERT_MSG(variations == 1 && sA > 0 && sC > 0, fn, ": eq. A.1 has ", variations,
+                  " sign variations (signs A ", sA, ", A+B ", sAB, ", B+C ", sBC, ", C ", sC, ") for P0 = (", p0x,
+                  ", ", p0y, "), Q = (", qx, ", ", qy, "), P2 = (", p2x, ", ", p2y, "), w = ", w);
   // The unique simple root with f(0) < 0 < f(1) exactly (the enclosures of b0, b4 may straddle
   // 0 after underflow; the shared bracket mechanism then decides by exact signs).
   Rational_quadratic_extremum_parameter out =
     certified_unique_root_quartic(b, [&](double t) { return quartic_sign_exact(exact_coefficients(), t); });
   out.exact_evaluations += extra;
+  out.sign_variations = variations;
+  return out;
+}
+
+/// The input checks of eq. 7 in a non-floating kernel (rational_quadratic_extremum_parameter
+/// checks the double inputs itself). \throws Precondition_error if a coordinate or w is not
+/// finite, w <= 0, P0 == Q or P2 == Q.
+template <class Point_2, class FT>
+void check_eq7_input(const Point_2& p0, const Point_2& q, const Point_2& p2, const FT& w, const char* fn) {
+  const char* names[3] = {"P0", "Q", "P2"};
+  const Point_2* pts[3] = {&p0, &q, &p2};
+  for (int i = 0; i < 3; ++i) {
+    const double x = CGAL::to_double(pts[i]->x()), y = CGAL::to_double(pts[i]->y());
+    require(std::isfinite(x), fn, ": ", names[i], " = ", x, " is not finite");
+    require(std::isfinite(y), fn, ": ", names[i], " = ", y, " is not finite");
+  }
+  require(std::isfinite(CGAL::to_double(w)) && w > FT(0), fn, ": the weight must be finite and > 0, got w = ",
+          CGAL::to_double(w));
+  require(p0 != q, fn, ": P0 == Q = (", CGAL::to_double(q.x()), ", ", CGAL::to_double(q.y()), ")");
+  require(p2 != q, fn, ": P2 == Q = (", CGAL::to_double(q.x()), ", ", CGAL::to_double(q.y()), ")");
+}
+
+/// eq. 7 / Appendix A in a non-floating kernel, on the exact eq.-A.1 coefficients `b` (FT):
+/// the coefficient signs are exact, and the bracket is certified by interval evaluation of
+/// enclosures of the exact coefficients, exact (Gmpq) evaluation where those cannot decide.
+template <class FT>
+Rational_quadratic_extremum_parameter exact_rational_quadratic_extremum_parameter(const std::array<FT, 5>& b,
+                                                                                  const char* fn) {
+  // Appendix A, exactly: the signs of A, A+B, B+C, C (w > 0 checked by check_eq7_input).
+  const int sA = -int(CGAL::sign(b[0])), sAB = -int(CGAL::sign(b[1])), sBC = int(CGAL::sign(b[3]));
+  const int sC = int(CGAL::sign(b[4]));
+  const int variations = eq7_sign_variations(sA, sAB, sBC, sC, 1);
+  // Appendix A: exactly one variation. Anything else is a bug, never a property of the input.
+  FAIR_ASSERT_MSG(variations == 1 && sA > 0 && sC > 0, fn, ": eq. A.1 has ", variations, " sign variations");
+  Rq_interval bi[5];
+  for (int i = 0; i < 5; ++i) bi[i] = common::to_interval_nt(b[static_cast<std::size_t>(i)]);
+  std::optional<std::array<CGAL::Gmpq, 5>> exact; // Gmpq construction allocates: only on demand
+  Rational_quadratic_extremum_parameter out = certified_unique_root_quartic(bi, [&](double t) {
+    if (!exact) {
+      exact.emplace();
+      for (std::size_t i = 0; i < 5; ++i) (*exact)[i] = common::to_gmpq(b[i]);
+    }
+    return quartic_sign_exact(*exact, t);
+  });
   out.sign_variations = variations;
   return out;
 }

@@ -23,11 +23,9 @@
 #define FAIR_INTERNAL_CONIC_SCALED_H
 
 #include <fair/Errors.h>
+#include <fair/internal/common/exact_conversion.h>
 
-#include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
-#include <CGAL/Interval_nt.h>
-#include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -84,22 +82,6 @@ inline Scaled_double scaled_from_gmpq(const CGAL::Gmpq& q) {
   return r;
 }
 
-/// Exact orientation of three double points: an interval filter (directed rounding, so an
-/// underflowing or overflowing product widens the interval instead of faking a sign), then the
-/// exact determinant over CGAL::Gmpq of the exact dyadic values when the filter fails.
-inline CGAL::Orientation exact_orientation_of_doubles(double x0, double y0, double x1, double y1, double x2,
-                                                      double y2) {
-  {
-    typedef CGAL::Interval_nt<false> I;
-    CGAL::Protect_FPU_rounding<true> guard;
-    const I d = (I(x1) - I(x0)) * (I(y2) - I(y0)) - (I(y1) - I(y0)) * (I(x2) - I(x0));
-    if (d.inf() > 0) return CGAL::LEFT_TURN;
-    if (d.sup() < 0) return CGAL::RIGHT_TURN;
-  }
-  const CGAL::Gmpq X0(x0), Y0(y0), X1(x1), Y1(y1), X2(x2), Y2(y2);
-  return CGAL::sign((X1 - X0) * (Y2 - Y0) - (Y1 - Y0) * (X2 - X0));
-}
-
 /// The edge vectors of a control triangle scaled by an exact power of two:
 /// e[0] = (P1-P0) 2^-k, e[1] = (P2-P1) 2^-k, e[2] = (P2-P0) 2^-k (each rounded once, as the plain
 /// double differences), largest component in [1,2). `degenerate` is true iff all are zero.
@@ -136,6 +118,53 @@ struct Scaled_edges {
   }
   double squared_length(int i) const { return ex[i] * ex[i] + ey[i] * ey[i]; }
 };
+
+/// Below this |det(e1, e2)| of the scaled edges (largest component in [1,2)) the double
+/// determinant may have lost a quarter of its 53 bits or more to cancellation: D is then
+/// recomputed from the exact inputs.
+constexpr double area_cancellation_threshold = 0x1p-40;
+
+/// D = det(P1-P0, P2-P1) as an unscaled Scaled_double: from the scaled edges `e` of p0, p1, p2,
+/// or from the exact rational values of the points when the double determinant cancels.
+template <class Point_2>
+Scaled_double twice_signed_area(const Scaled_edges& e, const Point_2& p0, const Point_2& p1, const Point_2& p2) {
+  const double ds = e.ex[0] * e.ey[1] - e.ey[0] * e.ex[1];
+  if (std::abs(ds) >= area_cancellation_threshold) {
+    Scaled_double area = Scaled_double::of(ds);
+    area.e += 2L * e.k;
+    return area;
+  }
+  using common::to_gmpq;
+  const CGAL::Gmpq x0 = to_gmpq(p0.x()), y0 = to_gmpq(p0.y()), x1 = to_gmpq(p1.x()), y1 = to_gmpq(p1.y());
+  const CGAL::Gmpq x2 = to_gmpq(p2.x()), y2 = to_gmpq(p2.y());
+  return scaled_from_gmpq((x1 - x0) * (y2 - y1) - (y1 - y0) * (x2 - x1));
+}
+
+/// eq. 5, signed, on the scaled edge i (0: P1-P0, 1: P2-P1): D / (2 w^2 |e_i|^3), rescaled
+/// exactly; `area` is D unscaled. \throws Precondition_error (prefixed by `what`) if the value is
+/// not representable in double.
+inline double end_curvature(const Scaled_double& area, const Scaled_edges& e, double w, int i, const char* what) {
+  const double l = std::hypot(e.ex[i], e.ey[i]); // in [1, 2 sqrt 2) or exactly scaled
+  Scaled_double r = area, wq = Scaled_double::of(w), lq = Scaled_double::of(l);
+  r /= wq;
+  r /= wq;
+  r /= lq;
+  r /= lq;
+  r /= lq;
+  r.e -= 1L + 3L * e.k;
+  return r.to_double(what);
+}
+
+/// eq. 15 squared, |P2-P0|^2 / (2 (|P0-P1|^2 + |P2-P1|^2)), for double points, from the scaled
+/// edges (no overflow or underflow at any scale). \throws Precondition_error if P0 == P1 == P2.
+inline double minimum_eccentricity_weight_squared(double x0, double y0, double x1, double y1, double x2, double y2) {
+  const double x[3] = {x0, x1, x2}, y[3] = {y0, y1, y2};
+  const Scaled_edges e(x, y);
+  const double den = 2.0 * (e.squared_length(0) + e.squared_length(1));
+  require(!e.degenerate && den > 0 && std::isfinite(den),
+          "minimum_eccentricity_weight_squared (eq. 15): P0 == P1 == P2 = (", x[1], ", ", y[1], ")");
+  return e.squared_length(2) / den;
+}
 
 } // namespace conic
 } // namespace internal

@@ -269,7 +269,7 @@ inline int eq4_filtered_extremum(const CGAL::Interval_nt<false>* xy, const CGAL:
                                  Curvature_extremum_kind& kind, double& lower, double& upper, double& distance) {
   typedef CGAL::Interval_nt<false> I;
   CGAL::Protect_FPU_rounding<true> guard;
-  const std::vector<I> c = eq4_coefficients<I>(xy[0], xy[1], xy[2], xy[3], xy[4], xy[5], w);
+  const std::vector<I> c = conic::eq4_coefficients<I>(xy[0], xy[1], xy[2], xy[3], xy[4], xy[5], w);
   int sign[5], variations = 0;
   for (int i = 0; i < 5; ++i) {
     const I& v = c[static_cast<std::size_t>(i)];

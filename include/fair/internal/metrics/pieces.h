@@ -14,7 +14,7 @@
 #include <fair/Bernstein_polynomial.h>
 #include <fair/Bezier_2.h>
 #include <fair/Errors.h>
-#include <fair/internal/bernstein/exact.h>
+#include <fair/internal/common/exact_conversion.h>
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Lazy_exact_nt.h>
@@ -55,7 +55,7 @@ template <class ET>
 struct Exact_rational_of<CGAL::Lazy_exact_nt<ET>> {
   typedef CGAL::Gmpq Type;
   static const bool exact = true;
-  static Type convert(const CGAL::Lazy_exact_nt<ET>& x) { return bernstein::exact_value_to_gmpq(CGAL::exact(x)); }
+  static Type convert(const CGAL::Lazy_exact_nt<ET>& x) { return common::to_gmpq(x); }
 };
 
 // ---------------------------------------------------------------- classification
