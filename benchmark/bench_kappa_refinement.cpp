@@ -22,7 +22,7 @@ namespace {
 
 namespace kp = fair::internal::kappa;
 
-kp::Problem random_star(std::size_t n, unsigned seed, kp::Weight_mode mode) {
+kp::Problem random_star(std::size_t n, unsigned seed, fair::Kappa_weights mode) {
   std::mt19937 g(seed);
   std::uniform_real_distribution<double> U(0, 1);
   kp::Problem pb;
@@ -39,13 +39,13 @@ kp::Problem random_star(std::size_t n, unsigned seed, kp::Weight_mode mode) {
   return pb;
 }
 
-void pass(benchmark::State& state, kp::Weight_mode mode) {
+void pass(benchmark::State& state, fair::Kappa_weights mode) {
   const kp::Problem pb = random_star(static_cast<std::size_t>(state.range(0)), 1, mode);
   kp::Refinement_workspace ws;
-  kp::State s0;
+  fair::Kappa_solver_state s0;
   kp::initial_guess(pb, s0, ws);
   for (int k = 0; k < 5; ++k) kp::refinement_pass(pb, s0, ws);
-  kp::State st = s0;
+  fair::Kappa_solver_state st = s0;
   for (auto _ : state) {
     state.PauseTiming();
     st.dx = s0.dx; st.dy = s0.dy; st.lambda = s0.lambda; st.t = s0.t; st.w = s0.w;  // no allocation
@@ -56,15 +56,15 @@ void pass(benchmark::State& state, kp::Weight_mode mode) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
-void BM_kappa_refinement_pass_unit(benchmark::State& state) { pass(state, kp::Weight_mode::UNIT); }
-void BM_kappa_refinement_pass_automatic(benchmark::State& state) { pass(state, kp::Weight_mode::AUTOMATIC); }
+void BM_kappa_refinement_pass_unit(benchmark::State& state) { pass(state, fair::Kappa_weights::UNIT); }
+void BM_kappa_refinement_pass_automatic(benchmark::State& state) { pass(state, fair::Kappa_weights::AUTOMATIC); }
 BENCHMARK(BM_kappa_refinement_pass_unit)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_kappa_refinement_pass_automatic)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
 void BM_kappa_initial_guess(benchmark::State& state) {
-  const kp::Problem pb = random_star(static_cast<std::size_t>(state.range(0)), 1, kp::Weight_mode::UNIT);
+  const kp::Problem pb = random_star(static_cast<std::size_t>(state.range(0)), 1, fair::Kappa_weights::UNIT);
   for (auto _ : state) {
-    kp::State st;
+    fair::Kappa_solver_state st;
     kp::initial_guess(pb, st);
     benchmark::DoNotOptimize(st.dx.data());
   }
@@ -72,11 +72,11 @@ void BM_kappa_initial_guess(benchmark::State& state) {
 BENCHMARK(BM_kappa_initial_guess)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
 void BM_kappa_refine_to_1e3(benchmark::State& state) {
-  const kp::Problem pb = random_star(static_cast<std::size_t>(state.range(0)), 1, kp::Weight_mode::UNIT);
+  const kp::Problem pb = random_star(static_cast<std::size_t>(state.range(0)), 1, fair::Kappa_weights::UNIT);
   std::size_t passes = 0;
   for (auto _ : state) {
-    kp::State st;
-    kp::Solve_result res;
+    fair::Kappa_solver_state st;
+    fair::Kappa_solve_report res;
     kp::initial_guess(pb, st);
     benchmark::DoNotOptimize(kp::refine(pb, st, 60, 1e-3, res));
     passes = res.refinement_passes;

@@ -1,6 +1,6 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// Tests of the alternating passes of Section 5.1 (Yan, Schiller, Schaefer; kappa_refinement.h)
+// Tests of the alternating passes of Section 5.1 (Yan, Schiller, Schaefer; internal/kappa/refinement.h)
 // in double: the eq. 7 root against a long-double bisection, eq. 18 against a dense Eigen solve
 // (open and closed, diagonally dominant and not), one refinement pass against a
 // straightforward reference written here from the paper's formulas in absolute coordinates,
@@ -66,7 +66,7 @@ double dot(Pt a, Pt b) { return a.x * b.x + a.y * b.y; }
 double cross(Pt a, Pt b) { return a.x * b.y - a.y * b.x; }
 
 Pt Q(const kp::Problem& pb, std::size_t i) { return {pb.qx[i], pb.qy[i]}; }
-Pt P(const kp::Problem& pb, const kp::State& st, std::size_t i) { return {pb.qx[i] + st.dx[i], pb.qy[i] + st.dy[i]}; }
+Pt P(const kp::Problem& pb, const fair::Kappa_solver_state& st, std::size_t i) { return {pb.qx[i] + st.dx[i], pb.qy[i] + st.dy[i]}; }
 std::size_t prev(const kp::Problem& pb, std::size_t i) { return i == 0 ? pb.n - 1 : i - 1; }
 std::size_t next(const kp::Problem& pb, std::size_t i) { return i + 1 == pb.n ? 0 : i + 1; }
 
@@ -74,7 +74,7 @@ std::size_t next(const kp::Problem& pb, std::size_t i) { return i + 1 == pb.n ? 
 // (1-t)^2 (P_{i,0} - Q_i) + 2(1-t)t w (P_i - Q_i) + t^2 (P_{i,2} - Q_i) = 0 with eq. 9 joins
 // P_{i,0} = (1-l_i) P_{i-1} + l_i P_i, P_{i,2} = (1-l_{i+1}) P_i + l_{i+1} P_{i+1} (open ends: the
 // fixed end points): M P = rhs.
-void dense_eq18_system(const kp::Problem& pb, const kp::State& st, Eigen::MatrixXd& M, Eigen::MatrixXd& rhs) {
+void dense_eq18_system(const kp::Problem& pb, const fair::Kappa_solver_state& st, Eigen::MatrixXd& M, Eigen::MatrixXd& rhs) {
   const std::size_t n = pb.n;
   M = Eigen::MatrixXd::Zero(n, n);
   rhs = Eigen::MatrixXd::Zero(n, 2);
@@ -102,7 +102,7 @@ void dense_eq18_system(const kp::Problem& pb, const kp::State& st, Eigen::Matrix
 }
 
 // Solved by Eigen's full-pivoting LU; returns d = P - Q.
-void dense_eq18(const kp::Problem& pb, const kp::State& st, std::vector<double>& dx, std::vector<double>& dy) {
+void dense_eq18(const kp::Problem& pb, const fair::Kappa_solver_state& st, std::vector<double>& dx, std::vector<double>& dy) {
   Eigen::MatrixXd M, rhs;
   dense_eq18_system(pb, st, M, rhs);
   const Eigen::MatrixXd X = M.fullPivLu().solve(rhs);
@@ -115,27 +115,27 @@ void dense_eq18(const kp::Problem& pb, const kp::State& st, std::vector<double>&
 }
 
 // End control points of piece i (eq. 9; open ends: the fixed end points).
-Pt piece_start(const kp::Problem& pb, const kp::State& st, std::size_t i) {
+Pt piece_start(const kp::Problem& pb, const fair::Kappa_solver_state& st, std::size_t i) {
   if (!pb.has_start(i)) return {pb.sx, pb.sy};
   const double l = st.lambda[i];
   return (1 - l) * P(pb, st, prev(pb, i)) + l * P(pb, st, i);
 }
-Pt piece_end(const kp::Problem& pb, const kp::State& st, std::size_t i) {
+Pt piece_end(const kp::Problem& pb, const fair::Kappa_solver_state& st, std::size_t i) {
   if (!pb.has_end(i)) return {pb.ex, pb.ey};
   const double l = st.lambda[next(pb, i)];
   return (1 - l) * P(pb, st, i) + l * P(pb, st, next(pb, i));
 }
 
 // One pass of Algorithm 1 (lines 7-10), written straightforwardly from the paper.
-void reference_pass(const kp::Problem& pb, kp::State& st) {
+void reference_pass(const kp::Problem& pb, fair::Kappa_solver_state& st) {
   const std::size_t n = pb.n;
   std::vector<double> w(n), t(n), lambda = st.lambda;
   for (std::size_t i = 0; i < n; ++i) {
     const Pt p0 = piece_start(pb, st, i), p1 = P(pb, st, i), p2 = piece_end(pb, st, i);
     // Weight: 1, fixed, or eqs. 15-16 (clamped minimum-eccentricity weight).
     w[i] = 1;
-    if (pb.mode == kp::Weight_mode::FIXED) w[i] = pb.weight[i];
-    if (pb.mode == kp::Weight_mode::AUTOMATIC) {
+    if (pb.mode == fair::Kappa_weights::FIXED) w[i] = pb.weight[i];
+    if (pb.mode == fair::Kappa_weights::AUTOMATIC) {
       const double what = std::sqrt(dot(p2 - p0, p2 - p0) / (2 * (dot(p0 - p1, p0 - p1) + dot(p2 - p1, p2 - p1))));
       w[i] = std::max(pb.tension[i] * what, pb.clamp);
     }
@@ -168,7 +168,7 @@ void reference_pass(const kp::Problem& pb, kp::State& st) {
 
 // Closed (or open: first and last point fixed) star-shaped polygon, alternately convex and
 // concave corners, n interpolated points.
-kp::Problem star(std::size_t n, bool closed, kp::Weight_mode mode, unsigned seed) {
+kp::Problem star(std::size_t n, bool closed, fair::Kappa_weights mode, unsigned seed) {
   std::mt19937 g(seed);
   std::uniform_real_distribution<double> U(0, 1);
   const std::size_t m = closed ? n : n + 2;
@@ -282,8 +282,8 @@ TEST(KappaRefinement, Eq18AgreesWithDenseSolve) {
   for (bool closed : {true, false})
     for (std::size_t n : {1, 2, 3, 4, 5, 8, 33, 60})
       for (int kind = 0; kind < 3; ++kind) {
-        kp::Problem pb = star(n, closed, kp::Weight_mode::FIXED, static_cast<unsigned>(n * 10 + kind));
-        kp::State st;
+        kp::Problem pb = star(n, closed, fair::Kappa_weights::FIXED, static_cast<unsigned>(n * 10 + kind));
+        fair::Kappa_solver_state st;
         st.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
           if (kind == 0) {  // near the initial guess
@@ -319,7 +319,7 @@ TEST(KappaRefinement, Eq18AgreesWithDenseSolve) {
           EXPECT_LE(max_abs_diff(st.dy, ry), 1e-12 * scale) << what;
         }
         // The overload without a workspace gives the same numbers.
-        kp::State st2 = st;
+        fair::Kappa_solver_state st2 = st;
         st2.dx.assign(n, 0.0);
         st2.dy.assign(n, 0.0);
         ASSERT_TRUE(kp::solve_eq18(pb, st2));
@@ -330,8 +330,8 @@ TEST(KappaRefinement, Eq18AgreesWithDenseSolve) {
 
 TEST(KappaRefinement, Eq18NonFiniteDataFailsAndKeepsState) {
   for (bool closed : {true, false}) {
-    kp::Problem pb = star(12, closed, kp::Weight_mode::UNIT, 3);
-    kp::State st;
+    kp::Problem pb = star(12, closed, fair::Kappa_weights::UNIT, 3);
+    fair::Kappa_solver_state st;
     st.resize(pb.n);
     st.dx.assign(pb.n, 0.25);
     st.t[5] = std::numeric_limits<double>::quiet_NaN();
@@ -349,14 +349,14 @@ TEST(KappaRefinement, Eq18NonFiniteDataFailsAndKeepsState) {
 TEST(KappaRefinement, PassAgreesWithReferenceImplementation) {
   kp::Refinement_workspace ws;
   for (bool closed : {true, false})
-    for (kp::Weight_mode mode : {kp::Weight_mode::UNIT, kp::Weight_mode::FIXED, kp::Weight_mode::AUTOMATIC})
+    for (fair::Kappa_weights mode : {fair::Kappa_weights::UNIT, fair::Kappa_weights::FIXED, fair::Kappa_weights::AUTOMATIC})
       for (std::size_t n : {3, 4, 7, 40}) {
         const kp::Problem pb = star(n, closed, mode, static_cast<unsigned>(n + 100 * static_cast<int>(mode)));
-        kp::State st;
+        fair::Kappa_solver_state st;
         kp::initial_guess(pb, st, ws);
-        kp::State ref;
+        fair::Kappa_solver_state ref;
         ref.resize(n);
-        if (mode == kp::Weight_mode::FIXED) ref.w = pb.weight;
+        if (mode == fair::Kappa_weights::FIXED) ref.w = pb.weight;
         dense_eq18(pb, ref, ref.dx, ref.dy);
         EXPECT_LE(max_abs_diff(st.dx, ref.dx), 1e-13) << "initial guess, n=" << n;
         EXPECT_LE(max_abs_diff(st.dy, ref.dy), 1e-13) << "initial guess, n=" << n;
@@ -383,8 +383,8 @@ TEST(KappaRefinement, PassAgreesWithReferenceImplementation) {
 TEST(KappaRefinement, WorkspaceReuseAndOverloadsGiveIdenticalResults) {
   kp::Refinement_workspace ws;
   for (std::size_t n : {50, 9, 120, 3}) {  // the workspace shrinks and grows
-    const kp::Problem pb = star(n, n % 2 == 0, kp::Weight_mode::AUTOMATIC, static_cast<unsigned>(n));
-    kp::State a, b;
+    const kp::Problem pb = star(n, n % 2 == 0, fair::Kappa_weights::AUTOMATIC, static_cast<unsigned>(n));
+    fair::Kappa_solver_state a, b;
     kp::initial_guess(pb, a, ws);
     kp::initial_guess(pb, b);
     EXPECT_EQ(a.dx, b.dx);
@@ -410,16 +410,16 @@ TEST(KappaRefinement, PassesReproduceTheCircle) {
     kp::Problem pb;
     pb.closed = true;
     pb.n = n;
-    pb.mode = kp::Weight_mode::AUTOMATIC;
+    pb.mode = fair::Kappa_weights::AUTOMATIC;
     pb.tension.assign(n, 1.0);
     const double R = 3.5, cx = -2, cy = 7;
     for (std::size_t i = 0; i < n; ++i) {
       pb.qx.push_back(cx + R * std::cos(2 * M_PI * i / n + 0.3));
       pb.qy.push_back(cy + R * std::sin(2 * M_PI * i / n + 0.3));
     }
-    kp::State st;
+    fair::Kappa_solver_state st;
     kp::initial_guess(pb, st);
-    kp::Solve_result res;
+    fair::Kappa_solve_report res;
     const double fmax = kp::refine(pb, st, 20, 0.0, res);
     EXPECT_EQ(res.refinement_passes, 20u);
     EXPECT_LE(fmax, 1e-13) << n;
@@ -434,19 +434,19 @@ TEST(KappaRefinement, PassesReproduceTheCircle) {
 
 TEST(KappaRefinement, RefineStopsAtTheThresholdAndReducesTheResidual) {
   for (bool closed : {true, false}) {
-    const kp::Problem pb = star(60, closed, kp::Weight_mode::AUTOMATIC, 11);
-    kp::State st;
+    const kp::Problem pb = star(60, closed, fair::Kappa_weights::AUTOMATIC, 11);
+    fair::Kappa_solver_state st;
     kp::initial_guess(pb, st);
     std::vector<double> F;
     const double f0 = kp::evaluate(pb, st, F);
-    kp::Solve_result res;
+    fair::Kappa_solve_report res;
     const double f1 = kp::refine(pb, st, 200, 1e-4, res);
     EXPECT_LT(f1, f0);
     EXPECT_LE(f1, 1e-4) << res.refinement_passes;
     EXPECT_GT(res.refinement_passes, 0u);
     EXPECT_EQ(f1, kp::evaluate(pb, st, F));
     // Already below the threshold: no pass.
-    kp::Solve_result res2;
+    fair::Kappa_solve_report res2;
     kp::refine(pb, st, 200, 1e-4, res2);
     EXPECT_EQ(res2.refinement_passes, 0u);
   }

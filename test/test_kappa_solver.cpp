@@ -1,9 +1,9 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // Tests of the Newton machinery of the kappa-curve solver (include/fair/internal/): the block
-// LU of kappa_block_lu.h against a dense pivoted solve, the structured Jacobian of
-// kappa_jacobian.h against automatic differentiation over all 16 unknowns of a window, and
-// the Newton phase of kappa_solver.h against Levenberg-Marquardt.
+// LU of internal/kappa/block_lu.h against a dense pivoted solve, the structured Jacobian of
+// internal/kappa/jacobian.h against automatic differentiation over all 16 unknowns of a window, and
+// the Newton phase of internal/kappa/solver.h against Levenberg-Marquardt.
 
 #include <fair/internal/kappa/solver.h>
 
@@ -17,6 +17,9 @@
 namespace {
 
 using namespace fair::internal::kappa;
+using fair::Kappa_solve_report;
+using fair::Kappa_solver_state;
+using fair::Kappa_weights;
 
 // ------------------------------------------------------------------ block LU
 
@@ -190,7 +193,7 @@ TEST(KappaBlockLu, SingularPivotBlockIsReported) {
 
 // ------------------------------------------------------------------ Jacobian
 
-Problem random_problem(std::mt19937& g, std::size_t n, bool closed, Weight_mode mode, double clamp) {
+Problem random_problem(std::mt19937& g, std::size_t n, bool closed, Kappa_weights mode, double clamp) {
   std::uniform_real_distribution<double> U(0, 1);
   Problem pb;
   pb.closed = closed;
@@ -207,9 +210,9 @@ Problem random_problem(std::mt19937& g, std::size_t n, bool closed, Weight_mode 
   return pb;
 }
 
-State random_state(std::mt19937& g, std::size_t n) {
+Kappa_solver_state random_state(std::mt19937& g, std::size_t n) {
   std::uniform_real_distribution<double> U(0, 1);
-  State st;
+  Kappa_solver_state st;
   st.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     st.dx[i] = U(g) - 0.5;
@@ -221,7 +224,7 @@ State random_state(std::mt19937& g, std::size_t n) {
 }
 
 /// Compares block_jacobian with a differentiation over all 16 window unknowns.
-void expect_jacobian_matches(const Problem& pb, const State& st, const char* what) {
+void expect_jacobian_matches(const Problem& pb, const Kappa_solver_state& st, const char* what) {
   Jacobian_workspace ws;
   for (std::size_t i = 0; i < pb.n; ++i) {
     double r[4], J[4][16];
@@ -249,10 +252,10 @@ TEST(KappaJacobian, MatchesFullAutomaticDifferentiation) {
   for (int trial = 0; trial < 300; ++trial) {
     const bool closed = trial % 2 == 0;
     const std::size_t n = (closed ? 3 : 2) + static_cast<std::size_t>(trial % 9);
-    const Weight_mode mode = static_cast<Weight_mode>((trial / 2) % 3);
+    const Kappa_weights mode = static_cast<Kappa_weights>((trial / 2) % 3);
     // clamp 0.9: the clamp of eq. 16 is often active; 0.05: rarely.
     const Problem pb = random_problem(g, n, closed, mode, trial % 4 < 2 ? 0.9 : 0.05);
-    const State st = random_state(g, n);
+    const Kappa_solver_state st = random_state(g, n);
     expect_jacobian_matches(pb, st, "random");
   }
 }
@@ -260,7 +263,7 @@ TEST(KappaJacobian, MatchesFullAutomaticDifferentiation) {
 // Straight control polygons (cross products 0, |kappa| = 0 on one side of a join) and the
 // end blocks of open curves.
 TEST(KappaJacobian, DegenerateJoinsAndOpenEnds) {
-  for (const Weight_mode mode : {Weight_mode::UNIT, Weight_mode::AUTOMATIC}) {
+  for (const Kappa_weights mode : {Kappa_weights::UNIT, Kappa_weights::AUTOMATIC}) {
     Problem pb;
     pb.closed = false;
     pb.n = 5;
@@ -271,7 +274,7 @@ TEST(KappaJacobian, DegenerateJoinsAndOpenEnds) {
       pb.qy.push_back(i == 3 ? 0.5 : 0.0);
     }
     pb.sx = -1; pb.sy = 0; pb.ex = 5; pb.ey = 0;
-    State st;
+    Kappa_solver_state st;
     st.resize(5);
     st.lambda[2] = 0.3;
     st.t[1] = 0.7;
@@ -281,7 +284,7 @@ TEST(KappaJacobian, DegenerateJoinsAndOpenEnds) {
 
 // ------------------------------------------------------------------ Newton
 
-Problem star(std::size_t n, unsigned seed, Weight_mode mode) {
+Problem star(std::size_t n, unsigned seed, Kappa_weights mode) {
   std::mt19937 g(seed);
   std::uniform_real_distribution<double> U(0, 1);
   Problem pb;
@@ -303,20 +306,20 @@ Problem star(std::size_t n, unsigned seed, Weight_mode mode) {
 // automatic weights on small sets, two passes can leave the start outside Newton's basin;
 // solve() then falls back to more passes and Levenberg-Marquardt, as test_kappa.cpp exercises.)
 TEST(KappaNewton, ReachesTheLevenbergMarquardtRootQuickly) {
-  const std::pair<Weight_mode, std::size_t> cases[] = {{Weight_mode::UNIT, 24}, {Weight_mode::UNIT, 50},
-                                                       {Weight_mode::UNIT, 400}, {Weight_mode::AUTOMATIC, 100},
-                                                       {Weight_mode::AUTOMATIC, 400}};
+  const std::pair<Kappa_weights, std::size_t> cases[] = {{Kappa_weights::UNIT, 24}, {Kappa_weights::UNIT, 50},
+                                                         {Kappa_weights::UNIT, 400}, {Kappa_weights::AUTOMATIC, 100},
+                                                         {Kappa_weights::AUTOMATIC, 400}};
   for (const auto& mode_and_size : cases) {
-      const Weight_mode mode = mode_and_size.first;
+      const Kappa_weights mode = mode_and_size.first;
       const std::size_t n = mode_and_size.second;
       const Problem pb = star(n, static_cast<unsigned>(n) + 1, mode);
-      State a;
+      Kappa_solver_state a;
       initial_guess(pb, a);
-      Solve_result passes;
+      Kappa_solve_report passes;
       refine(pb, a, 2, 1e-3, passes);
-      State b = a;
+      Kappa_solver_state b = a;
       Solve_settings s;
-      Solve_result ra, rb;
+      Kappa_solve_report ra, rb;
       const double fa = newton(pb, a, s, ra, 30);
       const double fb = levenberg_marquardt(pb, b, s, rb, 200);
       ASSERT_LE(fa, 1e-12) << "n " << n;
@@ -333,9 +336,9 @@ TEST(KappaNewton, ReachesTheLevenbergMarquardtRootQuickly) {
 
 // The cold solve takes the fast path (two passes, then Newton) on regular data and reports it.
 TEST(KappaNewton, ColdSolveUsesTheFastPath) {
-  const Problem pb = star(1000, 3, Weight_mode::UNIT);
-  State st;
-  const Solve_result res = solve(pb, st, Solve_settings{});
+  const Problem pb = star(1000, 3, Kappa_weights::UNIT);
+  Kappa_solver_state st;
+  const Kappa_solve_report res = solve(pb, st, Solve_settings{});
   EXPECT_TRUE(res.converged);
   EXPECT_LE(res.refinement_passes, 2u);
   EXPECT_LE(res.iterations, 6u);
@@ -349,14 +352,14 @@ TEST(KappaNewton, IterationCapHoldsForTheWholeSolve) {
   std::uniform_real_distribution<double> U(0, 1);
   int warm_converged = 0;
   for (int trial = 0; trial < 40; ++trial) {
-    Problem pb = star(30 + static_cast<std::size_t>(trial), 100 + static_cast<unsigned>(trial), Weight_mode::UNIT);
+    Problem pb = star(30 + static_cast<std::size_t>(trial), 100 + static_cast<unsigned>(trial), Kappa_weights::UNIT);
     pb.closed = trial % 2 == 0;
     pb.sx = 1.2; pb.sy = -0.3; pb.ex = 1.2; pb.ey = 0.3;
     Solve_settings tight;
     tight.max_iterations = 3;
-    State cold;
+    Kappa_solver_state cold;
     EXPECT_LE(solve(pb, cold, tight).iterations, 3u);
-    State st;
+    Kappa_solver_state st;
     if (!solve(pb, st, Solve_settings{}).converged) continue;
     const std::size_t m = static_cast<std::size_t>(trial) % pb.n;  // a large move of one point
     pb.qx[m] *= 1.0 + 0.3 * (U(g) - 0.5);
@@ -365,7 +368,7 @@ TEST(KappaNewton, IterationCapHoldsForTheWholeSolve) {
     warm.warm = true;
     warm.moved = m;
     warm.max_iterations = 25;
-    const Solve_result r = solve(pb, st, warm);
+    const Kappa_solve_report r = solve(pb, st, warm);
     EXPECT_LE(r.iterations, 25u);
     warm_converged += r.converged ? 1 : 0;
   }
@@ -374,16 +377,16 @@ TEST(KappaNewton, IterationCapHoldsForTheWholeSolve) {
 
 // A local (range) Newton solve only changes the unknowns of its range and zeroes their residuals.
 TEST(KappaNewton, RangeSolveTouchesOnlyItsBlocks) {
-  Problem pb = star(60, 5, Weight_mode::UNIT);
-  State st;
+  Problem pb = star(60, 5, Kappa_weights::UNIT);
+  Kappa_solver_state st;
   ASSERT_TRUE(solve(pb, st, Solve_settings{}).converged);
   pb.qx[30] *= 1.01;
   Block_range range;
   range.all = false;
   range.first = 22;
   range.count = 17;
-  State local = st;
-  Solve_result res;
+  Kappa_solver_state local = st;
+  Kappa_solve_report res;
   const double f = newton(pb, local, Solve_settings{}, res, 30, range);
   EXPECT_LE(f, 1e-12);
   for (std::size_t i = 0; i < pb.n; ++i) {
@@ -392,6 +395,47 @@ TEST(KappaNewton, RangeSolveTouchesOnlyItsBlocks) {
     EXPECT_EQ(local.t[i], st.t[i]);
   }
   EXPECT_NE(local.dx[30], st.dx[30]);
+}
+
+// ------------------------------------------------------------------ warm/cold policy
+
+// Input points and blocks: an open curve's end points belong to its end blocks.
+TEST(KappaSolver, BlocksOfInputPoints) {
+  Problem open;
+  open.closed = false;
+  open.n = 5;
+  EXPECT_EQ(open.point_index(0), 1u);
+  EXPECT_EQ(open.point_index(4), 5u);
+  EXPECT_EQ(open.block_of_point(0), 0u);
+  EXPECT_EQ(open.block_of_point(3), 2u);
+  EXPECT_EQ(open.block_of_point(6), 4u);
+  EXPECT_EQ(open.block_of_point(7), Problem::no_block);
+  Problem closed;
+  closed.closed = true;
+  closed.n = 5;
+  EXPECT_EQ(closed.point_index(4), 4u);
+  EXPECT_EQ(closed.block_of_point(4), 4u);
+  EXPECT_EQ(closed.block_of_point(5), Problem::no_block);
+}
+
+// The policy of Kappa_curve_2 (solve_with_warm_start): cold without a previous state (or with
+// one of another size), warm and kept when the warm start converges.
+TEST(KappaSolver, WarmStartPolicy) {
+  Problem pb = star(60, 5, Kappa_weights::UNIT);
+  Kappa_solver_state st;
+  const Kappa_solve_report cold = solve_with_warm_start(pb, nullptr, 0, Solve_settings{}, st);
+  ASSERT_TRUE(cold.converged);
+  EXPECT_FALSE(cold.warm_started);
+  const Kappa_solver_state previous = st;
+  pb.qx[30] *= 1.01;
+  Kappa_solver_state moved;
+  const Kappa_solve_report warm = solve_with_warm_start(pb, &previous, 30, Solve_settings{}, moved);
+  EXPECT_TRUE(warm.converged);
+  EXPECT_TRUE(warm.warm_started);
+  EXPECT_EQ(warm.refinement_passes, 0u);
+  Kappa_solver_state other_size;
+  other_size.resize(10);
+  EXPECT_FALSE(solve_with_warm_start(pb, &other_size, 30, Solve_settings{}, moved).warm_started);
 }
 
 } // namespace

@@ -23,6 +23,10 @@
 
 namespace {
 
+/// Fewest points of a kappa-curve (Kappa_curve_2: one interior point of an open curve, a
+/// triangle for a closed one), checked here to name the file in the message.
+constexpr std::size_t minimum_points = 3;
+
 struct Kappa_command_options {
   std::string input, weights = "1", tension_file, clamp, json_out, svg_out;
   bool closed = false;
@@ -57,7 +61,9 @@ std::vector<double> read_numbers(const std::string& file) {
 
 nlohmann::json xy(const fair_curves::Point_2& p) { return nlohmann::json::array({p.x(), p.y()}); }
 
-void run_kappa(const Kappa_command_options& o) {
+/// The curve options that the command-line options ask for, before the point file is read
+/// (CLI::ValidationError for a bad --weights or --clamp, or one that does not apply).
+fair::Kappa_curve_options curve_options(const Kappa_command_options& o) {
   using namespace fair_curves;
   fair::Kappa_curve_options options;
   if (o.weights == "auto") {
@@ -80,74 +86,94 @@ void run_kappa(const Kappa_command_options& o) {
     if (!(options.weight_clamp > 0))
       throw CLI::ValidationError("--clamp", "expected a weight clamp > 0, got '" + o.clamp + "'");
   }
-  const fair::io::Point_file<Kernel> data = fair::io::read_point_file<Kernel>(o.input);
-  options.closed = o.closed || data.closed;
-  fair::io::check_point_file(data, 3, options.closed, "fair-curves kappa");
-  if (options.weights == fair::Kappa_weights::FIXED)
-    options.fixed_weights.assign(data.points.size(), option_number(o.weights, "--weights"));
-  if (!o.tension_file.empty()) options.tension = read_numbers(o.tension_file);
+  return options;
+}
 
-  const fair::Kappa_curve_2<Kernel> curve(data.points, options);
+/// The pieces and the solve report as the JSON document of -o.
+std::string curve_json(const Kappa_command_options& o, const fair::Kappa_curve_2<fair_curves::Kernel>& curve) {
+  const fair::Kappa_curve_options& options = curve.options();
   const fair::Kappa_solve_report& r = curve.report();
+  nlohmann::json pieces = nlohmann::json::array();
+  for (std::size_t j = 0; j < curve.number_of_pieces(); ++j) {
+    const auto& pc = curve.piece(j);
+    pieces.push_back({{"P0", xy(pc.control_point(0))}, {"P1", xy(pc.control_point(1))}, {"P2", xy(pc.control_point(2))},
+                      {"w", pc.weight()}, {"t", curve.t(j)}, {"point", curve.point_index(j)}});
+  }
+  const nlohmann::json j{{"method", "kappa"},
+                         {"closed", options.closed},
+                         {"weights", o.weights},
+                         {"weight_clamp", options.weights == fair::Kappa_weights::AUTOMATIC
+                                              ? nlohmann::json(options.weight_clamp)
+                                              : nlohmann::json(nullptr)},
+                         {"converged", r.converged},
+                         {"iterations", r.iterations},
+                         {"refinement_passes", r.refinement_passes},
+                         {"residuals",
+                          {{"max", r.residual},
+                           {"interpolation", r.interpolation_residual},
+                           {"max_curvature_eq7", r.curvature_residual},
+                           {"abs_curvature_continuity", r.g2_residual},
+                           {"weight_eq16", r.weight_residual}}},
+                         {"energy",
+                          {{"total", r.energy()},
+                           {"interpolation", r.energy_interpolation},
+                           {"curvature_eq12", r.energy_curvature},
+                           {"g2_eq11", r.energy_g2},
+                           {"weight_eq13", r.energy_weight}}},
+                         {"bounds_active", r.bounds_active},
+                         {"boundary_points", r.boundary_points},
+                         {"pieces", pieces}};
+  std::ostringstream out;
+  fair::io::write_json(out, j);
+  return out.str();
+}
 
-  std::string json_text, svg_text;
-  if (!o.json_out.empty()) {
-    nlohmann::json pieces = nlohmann::json::array();
-    for (std::size_t j = 0; j < curve.number_of_pieces(); ++j) {
-      const auto& pc = curve.piece(j);
-      pieces.push_back({{"P0", xy(pc.control_point(0))}, {"P1", xy(pc.control_point(1))}, {"P2", xy(pc.control_point(2))},
-                        {"w", pc.weight()}, {"t", curve.t(j)}, {"point", curve.point_index(j)}});
-    }
-    const nlohmann::json j{{"method", "kappa"},
-                           {"closed", options.closed},
-                           {"weights", o.weights},
-                           {"weight_clamp", options.weights == fair::Kappa_weights::AUTOMATIC
-                                                ? nlohmann::json(options.weight_clamp)
-                                                : nlohmann::json(nullptr)},
-                           {"converged", r.converged},
-                           {"iterations", r.iterations},
-                           {"refinement_passes", r.refinement_passes},
-                           {"residuals",
-                            {{"max", r.residual},
-                             {"interpolation", r.interpolation_residual},
-                             {"max_curvature_eq7", r.curvature_residual},
-                             {"abs_curvature_continuity", r.g2_residual},
-                             {"weight_eq16", r.weight_residual}}},
-                           {"energy",
-                            {{"total", r.energy()},
-                             {"interpolation", r.energy_interpolation},
-                             {"curvature_eq12", r.energy_curvature},
-                             {"g2_eq11", r.energy_g2},
-                             {"weight_eq13", r.energy_weight}}},
-                           {"bounds_active", r.bounds_active},
-                           {"boundary_points", r.boundary_points},
-                           {"pieces", pieces}};
-    std::ostringstream out;
-    fair::io::write_json(out, j);
-    json_text = out.str();
-  }
-  if (!o.svg_out.empty()) {
-    Curve_case c;
-    c.title = o.input + ": kappa-curve, weights " + o.weights;
-    c.title_in_figure = true;
-    c.input_points = fair::io::to_xy(data.points);
-    const Curve_figures f = make_curve_figures(curve.pieces(), c);
-    svg_text = f.curve_svg;
-  }
+/// The curve, its control polygons and curvature comb as the SVG figure of --svg.
+std::string curve_svg(const Kappa_command_options& o, const fair::io::Point_file<fair_curves::Kernel>& data,
+                      const fair::Kappa_curve_2<fair_curves::Kernel>& curve) {
+  using namespace fair_curves;
+  Curve_case c;
+  c.title = o.input + ": kappa-curve, weights " + o.weights;
+  c.title_in_figure = true;
+  c.input_points = fair::io::to_xy(data.points);
+  return make_curve_figures(curve.pieces(), c).curve_svg;
+}
+
+/// The report on stdout: one line on the solve, and the points that ended on a join if any.
+std::string summary(const Kappa_command_options& o, const fair::Kappa_curve_2<fair_curves::Kernel>& curve) {
+  using namespace fair_curves;
+  const fair::Kappa_curve_options& options = curve.options();
+  const fair::Kappa_solve_report& r = curve.report();
   std::ostringstream report;
   report << o.input << ": " << curve.number_of_pieces() << " pieces, " << (options.closed ? "closed" : "open")
-              << ", weights " << o.weights
-              << (options.weights == fair::Kappa_weights::AUTOMATIC ? " (clamp " + format_number(options.weight_clamp) + ")" : "")
-              << ", " << (r.converged ? "converged" : "NOT converged") << " after "
-              << r.refinement_passes << " passes and " << r.iterations << " iterations, residual "
-              << format_number(r.residual, 3) << ", energy " << format_number(r.energy(), 3) << "\n";
+         << ", weights " << o.weights
+         << (options.weights == fair::Kappa_weights::AUTOMATIC ? " (clamp " + format_number(options.weight_clamp) + ")" : "")
+         << ", " << (r.converged ? "converged" : "NOT converged") << " after "
+         << r.refinement_passes << " passes and " << r.iterations << " iterations, residual "
+         << format_number(r.residual, 3) << ", energy " << format_number(r.energy(), 3) << "\n";
   if (!r.boundary_points.empty()) {
     // No interior solution found: name the points that ended on a join (doc/kappa_existence.md).
     report << "  on a join (t or lambda at 0 or 1), not at a curvature maximum: point";
     for (const std::size_t i : r.boundary_points) report << " " << i;
     report << " (0-based)\n";
   }
-  write_outputs(report.str(), o.json_out, json_text, {{o.svg_out, svg_text}});
+  return report.str();
+}
+
+void run_kappa(const Kappa_command_options& o) {
+  using namespace fair_curves;
+  fair::Kappa_curve_options options = curve_options(o);
+  const fair::io::Point_file<Kernel> data = fair::io::read_point_file<Kernel>(o.input);
+  options.closed = o.closed || data.closed;
+  fair::io::check_point_file(data, minimum_points, options.closed, "fair-curves kappa");
+  if (options.weights == fair::Kappa_weights::FIXED)
+    options.fixed_weights.assign(data.points.size(), option_number(o.weights, "--weights"));
+  if (!o.tension_file.empty()) options.tension = read_numbers(o.tension_file);
+
+  const fair::Kappa_curve_2<Kernel> curve(data.points, options);
+  const std::string json_text = o.json_out.empty() ? std::string() : curve_json(o, curve);
+  const std::string svg_text = o.svg_out.empty() ? std::string() : curve_svg(o, data, curve);
+  write_outputs(summary(o, curve), o.json_out, json_text, {{o.svg_out, svg_text}});
 }
 
 } // namespace

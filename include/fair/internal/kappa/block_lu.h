@@ -1,6 +1,6 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// Direct solver for the Jacobian of the kappa-curve system (kappa_system.h): a square matrix
+// Direct solver for the Jacobian of the kappa-curve system (system.h): a square matrix
 // of 4x4 blocks in which block row i only has the column blocks i-2, i-1, i, i+1 ("slots"
 // 0..3), clipped at the ends for open curves and cyclic for closed curves.
 //

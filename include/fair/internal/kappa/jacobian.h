@@ -1,14 +1,14 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// The Jacobian of the kappa-curve system (kappa_system.h), block row by block row: the four
+// The Jacobian of the kappa-curve system (system.h), block row by block row: the four
 // residuals of block i and their derivatives with respect to the 16 unknowns of the blocks
 // i-2, i-1, i, i+1 (window slot k = block i-2+k, unknown c = x, y, lambda, t at column 4k+c).
 //
-// Accuracy: exact to rounding (forward-mode automatic differentiation, kappa_dual.h, through
+// Accuracy: exact to rounding (forward-mode automatic differentiation, dual.h, through
 // the same templates that evaluate the residuals, so value and derivative cannot disagree;
 // checked against a differentiation over all 16 unknowns in test_kappa_solver.cpp).
 // Degenerate cases: abs() and the clamp of eq. 16 contribute the derivative of the active
-// branch; residuals defined as 0 at a degenerate configuration (kappa_system.h) have a zero
+// branch; residuals defined as 0 at a degenerate configuration (system.h) have a zero
 // gradient there.
 
 #ifndef FAIR_INTERNAL_KAPPA_JACOBIAN_H
@@ -53,10 +53,10 @@ inline void add_piece_gradient(const Window<double>& win, int k, bool start, boo
 
 /// Weight of the piece of window block k and its gradient with respect to (E0, P, E2)
 /// (zero unless the weights are automatic).
-inline double piece_weight_gradient(const Problem& pb, const State& st, std::size_t i, const Window<double>& win,
+inline double piece_weight_gradient(const Problem& pb, const Kappa_solver_state& st, std::size_t i, const Window<double>& win,
                                     int k, double g[6]) {
   for (int c = 0; c < 6; ++c) g[c] = 0.0;
-  if (pb.mode != Weight_mode::AUTOMATIC) return window_piece_weight(pb, st, i, win, k);
+  if (pb.mode != Kappa_weights::AUTOMATIC) return window_piece_weight(pb, st, i, win, k);
   Piece_values<double> pv;
   piece_values(pb, st, i, win, k, pv);
   typedef Dual<6> D6;
@@ -76,10 +76,10 @@ inline double piece_weight_gradient(const Problem& pb, const State& st, std::siz
 ///  - r_0..r_2 depend on the unknowns only through the piece's control points E0, P_i, E2 and
 ///    t_i (and the weight, a function of those): automatic differentiation in these 7
 ///    directions, then the chain rule through eq. 9 (add_piece_gradient);
-///  - r_3 = (k1 - k2) / (k1 + k2) (kappa_system.h, join_residual) is differentiated by hand:
+///  - r_3 = (k1 - k2) / (k1 + k2) (system.h, join_residual) is differentiated by hand:
 ///    dr_3 = 2 (k2 dk1 - k1 dk2) / (k1 + k2)^2 with k1 = fac1 |cr1| / (w_{i-1}^2 lambda_i^2),
 ///    k2 = fac2 |cr2| / (w_i^2 (1 - lambda_i)^2), cr1, cr2 the cross products of eq. 10.
-inline void block_jacobian(const Problem& pb, const State& st, std::size_t i, Jacobian_workspace& ws, double r[4],
+inline void block_jacobian(const Problem& pb, const Kappa_solver_state& st, std::size_t i, Jacobian_workspace& ws, double r[4],
                            double J[4][16]) {
   for (int e = 0; e < 4; ++e)
     for (int c = 0; c < 16; ++c) J[e][c] = 0.0;
@@ -157,7 +157,7 @@ inline void block_jacobian(const Problem& pb, const State& st, std::size_t i, Ja
   }
   if (end) dk2[14] += std::abs(cr2) * s2;                 // fac2 = lambda_{i+1}
   dk2[10] += 2.0 * k2 / (1.0 - lam);                      // (1 - lambda_i)^-2
-  if (pb.mode == Weight_mode::AUTOMATIC) {
+  if (pb.mode == Kappa_weights::AUTOMATIC) {
     for (int c = 0; c < 16; ++c) gw[c] = 0.0;
     add_piece_gradient(win, 2, start, end, w.d.data(), gw);  // w_i^-2
     for (int c = 0; c < 16; ++c) dk2[c] -= 2.0 * k2 / wc * gw[c];

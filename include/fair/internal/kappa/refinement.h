@@ -4,7 +4,7 @@
 // Schiller, Schaefer -- lambda = t = 1/2, w = 1, eq. 18 solved for P (a (cyclic) tridiagonal
 // system), then alternating passes: w from eq. 16, t from the unique root of eq. 7 in (0,1)
 // (Appendix A), lambda from eq. 10, P from eq. 18. Each pass is O(n) and converges linearly;
-// the Newton-type solve of kappa_solver.h finishes the job.
+// the Newton-type solve of solver.h finishes the job.
 //
 // Cost: a pass reads each block's neighbours directly (no Window objects), finds the eq. 7 root
 // by safeguarded Newton from the previous t (1-3 evaluations per block), and solves eq. 18 by
@@ -105,7 +105,7 @@ namespace detail {
 /// Row i of eq. 18 in the unknowns d = P - Q: sub d_{i-1} + diag d_i + sup d_{i+1} = r
 /// (sub = 0 without a previous block, sup = 0 without a next one; the fixed end points of an
 /// open curve go to the right-hand side).
-inline void eq18_row(const Problem& pb, const State& st, std::size_t i, double& sub, double& diag, double& sup,
+inline void eq18_row(const Problem& pb, const Kappa_solver_state& st, std::size_t i, double& sub, double& diag, double& sup,
                      double& rx, double& ry) {
   const std::size_t n = pb.n;
   const double t = st.t[i], u = 1 - t, w = st.w[i];
@@ -141,7 +141,7 @@ inline void eq18_row(const Problem& pb, const State& st, std::size_t i, double& 
 
 /// Eq. 18 by banded LU with partial pivoting (zig-zag order for closed curves): the general
 /// method, used when the matrix is not strictly diagonally dominant or the curve is tiny.
-inline bool solve_eq18_banded(const Problem& pb, State& st, Refinement_workspace& ws) {
+inline bool solve_eq18_banded(const Problem& pb, Kappa_solver_state& st, Refinement_workspace& ws) {
   const std::size_t n = pb.n;
   auto pos = [&](std::size_t j) { return pb.closed ? cyclic_position(j, n) : j; };
   const std::size_t band = (pb.closed && n > 1) ? 2 : 1;
@@ -180,13 +180,13 @@ inline bool solve_eq18_banded(const Problem& pb, State& st, Refinement_workspace
 /// is bordered: rows 0..n-2 are solved for x_0..x_{n-2} as y - x_{n-1} z (two tridiagonal
 /// solves sharing one factorisation), then row n-1 gives x_{n-1}. O(n), no allocation.
 /// Otherwise (rows that are not dominant, e.g. t near 0 with lambda_i < 1/2, or closed curves
-/// with n < 3) banded LU with partial pivoting (kappa_banded.h).
+/// with n < 3) banded LU with partial pivoting (banded.h).
 /// Accuracy: both are backward stable (for a row diagonally dominant matrix elimination without
 /// pivoting has growth factor <= 2, Higham, Accuracy and Stability, Thm. 9.9; the bordering
 /// forms the same Schur complement of row n-1, whose pivot stays dominant).
 /// Degenerate case: a singular matrix or a non-finite solution returns false and leaves `st`
 /// unchanged.
-inline bool solve_eq18(const Problem& pb, State& st, Refinement_workspace& ws) {
+inline bool solve_eq18(const Problem& pb, Kappa_solver_state& st, Refinement_workspace& ws) {
   const std::size_t n = pb.n;
   if (n == 0) return true;
   if (pb.closed && n < 3) return detail::solve_eq18_banded(pb, st, ws);
@@ -254,19 +254,26 @@ inline bool solve_eq18(const Problem& pb, State& st, Refinement_workspace& ws) {
 }
 
 /// As above with a temporary workspace.
-inline bool solve_eq18(const Problem& pb, State& st) {
+inline bool solve_eq18(const Problem& pb, Kappa_solver_state& st) {
   Refinement_workspace ws;
   return solve_eq18(pb, st, ws);
 }
 
 // ----------------------------------------------------------------------------- refinement
 
+/// Clamp of the passes' t_i to [pass_t_margin, 1 - pass_t_margin]: a t of exactly 0 or 1 would
+/// put Q_i on a join, where eq. 7 has no interior root to follow.
+constexpr double pass_t_margin = 1e-6;
+/// Clamp of the passes' lambda_i to [pass_lambda_margin, 1 - pass_lambda_margin]: eq. 10 divides
+/// by lambda^2 and (1-lambda)^2, and a join at a control point would make a piece degenerate.
+constexpr double pass_lambda_margin = 1e-3;
+
 /// One alternating pass of Section 5.1 (Algorithm 1, lines 7-11): w from eq. 16 (automatic
-/// weights; unit/fixed weights stay), t from eq. 7 (clamped to [1e-6, 1 - 1e-6]; a degenerate
-/// piece keeps its t), lambda from eq. 10 (clamped to [1e-3, 1 - 1e-3]; kept when both sides
+/// weights; unit/fixed weights stay), t from eq. 7 (clamped by pass_t_margin; a degenerate
+/// piece keeps its t), lambda from eq. 10 (clamped by pass_lambda_margin; kept when both sides
 /// have zero curvature), P from eq. 18 (kept if that solve fails). Coordinates are local to
-/// each Q_i, as in kappa_system.h: X_j = d_j + (Q_j - Q_i).
-inline void refinement_pass(const Problem& pb, State& st, Refinement_workspace& ws) {
+/// each Q_i, as in system.h: X_j = d_j + (Q_j - Q_i).
+inline void refinement_pass(const Problem& pb, Kappa_solver_state& st, Refinement_workspace& ws) {
   const std::size_t n = pb.n;
   if (n == 0) return;
   ws.resize(n);
@@ -284,7 +291,8 @@ inline void refinement_pass(const Problem& pb, State& st, Refinement_workspace& 
   auto set_lambda = [&](std::size_t i, double a, double b) {
     a /= neww[i == 0 ? n - 1 : i - 1];
     b /= neww[i];
-    if (a + b > 0 && std::isfinite(a + b)) newl[i] = std::min(std::max(a / (a + b), 1e-3), 1 - 1e-3);
+    if (a + b > 0 && std::isfinite(a + b))
+      newl[i] = std::min(std::max(a / (a + b), pass_lambda_margin), 1 - pass_lambda_margin);
     else newl[i] = lam[i];
   };
   for (std::size_t i = 0; i < n; ++i) {
@@ -308,13 +316,13 @@ inline void refinement_pass(const Problem& pb, State& st, Refinement_workspace& 
       E2[0] = pb.ex - qx[i]; E2[1] = pb.ey - qy[i];
     }
     double w = 1.0;
-    if (pb.mode == Weight_mode::FIXED) w = pb.weight[i];
-    else if (pb.mode == Weight_mode::AUTOMATIC) w = automatic_weight<double>(E0, X2, E2, pb.tension[i], pb.clamp);
+    if (pb.mode == Kappa_weights::FIXED) w = pb.weight[i];
+    else if (pb.mode == Kappa_weights::AUTOMATIC) w = automatic_weight<double>(E0, X2, E2, pb.tension[i], pb.clamp);
     neww[i] = w;
     const double A = E0[0] * E0[0] + E0[1] * E0[1];
     const double B = E0[0] * E2[0] + E0[1] * E2[1];
     const double C = E2[0] * E2[0] + E2[1] * E2[1];
-    newt[i] = std::min(std::max(eq7_root(A, B, C, w, st.t[i]), 1e-6), 1 - 1e-6);
+    newt[i] = std::min(std::max(eq7_root(A, B, C, w, st.t[i]), pass_t_margin), 1 - pass_t_margin);
     // Join i (between pieces i-1 and i), eq. 10: |kappa_{i-1}(1)| = |kappa_i(0)| <=>
     // fac1 |cr1| / (w_{i-1}^2 l^2) = fac2 |cr2| / (w_i^2 (1-l)^2), solved for l.
     if (!start) { newl[i] = lam[i]; continue; }
@@ -343,25 +351,25 @@ inline void refinement_pass(const Problem& pb, State& st, Refinement_workspace& 
 }
 
 /// As above with a temporary workspace.
-inline void refinement_pass(const Problem& pb, State& st) {
+inline void refinement_pass(const Problem& pb, Kappa_solver_state& st) {
   Refinement_workspace ws;
   refinement_pass(pb, st, ws);
 }
 
 /// Initial guess of Algorithm 1 (lines 2-5): lambda = t = 1/2, w = 1 (or the fixed weights).
-inline void initial_guess(const Problem& pb, State& st, Refinement_workspace& ws) {
+inline void initial_guess(const Problem& pb, Kappa_solver_state& st, Refinement_workspace& ws) {
   st.resize(pb.n);
-  if (pb.mode == Weight_mode::FIXED) st.w = pb.weight;
+  if (pb.mode == Kappa_weights::FIXED) st.w = pb.weight;
   solve_eq18(pb, st, ws);
 }
 
-inline void initial_guess(const Problem& pb, State& st) {
+inline void initial_guess(const Problem& pb, Kappa_solver_state& st) {
   Refinement_workspace ws;
   initial_guess(pb, st, ws);
 }
 
 /// Alternating passes (Sec. 5.1) until `max_passes` or max |r| <= stop; returns max |r|.
-inline double refine(const Problem& pb, State& st, std::size_t max_passes, double stop, Solve_result& res) {
+inline double refine(const Problem& pb, Kappa_solver_state& st, std::size_t max_passes, double stop, Kappa_solve_report& res) {
   std::vector<double> F;
   Refinement_workspace ws;
   double fmax = evaluate(pb, st, F);

@@ -6,27 +6,28 @@
 // kappa-curves of Yan et al. 2017).
 //
 // The system (unknowns P_i, lambda_i, t_i per block; residuals of eqs. 7, 10, 18: a square
-// 4n x 4n system) is in kappa_system.h, the initial guess and alternating passes of Section 5.1
-// in kappa_refinement.h. The paper's energy (eq. 17/19) is a sum of squares of the same
+// 4n x 4n system) is in system.h, the initial guess and alternating passes of Section 5.1
+// in refinement.h. The paper's energy (eq. 17/19) is a sum of squares of the same
 // conditions (differently normalised); its minimum value zero is reached exactly at a root of
 // the system, so the solver looks for a root and stops when max |r| <= tolerance.
 //
 // Two methods, both O(n) per iteration because every residual depends on the unknowns of
 // blocks i-2..i+1 only:
 //  - Newton's method (newton()): J delta = -r solved directly by the block LU of
-//    kappa_block_lu.h (Woodbury correction for the wrap-around of closed curves), the
-//    Jacobian from kappa_jacobian.h, an Armijo backtracking line search, and chord steps
+//    block_lu.h (Woodbury correction for the wrap-around of closed curves), the
+//    Jacobian from jacobian.h, an Armijo backtracking line search, and chord steps
 //    (reusing the factorisation) in the quadratic regime. Converges in 2-4 Jacobians from two
 //    refinement passes on typical data; it gives up on a singular pivot block or a failed
 //    line search.
 //  - Levenberg-Marquardt (levenberg_marquardt(), the fallback): minimises 1/2 |r|^2 with
 //    Nielsen's damping update and Marquardt's diagonal scaling; J^T J is a band matrix (half
 //    bandwidth 15 for open curves; closed curves use the zig-zag block order of
-//    kappa_banded.h, half bandwidth 31) factored by banded Cholesky, the Jacobian by
-//    automatic differentiation (kappa_dual.h). Slower per iteration, but robust far from a root.
-// Bounds 0 < lambda_i, t_i < 1 are kept by projection onto [1e-9, 1 - 1e-9].
-// Non-convergence within the iteration caps is reported (Solve_result::converged == false);
-// the caller decides whether to throw.
+//    banded.h, half bandwidth 31) factored by banded Cholesky, the Jacobian by
+//    automatic differentiation (dual.h). Slower per iteration, but robust far from a root.
+// Bounds 0 < lambda_i, t_i < 1 are kept by projection onto [parameter_margin, 1 - parameter_margin].
+// The warm/cold start policy of Kappa_curve_2 is solve_with_warm_start(). Non-convergence
+// within the iteration caps is reported (Kappa_solve_report::converged == false); the caller
+// decides whether to throw.
 
 #ifndef FAIR_INTERNAL_KAPPA_SOLVER_H
 #define FAIR_INTERNAL_KAPPA_SOLVER_H
@@ -42,11 +43,70 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace fair {
 namespace internal {
 namespace kappa {
+
+// ----------------------------------------------------------------------------- caps and tolerances
+
+/// Margin of the projection onto 0 < lambda_i, t_i < 1: keeps 1/lambda^2, 1/(1-lambda)^2 of
+/// eq. 10 finite while leaving room for roots very near a bound.
+constexpr double parameter_margin = 1e-9;
+/// A t_i or lambda_i within this of 0 or 1 is "on the bound": no well-separated interior root
+/// there (doc/kappa_existence.md), never reported as converged.
+constexpr double bound_margin = 1e-4;
+/// Once max |r| <= tolerance, polishing aims at this fraction of the tolerance (rounding
+/// permitting), so that derived quantities (e.g. circle reproduction) are accurate to it.
+constexpr double polish_fraction = 1e-3;
+/// Levenberg-Marquardt: iterations spent polishing (each costs a Jacobian; two suffice).
+constexpr std::size_t lm_polish_iterations = 2;
+/// Levenberg-Marquardt stalls after this many consecutive accepted steps each gaining less
+/// than lm_stall_gain of the cost: no useful decrease left at this precision.
+constexpr std::size_t lm_stall_steps = 30;
+constexpr double lm_stall_gain = 1e-3;
+/// Levenberg-Marquardt: initial damping, near Gauss-Newton (the refined start is close).
+constexpr double lm_initial_damping = 1e-8;
+/// Levenberg-Marquardt: floor of Marquardt's diagonal scaling relative to its largest entry
+/// (a zero column would make the damped matrix singular).
+constexpr double lm_diagonal_floor = 1e-12;
+/// Levenberg-Marquardt: damping increases tried per iteration, while polishing and otherwise.
+constexpr int lm_polish_attempts = 4;
+constexpr int lm_attempts = 40;
+/// Levenberg-Marquardt: bounds of the damping (below: pure Gauss-Newton in double; above:
+/// steps too small to change the state).
+constexpr double lm_min_damping = 1e-20;
+constexpr double lm_max_damping = 1e30;
+/// Levenberg-Marquardt on a contiguous range (count <= n - 3 for closed curves) in natural
+/// order: blocks at distance <= 3 couple, half bandwidth 4 * 3 + 3.
+constexpr std::size_t range_bandwidth = 15;
+/// Newton: Armijo's sufficient-decrease constant (the usual 1e-4).
+constexpr double armijo_constant = 1e-4;
+/// Newton: smallest step of the backtracking line search (six halvings).
+constexpr double newton_min_step = 1.0 / 64;
+/// Newton: a step that reduces max |r| by this factor is in the quadratic regime (chord
+/// steps next).
+constexpr double newton_contraction = 1e-2;
+/// Chord steps are kept while each reduces max |r| by this factor or more.
+constexpr double chord_contraction = 0.1;
+/// Cold start: alternating passes before the first Newton run (they bring the residual to
+/// ~0.05 on typical data, inside Newton's basin).
+constexpr std::size_t fast_passes = 2;
+/// The alternating passes stop once max |r| is below this (Newton's basin).
+constexpr double refinement_stop = 1e-3;
+/// Restart after a stalled Levenberg-Marquardt: this many times refinement_passes more passes,
+/// stopping at restart_stop.
+constexpr std::size_t restart_pass_factor = 4;
+constexpr double restart_stop = 1e-7;
+/// Local warm start: radii R (blocks on each side of the moved one) first, growth, last.
+constexpr std::size_t local_radius_first = 8;
+constexpr std::size_t local_radius_growth = 4;
+constexpr std::size_t local_radius_last = 32;
+/// Closed curves: a local range leaves at least this many blocks outside, so that its system
+/// stays open-structured (no wrap-around coupling).
+constexpr std::size_t closed_range_gap = 3;
 
 struct Solve_settings {
   std::size_t refinement_passes = 60;  // alternating passes of Section 5.1 (paper: 60)
@@ -55,8 +115,17 @@ struct Solve_settings {
   bool warm = false;                   // skip the initial guess, start from the given state
   /// Warm start after a change of Q_moved only (block index; n or more: unknown): try local
   /// solves first, see solve().
-  std::size_t moved = static_cast<std::size_t>(-1);
+  std::size_t moved = Problem::no_block;
 };
+
+/// The caps and tolerance of a solve with these options (no warm start).
+inline Solve_settings solve_settings(const Kappa_curve_options& opt) {
+  Solve_settings settings;
+  settings.refinement_passes = opt.refinement_passes;
+  settings.max_iterations = opt.max_iterations;
+  settings.tolerance = opt.tolerance;
+  return settings;
+}
 
 /// The blocks a (local) Levenberg-Marquardt solve works on: all, or the cyclic (closed) /
 /// clipped (open) range first, first+1, ..., first+count-1. In a range solve only the unknowns
@@ -87,8 +156,8 @@ inline std::size_t normal_bandwidth(const Problem& pb) {
   return std::min(h, 4 * n - 1);
 }
 
-inline void project_bounds(State& st) {
-  const double lo = 1e-9, hi = 1 - 1e-9;
+inline void project_bounds(Kappa_solver_state& st) {
+  const double lo = parameter_margin, hi = 1 - parameter_margin;
   for (std::size_t i = 0; i < st.t.size(); ++i) {
     st.lambda[i] = std::min(std::max(st.lambda[i], lo), hi);
     st.t[i] = std::min(std::max(st.t[i], lo), hi);
@@ -97,7 +166,7 @@ inline void project_bounds(State& st) {
 
 /// Assembles J^T J (into `chol`, reset to half bandwidth h) and g = J^T F, in block order
 /// `cyclic_position` for closed curves.
-inline void assemble_normal_equations(const Problem& pb, const State& st, Banded_cholesky& chol,
+inline void assemble_normal_equations(const Problem& pb, const Kappa_solver_state& st, Banded_cholesky& chol,
                                       std::vector<double>& g, std::size_t h, const Block_range& range = {}) {
   const std::size_t n = pb.n;
   const std::size_t na = range.all ? n : range.count, N = 4 * na;
@@ -166,8 +235,8 @@ inline std::size_t range_block(const Problem& pb, const Block_range& range, std:
 /// trial = st + alpha * delta on the blocks of `range`, the unknowns of the ii-th block at
 /// delta[4 pos(ii) ...], projected onto the bounds.
 template <class Position>
-void stepped_state(const Problem& pb, const Block_range& range, const State& st, const std::vector<double>& delta,
-                   double alpha, Position pos, State& trial) {
+void stepped_state(const Problem& pb, const Block_range& range, const Kappa_solver_state& st, const std::vector<double>& delta,
+                   double alpha, Position pos, Kappa_solver_state& trial) {
   trial = st;
   const std::size_t na = range.all ? pb.n : range.count;
   for (std::size_t ii = 0; ii < na; ++ii) {
@@ -181,7 +250,7 @@ void stepped_state(const Problem& pb, const Block_range& range, const State& st,
 }
 
 /// The residuals of the blocks of `range` (all: evaluate()) into F; returns max |r|.
-inline double evaluate_range(const Problem& pb, const State& s, const Block_range& range, std::vector<double>& F) {
+inline double evaluate_range(const Problem& pb, const Kappa_solver_state& s, const Block_range& range, std::vector<double>& F) {
   if (range.all) return evaluate(pb, s, F);
   F.resize(4 * range.count);
   Window<double> win;
@@ -202,31 +271,28 @@ inline double evaluate_range(const Problem& pb, const State& s, const Block_rang
 
 /// Levenberg-Marquardt from `st` on the blocks of `range` (all by default); returns the final
 /// max |r|. Counts iterations in res.
-inline double levenberg_marquardt(const Problem& pb, State& st, const Solve_settings& settings, Solve_result& res,
-                                  std::size_t max_iterations, const Block_range& range = {}) {
+inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                                  Kappa_solve_report& res, std::size_t max_iterations, const Block_range& range = {}) {
   const std::size_t n = pb.n;
   project_bounds(st);
   const std::size_t na = range.all ? n : range.count, N = 4 * na;
   // Position of the ii-th active unknown block (range_block) in the band order.
   auto pos = [&](std::size_t ii) { return range.all ? (pb.closed ? cyclic_position(ii, n) : ii) : ii; };
-  // A contiguous range (count <= n - 3 for closed curves) in natural order couples blocks at
-  // distance <= 3 only: half bandwidth 15.
-  const std::size_t h = range.all ? normal_bandwidth(pb) : std::min<std::size_t>(15, N - 1);
+  const std::size_t h = range.all ? normal_bandwidth(pb) : std::min<std::size_t>(range_bandwidth, N - 1);
   std::vector<double> F, Ftrial, g(N), D(N), delta(N), Abase;
   double fmax = evaluate_range(pb, st, range, F);
   double cost = half_squared_norm(F);
   double mu = -1, nu = 2;
   Banded_cholesky chol;
-  State trial;
+  Kappa_solver_state trial;
 
-  // Polishing: once max |r| <= tolerance, at most two more iterations aim at 1e-3 tolerance
-  // (rounding permitting), so that derived quantities (e.g. circle reproduction) are accurate
-  // to the tolerance itself. Stall: 30 consecutive accepted steps each gaining < 0.1 %.
+  // Polishing (lm_polish_iterations, towards polish_fraction x tolerance) and stall detection
+  // (lm_stall_steps steps each gaining < lm_stall_gain): see the constants above.
   std::size_t polish = 0, stalled = 0;
   std::size_t iterations = 0;
   while (iterations < max_iterations && std::isfinite(cost)) {
     if (fmax <= settings.tolerance) {
-      if (polish >= 2 || fmax <= 1e-3 * settings.tolerance) break;
+      if (polish >= lm_polish_iterations || fmax <= polish_fraction * settings.tolerance) break;
       ++polish;
     }
     ++iterations;
@@ -235,11 +301,11 @@ inline double levenberg_marquardt(const Problem& pb, State& st, const Solve_sett
     double maxdiag = 0;
     for (std::size_t k = 0; k < N; ++k) maxdiag = std::max(maxdiag, chol.diagonal(k));
     if (!(maxdiag > 0) || !std::isfinite(maxdiag)) break;
-    for (std::size_t k = 0; k < N; ++k) D[k] = std::max(chol.diagonal(k), 1e-12 * maxdiag);
-    if (mu < 0) mu = 1e-8;
+    for (std::size_t k = 0; k < N; ++k) D[k] = std::max(chol.diagonal(k), lm_diagonal_floor * maxdiag);
+    if (mu < 0) mu = lm_initial_damping;
     Abase = chol.storage();
     bool accepted = false;
-    for (int attempt = 0; attempt < (polish ? 4 : 40) && !accepted; ++attempt) {
+    for (int attempt = 0; attempt < (polish ? lm_polish_attempts : lm_attempts) && !accepted; ++attempt) {
       chol.storage() = Abase;
       for (std::size_t k = 0; k < N; ++k) chol.add_diagonal(k, mu * D[k]);
       if (!chol.factor()) { mu *= nu; nu *= 2; continue; }
@@ -253,7 +319,7 @@ inline double levenberg_marquardt(const Problem& pb, State& st, const Solve_sett
       pred *= 0.5;
       if (std::isfinite(ct) && ct < cost) {
         const double rho = pred > 0 ? (cost - ct) / pred : 1.0;
-        stalled = (ct > 0.999 * cost) ? stalled + 1 : 0;
+        stalled = (ct > (1 - lm_stall_gain) * cost) ? stalled + 1 : 0;
         st = trial;
         F.swap(Ftrial);
         cost = ct;
@@ -262,22 +328,22 @@ inline double levenberg_marquardt(const Problem& pb, State& st, const Solve_sett
         // refined initial guess the full Newton step is almost always right.
         const double q = 2 * rho - 1;
         mu *= (rho > 0.75) ? 0.01 : std::max(1.0 / 3.0, 1 - q * q * q);
-        mu = std::max(mu, 1e-20);
+        mu = std::max(mu, lm_min_damping);
         nu = 2;
         accepted = true;
       } else {
         mu *= nu;
         nu *= 2;
-        if (mu > 1e30) break;
+        if (mu > lm_max_damping) break;
       }
     }
-    if (!accepted || stalled >= 30) break;  // stagnation: no (useful) decrease at this precision
+    if (!accepted || stalled >= lm_stall_steps) break;  // stagnation: no (useful) decrease at this precision
   }
   return fmax;
 }
 
 /// Newton's method on the square system: each step solves J delta = -r directly (block LU,
-/// kappa_block_lu.h, O(n)), then a backtracking (Armijo) line search on 1/2 |r|^2 along delta
+/// block_lu.h, O(n)), then a backtracking (Armijo) line search on 1/2 |r|^2 along delta
 /// with the bounds projected. In the quadratic regime, "chord" steps reuse the last
 /// factorisation (cost: one evaluation and one solve); once max |r| <= tolerance, at most one
 /// more chord step pushes the residual towards the rounding floor, so that derived quantities
@@ -286,22 +352,22 @@ inline double levenberg_marquardt(const Problem& pb, State& st, const Solve_sett
 /// capped by 2 x max_iterations.
 /// Returns max |r| reached (st: the last accepted state). Stops early -- leaving the rest to
 /// Levenberg-Marquardt -- on a singular pivot block or a failed line search.
-inline double newton(const Problem& pb, State& st, const Solve_settings& settings, Solve_result& res,
-                     std::size_t max_iterations, const Block_range& range = {}) {
+inline double newton(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                     Kappa_solve_report& res, std::size_t max_iterations, const Block_range& range = {}) {
   const std::size_t n = pb.n, na = range.all ? n : range.count, N = 4 * na;
   project_bounds(st);
   std::vector<double> F, Ftrial, delta(N);
   double fmax = evaluate_range(pb, st, range, F), cost = half_squared_norm(F);
   Block_band_lu lu;
   Jacobian_workspace jws;
-  State trial;
+  Kappa_solver_state trial;
   bool factored = false;
   auto try_step = [&](double alpha) {
     stepped_state(pb, range, st, delta, alpha, [](std::size_t ii) { return ii; }, trial);
     const double fm = evaluate_range(pb, trial, range, Ftrial);
     const double ct = half_squared_norm(Ftrial);
     // Armijo condition: the directional derivative of 1/2|r|^2 along the Newton step is -|r|^2.
-    if (!(std::isfinite(ct) && ct <= (1 - 2e-4 * alpha) * cost)) return false;
+    if (!(std::isfinite(ct) && ct <= (1 - 2 * armijo_constant * alpha) * cost)) return false;
     st.dx.swap(trial.dx); st.dy.swap(trial.dy); st.lambda.swap(trial.lambda); st.t.swap(trial.t);
     F.swap(Ftrial);
     cost = ct;
@@ -317,7 +383,7 @@ inline double newton(const Problem& pb, State& st, const Solve_settings& setting
   std::size_t jacobians = 0;
   for (std::size_t it = 0; it < 2 * max_iterations && jacobians < max_iterations && std::isfinite(cost); ++it) {
     if (fmax <= settings.tolerance) {
-      if (factored && fmax > 1e-3 * settings.tolerance) chord_step();
+      if (factored && fmax > polish_fraction * settings.tolerance) chord_step();
       break;
     }
     // In the quadratic regime the Jacobian of the previous iterate is accurate enough: a chord
@@ -325,7 +391,7 @@ inline double newton(const Problem& pb, State& st, const Solve_settings& setting
     // Newton step. Kept while it reduces max |r| tenfold or more.
     if (factored && contracting) {
       const double before = fmax;
-      contracting = chord_step() && fmax <= 0.1 * before;
+      contracting = chord_step() && fmax <= chord_contraction * before;
       continue;
     }
     // A range (count <= n - 3 for closed curves) is an open-structured system: the window
@@ -352,25 +418,26 @@ inline double newton(const Problem& pb, State& st, const Solve_settings& setting
     lu.finish_solve(delta.data());
     const double before = fmax;
     bool accepted = false;
-    for (double alpha = 1.0; alpha >= 1.0 / 64 && !accepted; alpha *= 0.5) accepted = try_step(alpha);
+    for (double alpha = 1.0; alpha >= newton_min_step && !accepted; alpha *= 0.5) accepted = try_step(alpha);
     if (!accepted) break;
-    contracting = fmax <= 1e-2 * before;
+    contracting = fmax <= newton_contraction * before;
   }
   return fmax;
 }
 
-/// Number of t_i, lambda_i within 1e-4 of 0 or 1. A "root" with such a value is degenerate
-/// (Q_i at a join: its piece has no interior curvature extremum there); it is never reported
-/// as converged.
-inline std::size_t bounds_active(const Problem& pb, const State& st, std::vector<std::size_t>* blocks = nullptr) {
+/// Number of t_i, lambda_i within bound_margin of 0 or 1. A "root" with such a value is
+/// degenerate (Q_i at a join: its piece has no interior curvature extremum there); it is never
+/// reported as converged. `points` receives the input points (Problem::point_index) of these blocks.
+inline std::size_t bounds_active(const Problem& pb, const Kappa_solver_state& st,
+                                 std::vector<std::size_t>* points = nullptr) {
   std::size_t count = 0;
-  const double b = 1e-4;
-  if (blocks) blocks->clear();
+  const double b = bound_margin;
+  if (points) points->clear();
   for (std::size_t i = 0; i < pb.n; ++i) {
     const bool t_out = st.t[i] < b || st.t[i] > 1 - b;
     const bool lambda_out = pb.has_start(i) && (st.lambda[i] < b || st.lambda[i] > 1 - b);
     count += (t_out ? 1 : 0) + (lambda_out ? 1 : 0);
-    if (blocks && (t_out || lambda_out)) blocks->push_back(i);
+    if (points && (t_out || lambda_out)) points->push_back(pb.point_index(i));
   }
   return count;
 }
@@ -381,7 +448,8 @@ constexpr std::size_t newton_iterations = 30;
 constexpr std::size_t local_lm_iterations = 20;
 
 /// The report of a solve that reached max |r| = fmax at st (and st.w set to the weights).
-inline Solve_result finish(const Problem& pb, State& st, const Solve_settings& settings, Solve_result res, double fmax) {
+inline Kappa_solve_report finish(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                                 Kappa_solve_report res, double fmax) {
   const std::size_t n = pb.n;
   std::vector<double> F;
   res.converged = fmax <= settings.tolerance;
@@ -394,14 +462,14 @@ inline Solve_result finish(const Problem& pb, State& st, const Solve_settings& s
     // the returned curve is always a valid interpolating G1 curve; the report then says how
     // far curvature continuity, eq. 7 and (automatic weights) eq. 16 are from holding.
     evaluate(pb, st, F, nullptr, &w);
-    State backup = st;
+    Kappa_solver_state backup = st;
     st.w = w;
     if (!solve_eq18(pb, st)) st = backup;
     Problem frozen = pb;
-    frozen.mode = Weight_mode::FIXED;
+    frozen.mode = Kappa_weights::FIXED;
     frozen.weight = st.w;
     res.residual = evaluate(frozen, st, F, &res);
-    if (pb.mode == Weight_mode::AUTOMATIC) {
+    if (pb.mode == Kappa_weights::AUTOMATIC) {
       std::vector<double> wt(n, 1.0);
       evaluate(pb, st, F, nullptr, &wt);
       for (std::size_t i = 0; i < n; ++i) {
@@ -412,101 +480,170 @@ inline Solve_result finish(const Problem& pb, State& st, const Solve_settings& s
       res.residual = std::max(res.residual, res.weight_residual);
     }
   }
-  res.bounds_active = bounds_active(pb, st, &res.boundary_blocks);
+  res.bounds_active = bounds_active(pb, st, &res.boundary_points);
   res.converged = res.residual <= settings.tolerance && res.bounds_active == 0;
   return res;
 }
 
-/// Solves the kappa-curve system; `st` holds the initial state when settings.warm.
-/// Strategy (cold start): initial guess, two alternating passes, Newton's method (the fast
-/// path). If that does not reach an interior root: back to the state after the two passes, up
-/// to `refinement_passes` passes in all (stopping early once max |r| <= 1e-3), then Newton's
-/// method again, then (from the same passes) Levenberg-Marquardt; if that stalls away from a
-/// root, one restart: up to 4 x `refinement_passes` more passes from the best state, then
-/// Levenberg-Marquardt again.
-/// Warm start: local solves around the moved point (see below), else Newton's method, else
-/// Levenberg-Marquardt, from the previous solution.
-inline Solve_result solve(const Problem& pb, State& st, const Solve_settings& settings) {
-  Solve_result res;
+/// An interior root: max |r| = fmax within the tolerance and no t_i, lambda_i on a bound.
+inline bool is_interior_root(const Problem& pb, const Kappa_solver_state& st, double fmax,
+                             const Solve_settings& settings) {
+  return fmax <= settings.tolerance && bounds_active(pb, st) == 0;
+}
+
+/// What is left of the iteration cap (Jacobians of the whole solve).
+inline std::size_t remaining_iterations(const Solve_settings& settings, const Kappa_solve_report& res) {
+  return settings.max_iterations > res.iterations ? settings.max_iterations - res.iterations : 0;
+}
+
+/// Cold start, the Newton paths: initial guess, fast_passes alternating passes, Newton's
+/// method (the fast path: from a residual of ~0.05 it converges quadratically in two or three
+/// Jacobians on typical data). If that fails: the paper's way, up to `refinement_passes` passes
+/// from the initial guess, then Newton's method again (on random data in the unit square it then
+/// converges as often as Levenberg-Marquardt, and the union of both is larger).
+/// Returns true (fmax set) at an interior root; otherwise st is the state after the passes.
+inline bool cold_start_newton(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                              Kappa_solve_report& res, double& fmax) {
+  initial_guess(pb, st);
+  const std::size_t first_passes = std::min<std::size_t>(fast_passes, settings.refinement_passes);
+  refine(pb, st, first_passes, refinement_stop, res);
+  fmax = newton(pb, st, settings, res, std::min<std::size_t>(settings.max_iterations, newton_iterations));
+  if (is_interior_root(pb, st, fmax, settings)) return true;
+  // The start is recomputed (deterministic) rather than kept: no copy of the state on the
+  // fast path.
+  initial_guess(pb, st);
+  Kappa_solve_report passes;
+  refine(pb, st, settings.refinement_passes, refinement_stop, passes);
+  res.refinement_passes = passes.refinement_passes;
+  if (res.iterations < settings.max_iterations && passes.refinement_passes > first_passes) {
+    Kappa_solver_state after_passes = st;
+    fmax = newton(pb, st, settings, res, std::min(settings.max_iterations - res.iterations, newton_iterations));
+    if (is_interior_root(pb, st, fmax, settings)) return true;
+    st = after_passes;
+  }
+  return false;
+}
+
+/// The blocks within distance R of block `moved` (cyclic for closed curves, clipped for open
+/// ones); false when they would cover the curve, or leave fewer than closed_range_gap blocks of
+/// a closed one: then only the global solve is left.
+inline bool local_range(const Problem& pb, std::size_t moved, std::size_t R, Block_range& range) {
   const std::size_t n = pb.n;
-  const bool cold = !settings.warm || st.t.size() != n;
-  if (cold) {
-    initial_guess(pb, st);
-    // Fast path: two passes bring the residual to ~0.05, from where Newton's method converges
-    // quadratically in two or three Jacobians on typical data. If it fails, start again the
-    // paper's way (up to refinement_passes passes), then Newton, then Levenberg-Marquardt.
-    const std::size_t fast_passes = std::min<std::size_t>(2, settings.refinement_passes);
-    refine(pb, st, fast_passes, 1e-3, res);
-    const double f = newton(pb, st, settings, res, std::min<std::size_t>(settings.max_iterations, newton_iterations));
-    if (f <= settings.tolerance && bounds_active(pb, st) == 0) return finish(pb, st, settings, res, f);
-    // The start is recomputed (deterministic) rather than kept: no copy of the state on the
-    // fast path.
-    initial_guess(pb, st);
-    Solve_result passes;
-    refine(pb, st, settings.refinement_passes, 1e-3, passes);
-    res.refinement_passes = passes.refinement_passes;
-    // Newton's method again from there (on random data in the unit square it then converges as
-    // often as Levenberg-Marquardt, and the union of both is larger), else Levenberg-Marquardt.
-    if (res.iterations < settings.max_iterations && passes.refinement_passes > fast_passes) {
-      State after_passes = st;
-      const double f2 = newton(pb, st, settings, res, std::min(settings.max_iterations - res.iterations, newton_iterations));
-      if (f2 <= settings.tolerance && bounds_active(pb, st) == 0) return finish(pb, st, settings, res, f2);
-      st = after_passes;
+  range.all = false;
+  if (pb.closed) {
+    if (2 * R + 1 + closed_range_gap > n) return false;
+    range.first = (moved + n - R) % n;
+    range.count = 2 * R + 1;
+  } else {
+    range.first = moved > R ? moved - R : 0;
+    range.count = std::min(n, moved + R + 1) - range.first;
+    if (range.count >= n) return false;
+  }
+  return true;
+}
+
+/// Local warm start after a change of the block settings.moved only: the change of one Q_i
+/// perturbs the solution by amounts that decay geometrically along the curve, so first solve
+/// only for the blocks within distance R of the moved one (the others held fixed; a square
+/// 4(2R+1) system, O(R) per iteration) and accept the result iff the residual of the WHOLE
+/// system is within the tolerance; R = local_radius_first, ... local_radius_last, then the
+/// global solve. The accepted state is a root of the full system to the same tolerance as a
+/// global solve. A local result that falls short but lowers the global residual is kept as the
+/// start of the next stage. Each stage: Newton (at most newton_iterations Jacobians), else a
+/// short Levenberg-Marquardt run (at most local_lm_iterations), both within the cap of the
+/// whole solve. Returns true (fmax set) at an interior root; otherwise st is the best state.
+inline bool local_warm_start(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                             Kappa_solve_report& res, double& fmax) {
+  if (settings.moved >= pb.n) return false;
+  std::vector<double> F;
+  double best = evaluate(pb, st, F);
+  for (std::size_t R = local_radius_first; R <= local_radius_last; R *= local_radius_growth) {
+    Block_range range;
+    if (!local_range(pb, settings.moved, R, range)) break;
+    Kappa_solver_state trial = st;
+    const std::size_t newton_cap = std::min(remaining_iterations(settings, res), newton_iterations);
+    if (!(newton(pb, trial, settings, res, newton_cap, range) <= settings.tolerance)) {
+      trial = st;
+      const std::size_t lm_cap = std::min(remaining_iterations(settings, res), local_lm_iterations);
+      levenberg_marquardt(pb, trial, settings, res, lm_cap, range);
+    }
+    const double fm = evaluate(pb, trial, F);
+    if (is_interior_root(pb, trial, fm, settings)) {
+      st = trial;
+      fmax = fm;
+      return true;
+    }
+    if (fm < best) {
+      st = trial;
+      best = fm;
     }
   }
-  // What is left of the iteration cap (Jacobians of the whole solve).
-  auto remaining = [&]() { return settings.max_iterations > res.iterations ? settings.max_iterations - res.iterations : 0; };
-  double fmax = std::numeric_limits<double>::infinity();
-  bool local_done = false;
-  if (!cold && settings.moved < n) {
-    // Local warm start: the change of one Q_i perturbs the solution by amounts that decay
-    // geometrically along the curve, so first solve only for the blocks within distance R of
-    // the moved one (the others held fixed; a square 4(2R+1) system, O(R) per iteration) and
-    // accept the result iff the residual of the WHOLE system is within the tolerance; R = 8,
-    // 32, then the global solve. The accepted state is a root of the full system to the same
-    // tolerance as a global solve. A local result that falls short but lowers the global
-    // residual is kept as the start of the next stage. Each stage: Newton (at most
-    // newton_iterations Jacobians), else a short Levenberg-Marquardt run (at most
-    // local_lm_iterations), both within the cap of the whole solve.
-    std::vector<double> F;
-    double best = evaluate(pb, st, F);
-    for (std::size_t R = 8; R <= 32 && !local_done; R *= 4) {
-      Block_range range;
-      range.all = false;
-      if (pb.closed) {
-        if (2 * R + 1 + 3 > n) break;
-        range.first = (settings.moved + n - R) % n;
-        range.count = 2 * R + 1;
-      } else {
-        range.first = settings.moved > R ? settings.moved - R : 0;
-        range.count = std::min(n, settings.moved + R + 1) - range.first;
-        if (range.count >= n) break;
-      }
-      State trial = st;
-      if (!(newton(pb, trial, settings, res, std::min(remaining(), newton_iterations), range) <= settings.tolerance)) {
-        trial = st;
-        levenberg_marquardt(pb, trial, settings, res, std::min(remaining(), local_lm_iterations), range);
-      }
-      const double fm = evaluate(pb, trial, F);
-      if (fm <= settings.tolerance && bounds_active(pb, trial) == 0) { st = trial; fmax = fm; local_done = true; }
-      else if (fm < best) { st = trial; best = fm; }
-    }
-  }
-  if (!local_done && !cold) {
-    // Global warm start: Newton's method from the previous solution, else Levenberg-Marquardt.
-    State start = st;
-    const double f = newton(pb, st, settings, res, std::min(remaining(), newton_iterations));
-    if (f <= settings.tolerance && bounds_active(pb, st) == 0) return finish(pb, st, settings, res, f);
-    st = start;
-  }
-  if (!local_done) fmax = levenberg_marquardt(pb, st, settings, res, remaining());
-  if (!(fmax <= settings.tolerance) && remaining() > 0 && settings.refinement_passes > 0) {
-    State best = st;
-    refine(pb, st, 4 * settings.refinement_passes, 1e-7, res);
-    const double f2 = levenberg_marquardt(pb, st, settings, res, remaining());
+  return false;
+}
+
+/// Global warm start: Newton's method from the previous solution. Returns true (fmax set) at
+/// an interior root; otherwise st is left unchanged.
+inline bool global_warm_newton(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                               Kappa_solve_report& res, double& fmax) {
+  Kappa_solver_state start = st;
+  fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), newton_iterations));
+  if (is_interior_root(pb, st, fmax, settings)) return true;
+  st = start;
+  return false;
+}
+
+/// The fallback: Levenberg-Marquardt from st; if that stalls away from a root, one restart (up
+/// to restart_pass_factor x `refinement_passes` more passes from the best state, then
+/// Levenberg-Marquardt again), keeping the better. Returns the max |r| reached.
+inline double levenberg_marquardt_with_restart(const Problem& pb, Kappa_solver_state& st,
+                                               const Solve_settings& settings, Kappa_solve_report& res) {
+  double fmax = levenberg_marquardt(pb, st, settings, res, remaining_iterations(settings, res));
+  if (!(fmax <= settings.tolerance) && remaining_iterations(settings, res) > 0 && settings.refinement_passes > 0) {
+    Kappa_solver_state best = st;
+    refine(pb, st, restart_pass_factor * settings.refinement_passes, restart_stop, res);
+    const double f2 = levenberg_marquardt(pb, st, settings, res, remaining_iterations(settings, res));
     if (!(f2 < fmax)) st = best; else fmax = f2;
   }
+  return fmax;
+}
+
+/// Solves the kappa-curve system; `st` holds the initial state when settings.warm.
+/// Cold start: cold_start_newton, else (from the passes) levenberg_marquardt_with_restart.
+/// Warm start (st of size n): local_warm_start around the moved block, else global_warm_newton,
+/// else levenberg_marquardt_with_restart, from the previous solution.
+inline Kappa_solve_report solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings) {
+  Kappa_solve_report res;
+  const bool cold = !settings.warm || st.t.size() != pb.n;
+  res.warm_started = !cold;
+  double fmax = std::numeric_limits<double>::infinity();
+  const bool root = cold ? cold_start_newton(pb, st, settings, res, fmax)
+                         : local_warm_start(pb, st, settings, res, fmax) || global_warm_newton(pb, st, settings, res, fmax);
+  if (!root) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
   return finish(pb, st, settings, res, fmax);
+}
+
+/// The warm/cold start policy of Kappa_curve_2: with a `previous` solution of the same size
+/// (offsets already in pb's normalisation), a warm start after a change of input point
+/// `moved_point` (any value that is not an input point: unknown change), and if that does not
+/// converge a cold start as well, keeping the solve with the smaller residual
+/// (report().warm_started says which); without one, a cold start. `st` receives the solution.
+inline Kappa_solve_report solve_with_warm_start(const Problem& pb, const Kappa_solver_state* previous,
+                                                std::size_t moved_point, Solve_settings settings,
+                                                Kappa_solver_state& st) {
+  settings.warm = false;
+  settings.moved = Problem::no_block;
+  if (previous == nullptr || previous->t.size() != pb.n) return solve(pb, st, settings);
+  st = *previous;
+  Solve_settings warm = settings;
+  warm.warm = true;
+  warm.moved = pb.block_of_point(moved_point);
+  const Kappa_solve_report warm_report = solve(pb, st, warm);
+  if (warm_report.converged) return warm_report;
+  Kappa_solver_state cold;
+  Kappa_solve_report cold_report = solve(pb, cold, settings);
+  if (!(cold_report.residual < warm_report.residual)) return warm_report;
+  st = std::move(cold);
+  return cold_report;
 }
 
 } // namespace kappa

@@ -2,8 +2,8 @@
 //
 // The square system behind fair::Kappa_curve_2 (rational kappa-curves of Yan, Schiller, Schaefer;
 // equation numbers refer to that paper): the unknowns of one solve, and the four residuals of
-// each block, evaluated in double (kappa_solver.h, kappa_refinement.h) or with derivatives
-// (kappa_jacobian.h).
+// each block, evaluated in double (solver.h, refinement.h) or with derivatives
+// (jacobian.h).
 //
 // Unknowns, per interpolated point i (one "block" of four): the middle control point
 // P_i = P_{i,1} (stored as the offset d_i = P_i - Q_i), the join parameter lambda_i of eq. 9
@@ -31,6 +31,8 @@
 #ifndef FAIR_INTERNAL_KAPPA_SYSTEM_H
 #define FAIR_INTERNAL_KAPPA_SYSTEM_H
 
+#include <fair/Kappa_curve_options.h>
+#include <fair/Kappa_solve_report.h>
 #include <fair/internal/kappa/dual.h>
 
 #include <algorithm>
@@ -42,44 +44,35 @@ namespace fair {
 namespace internal {
 namespace kappa {
 
-enum class Weight_mode { UNIT, FIXED, AUTOMATIC };
-
 /// The (normalised) data of one solve. Block i interpolates (qx[i], qy[i]).
 struct Problem {
   bool closed = false;
   std::size_t n = 0;
   std::vector<double> qx, qy;
   double sx = 0, sy = 0, ex = 0, ey = 0;  // open curves: the fixed end points Q_0, Q_{m-1}
-  Weight_mode mode = Weight_mode::UNIT;
+  Kappa_weights mode = Kappa_weights::UNIT;  // the public enum: the solver reads the option as given
   std::vector<double> weight;   // mode fixed: w_i
   std::vector<double> tension;  // mode automatic: mu_i of eq. 16
   double clamp = 0.5;           // mode automatic: lower clamp of eq. 16
 
   bool has_start(std::size_t j) const { return closed || j >= 1; }
   bool has_end(std::size_t j) const { return closed || j + 1 < n; }
-};
-
-/// Unknowns: d_i = P_i - Q_i, lambda_i, t_i; w_i as last computed.
-struct State {
-  std::vector<double> dx, dy, lambda, t, w;
-  void resize(std::size_t n) {
-    dx.assign(n, 0.0); dy.assign(n, 0.0); lambda.assign(n, 0.5); t.assign(n, 0.5); w.assign(n, 1.0);
+  /// Index among the curve's input points of the point block j interpolates (an open curve's
+  /// end points are input points 0 and n + 1).
+  std::size_t point_index(std::size_t j) const { return closed ? j : j + 1; }
+  /// The block of input point p (an open curve's end points belong to its end blocks), or
+  /// no_block when p is not an input point.
+  std::size_t block_of_point(std::size_t p) const {
+    if (p >= (closed ? n : n + 2)) return no_block;
+    return closed ? p : std::min(std::max<std::size_t>(p, 1) - 1, n - 1);
   }
+  /// "No block": a warm start after an unknown change.
+  static constexpr std::size_t no_block = static_cast<std::size_t>(-1);
 };
 
-struct Solve_result {
-  std::size_t refinement_passes = 0;
-  std::size_t iterations = 0;
-  bool converged = false;
-  double residual = 0;               // max |r| over all equations
-  double interpolation_residual = 0; // max |c_i(t_i) - Q_i| (normalised coordinates)
-  double curvature_residual = 0;     // max |eq. 7| / (A_i + C_i)
-  double g2_residual = 0;            // max relative |kappa| mismatch at joins
-  double weight_residual = 0;        // max |w_i - w~_i| (automatic weights)
-  double energy_interpolation = 0, energy_curvature = 0, energy_g2 = 0, energy_weight = 0;
-  std::size_t bounds_active = 0;     // t_i or lambda_i within 1e-4 of 0 or 1
-  std::vector<std::size_t> boundary_blocks;  // the blocks i with t_i or lambda_i there
-};
+// The unknowns of a solve are the public fair::Kappa_solver_state (d_i = P_i - Q_i, lambda_i,
+// t_i; w_i as last computed) and its report the public fair::Kappa_solve_report, both filled
+// here directly (residuals normalised as in the file comment).
 
 // ----------------------------------------------------------------------------- residuals
 
@@ -108,7 +101,7 @@ template <int N> struct Seed<Dual<N>> {
 };
 
 template <class S>
-void build_window(const Problem& pb, const State& st, std::size_t i, Window<S>& win) {
+void build_window(const Problem& pb, const Kappa_solver_state& st, std::size_t i, Window<S>& win) {
   const long n = static_cast<long>(pb.n);
   for (int k = 0; k < 4; ++k) {
     long b = static_cast<long>(i) - 2 + k;
@@ -140,16 +133,16 @@ S automatic_weight(const S* E0, const S* P, const S* E2, double mu, double clamp
 template <class S>
 S piece_weight(const Problem& pb, std::size_t j, const S* E0, const S* P, const S* E2) {
   switch (pb.mode) {
-    case Weight_mode::FIXED: return S(pb.weight[j]);
-    case Weight_mode::AUTOMATIC: return automatic_weight(E0, P, E2, pb.tension[j], pb.clamp);
-    case Weight_mode::UNIT: break;
+    case Kappa_weights::FIXED: return S(pb.weight[j]);
+    case Kappa_weights::AUTOMATIC: return automatic_weight(E0, P, E2, pb.tension[j], pb.clamp);
+    case Kappa_weights::UNIT: break;
   }
   return S(1.0);
 }
 
 /// End points and weight of piece j = i - 2 + k (k = 1 or 2) in the window of block i.
 template <class S>
-void piece_values(const Problem& pb, const State& st, std::size_t i, const Window<S>& win, int k,
+void piece_values(const Problem& pb, const Kappa_solver_state& st, std::size_t i, const Window<S>& win, int k,
                   Piece_values<S>& pv) {
   const std::size_t j = win.block[k];
   if (pb.has_start(j)) {
@@ -169,8 +162,8 @@ void piece_values(const Problem& pb, const State& st, std::size_t i, const Windo
 /// The weight of piece j = i - 2 + k (k = 1 or 2) in the window of block i (its end points are
 /// formed only when the weight depends on them).
 template <class S>
-S window_piece_weight(const Problem& pb, const State& st, std::size_t i, const Window<S>& win, int k) {
-  if (pb.mode != Weight_mode::AUTOMATIC) return piece_weight<S>(pb, win.block[k], nullptr, nullptr, nullptr);
+S window_piece_weight(const Problem& pb, const Kappa_solver_state& st, std::size_t i, const Window<S>& win, int k) {
+  if (pb.mode != Kappa_weights::AUTOMATIC) return piece_weight<S>(pb, win.block[k], nullptr, nullptr, nullptr);
   Piece_values<S> pv;
   piece_values(pb, st, i, win, k, pv);
   return pv.w;
@@ -198,7 +191,7 @@ void piece_residuals(const S* E0, const S* X, const S* E2, const S& t, const S& 
 /// Residual r_3 of block i: |kappa| continuity at the join between pieces i-1 and i (eqs. 5,
 /// 10), given the weight wc of piece i; lambda_0 - 1/2 for the first block of an open curve.
 template <class S>
-S join_residual(const Problem& pb, const State& st, std::size_t i, const Window<S>& win, const S& wc) {
+S join_residual(const Problem& pb, const Kappa_solver_state& st, std::size_t i, const Window<S>& win, const S& wc) {
   if (!pb.has_start(i)) return win.lam[2] - 0.5;
   const S wp = window_piece_weight(pb, st, i, win, 1);
   const std::size_t jm = win.block[1];
@@ -221,7 +214,7 @@ S join_residual(const Problem& pb, const State& st, std::size_t i, const Window<
 
 /// The four residuals of block i (see the file comment). If `w_out` is given it receives w_i.
 template <class S>
-void block_residuals(const Problem& pb, const State& st, std::size_t i, const Window<S>& win, S r[4],
+void block_residuals(const Problem& pb, const Kappa_solver_state& st, std::size_t i, const Window<S>& win, S r[4],
                      double* w_out = nullptr) {
   Piece_values<S> pc;
   piece_values(pb, st, i, win, 2, pc);
@@ -231,8 +224,8 @@ void block_residuals(const Problem& pb, const State& st, std::size_t i, const Wi
 }
 
 /// All residuals in double; returns max |r| and fills the per-kind maxima/energies.
-inline double evaluate(const Problem& pb, const State& st, std::vector<double>& F, Solve_result* res = nullptr,
-                       std::vector<double>* weights = nullptr) {
+inline double evaluate(const Problem& pb, const Kappa_solver_state& st, std::vector<double>& F,
+                       Kappa_solve_report* res = nullptr, std::vector<double>* weights = nullptr) {
   F.resize(4 * pb.n);
   double mx = 0;
   if (res) {
