@@ -195,8 +195,8 @@ TEST(Metrics, RandomCubicsCertifiedCountsAreConsistent) {
     const std::vector<fair::Bezier_2<SC_gmpq>> cq{fair::Bezier_2<SC_gmpq>(q)};
     const std::vector<fair::Bezier_2<SC_double>> cd{fair::Bezier_2<SC_double>(p)};
     const auto h = fair::internal::metrics::homogeneous_exact(cq[0]);
-    const auto D = fair::internal::curvature_sign_polynomial(h);
-    if (fair::internal::is_zero_polynomial(D)) continue;
+    const auto D = fair::internal::metrics::curvature_sign_polynomial(h);
+    if (fair::internal::metrics::is_zero_polynomial(D)) continue;
     const fair::Feature_report in = fair::inflections(cq);
     // Double input converts exactly: the same certified answer.
     EXPECT_EQ(in.count(), fair::inflections(cd).count());

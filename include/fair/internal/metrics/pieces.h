@@ -238,6 +238,13 @@ private:
   mutable std::vector<double> scratch_;
 };
 
+/// Rejects an empty curve: every metric needs at least one piece. Returns `what`.
+template <class Piece>
+const char* check_curve(const std::vector<Piece>& curve, const char* what) {
+  require(!curve.empty(), what, ": the curve has no piece");
+  return what;
+}
+
 // ---------------------------------------------------------------- exact homogeneous form
 /// The homogeneous form (X, Y, W) = (sum B_i w_i x_i, sum B_i w_i y_i, sum B_i w_i) of a
 /// Bernstein-form piece over the exact rational type ET (W = 1 of degree 0 for polynomial pieces).
