@@ -8,7 +8,7 @@
 //  - curvature_profile: curvature against arc length samples;
 //  - arc_length, bending_energy (int kappa^2 ds), curvature_variation_energy (int (dkappa/ds)^2 ds,
 //    or int (dkappa/dt)^2 dt per piece): adaptive Gauss-Kronrod quadrature in double with an
-//    error estimate (internal/metrics/quadrature.h), capped (Non_convergence_error);
+//    error estimate (fair/Quadrature.h), capped (Non_convergence_error);
 //  - inflections and curvature_extrema: CERTIFIED for Bernstein-form pieces. The piece's
 //    homogeneous form (X, Y, W) is converted exactly to rationals and
 //        D = det(P, P', P'')                    (P = (X, Y, W); D = x'y'' - y'x'' when W = 1),
@@ -29,6 +29,7 @@
 
 #include <fair/Bernstein_root_isolation.h>
 #include <fair/Errors.h>
+#include <fair/Quadrature.h>
 #include <fair/internal/metrics/energies.h>
 #include <fair/internal/metrics/pieces.h>
 #include <fair/internal/metrics/quadrature.h>
