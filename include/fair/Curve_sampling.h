@@ -8,21 +8,20 @@
 // Accuracy. Points, normals and curvatures are the piece's own values rounded to double (where
 // a piece's curvature() throws or overflows -- e.g. |c'|^2 beyond the double range for
 // coordinates near 1e300 -- the curvature is recomputed from c' and c'' with a scaling that
-// avoids overflow and underflow). Arc
-// length is integrated, not accumulated from chords: on each sampling interval the speed
-// |c'(t)| is integrated by adaptive 7-point Gauss-Legendre quadrature (exact for polynomial
-// integrands up to degree 13; the interval is bisected until the one-level and two-level
-// results agree to 1e-13 of the piece's scale). For a regular piece the arc length is then
-// accurate to about 1e-12 relative. Degenerate cases: where c'(t) = 0 (a cusp, or a degenerate
-// end of a piece) |c'| has a kink; bisection stops at depth 40 and the last estimate is kept,
-// which still leaves an error far below the sampling resolution. At such a sample the normal
-// and the curvature are the one-sided limits, taken at t moved by 1e-9 (then 1e-7, 1e-5)
-// towards the inside of the piece; if the piece is singular there too, Precondition_error.
+// avoids overflow and underflow). Arc length is integrated, not accumulated from chords: on each
+// sampling interval the speed |c'(t)| is integrated by the library's adaptive Gauss-Kronrod
+// quadrature (fair/Quadrature.h) to 1e-13 of the interval's length (arc_length_options()), so
+// for a regular piece the arc length is accurate to about 1e-13 relative. Where c'(t) = 0 (a
+// cusp, or a degenerate end of a piece) |c'| has a kink, which the adaptive bisection resolves.
+// At such a sample the normal and the curvature are the one-sided limits, taken at t moved by
+// 1e-9 (then 1e-7, 1e-5) towards the inside of the piece; if the piece is singular there too,
+// Precondition_error.
 
 #ifndef FAIR_CURVE_SAMPLING_H
 #define FAIR_CURVE_SAMPLING_H
 
 #include <fair/Errors.h>
+#include <fair/Quadrature.h>
 #include <fair/internal/metrics/sampler.h>
 
 #include <CGAL/number_utils.h>
@@ -59,19 +58,28 @@ struct Sampled_curve {
 };
 
 
-/// Arc length of one piece between parameters a <= b, by adaptive Gauss-Legendre quadrature
-/// of |c'(t)| (accuracy: see the top of this file).
+/// The quadrature options of the sampler's arc lengths: 1e-13 relative to the length of each
+/// interval (the accuracy the plots and the gallery's length figures rely on), no absolute floor
+/// so that the accuracy does not depend on the scale of the curve.
+inline Quadrature_options arc_length_options() {
+  Quadrature_options o;
+  o.relative_tolerance = 1e-13;
+  o.absolute_tolerance = 0;
+  o.initial_subintervals = 1;
+  return o;
+}
+
+/// Arc length of one piece between parameters 0 <= a <= b <= 1: the adaptive Gauss-Kronrod
+/// quadrature of |c'(t)| (fair/Quadrature.h) to the accuracy of `options`.
+/// \throws Precondition_error unless a <= b are finite, or if |c'| is not finite on [a, b];
+/// Non_convergence_error when options.max_subintervals does not reach the accuracy.
 template <class Piece>
-double piece_arc_length(const Piece& piece, double a = 0.0, double b = 1.0) {
+double piece_arc_length(const Piece& piece, double a = 0.0, double b = 1.0,
+                        const Quadrature_options& options = arc_length_options()) {
   internal::require(a <= b && std::isfinite(a) && std::isfinite(b),
                     "piece_arc_length: need finite a <= b, got a = ", a, ", b = ", b);
-  const double scale = internal::metrics::control_polygon_length(piece);
-  const double whole = internal::metrics::gauss_legendre_7(piece, a, b);
-  const double length = internal::metrics::adaptive_length(piece, a, b, whole, 1e-13 * scale * (b - a), 0);
-  if (!std::isfinite(length))
-    throw Precondition_error(internal::message("piece_arc_length: non-finite length on [", a, ", ",
-                                               b, "]"));
-  return length;
+  const internal::metrics::Piece_jet<Piece> jet(piece);
+  return internal::metrics::arc_length_between(jet, a, b, options, "piece_arc_length");
 }
 
 /// Samples every piece of `pieces` (a range of CurvePiece_2 pieces, joined end to start) at
@@ -87,18 +95,16 @@ Sampled_curve sample_curve(const PieceRange& pieces, std::size_t samples_per_pie
   double s = 0;
   std::size_t index = 0;
   const double n = static_cast<double>(samples_per_piece);
+  const Quadrature_options options = arc_length_options();
   for (const Piece& piece : pieces) {
     out.piece_start.push_back(s);
-    const double scale = internal::metrics::control_polygon_length(piece);
+    const internal::metrics::Piece_jet<Piece> jet(piece);
     double previous_t = 0;
     for (std::size_t k = 0; k <= samples_per_piece; ++k) {
       Curve_sample c;
       c.piece = index;
       c.t = k == samples_per_piece ? 1.0 : static_cast<double>(k) / n;
-      if (k > 0) {
-        const double whole = internal::metrics::gauss_legendre_7(piece, previous_t, c.t);
-        s += internal::metrics::adaptive_length(piece, previous_t, c.t, whole, 1e-13 * scale / n, 0);
-      }
+      if (k > 0) s += internal::metrics::arc_length_between(jet, previous_t, c.t, options, "sample_curve");
       previous_t = c.t;
       const auto p = piece.point(FT(c.t));
       c.x = CGAL::to_double(p.x());

@@ -179,7 +179,9 @@ public:
     }
   }
 
-  Jet operator()(double t) const {
+  /// The jet at t. Derivatives above `order` (1..3) may be left 0: only a generic piece saves work
+  /// with that (its third derivative costs two more evaluations).
+  Jet operator()(double t, int order = 3) const {
     Jet j;
     if constexpr (Piece_kind<P>::value != 0) {
       double X[4], Y[4], W[4];
@@ -207,6 +209,7 @@ public:
       j.x = CGAL::to_double(p.x()); j.y = CGAL::to_double(p.y());
       j.x1 = CGAL::to_double(d1.x()); j.y1 = CGAL::to_double(d1.y());
       j.x2 = CGAL::to_double(d2.x()); j.y2 = CGAL::to_double(d2.y());
+      if (order < 3) return j;
       // Second-order differences that stay inside [0,1] (pieces may reject other parameters):
       // central inside, one-sided three-point formulas within h of an end.
       const double h = 1e-4;
