@@ -5,13 +5,15 @@
 // per sample the point, the unit normal, the signed curvature, the arc length from the start
 // of the curve, the piece index and the piece parameter.
 //
-// Accuracy. Points, normals and curvatures are the piece's own values rounded to double (where
-// a piece's curvature() throws or overflows -- e.g. |c'|^2 beyond the double range for
-// coordinates near 1e300 -- the curvature is recomputed from c' and c'' with a scaling that
-// avoids overflow and underflow). Arc length is integrated, not accumulated from chords: on each
-// sampling interval the speed |c'(t)| is integrated by the library's adaptive Gauss-Kronrod
-// quadrature (fair/Quadrature.h) to 1e-13 of the interval's length (arc_length_options()), so
-// for a regular piece the arc length is accurate to about 1e-13 relative. Where c'(t) = 0 (a
+// Accuracy. Points, normals and curvatures are evaluated in double from the piece's jet
+// (internal/metrics/pieces.h: the Bernstein form converted to double once, or the piece's own
+// point / derivative / second_derivative for other pieces), the curvature by the scale-safe
+// formula of internal/common/curvature.h (no overflow or underflow for coordinates near
+// 1e+-300). The same sampler gives fair::curvature_profile. Arc length is integrated, not
+// accumulated from chords: on each sampling interval the speed |c'(t)| is integrated by the
+// library's adaptive Gauss-Kronrod quadrature (fair/Quadrature.h) to 1e-13 of the interval's
+// length (arc_length_options()), so for a regular piece the arc length is accurate to about
+// 1e-13 relative. Where c'(t) = 0 (a
 // cusp, or a degenerate end of a piece) |c'| has a kink, which the adaptive bisection resolves.
 // At such a sample the normal and the curvature are the one-sided limits, taken at t moved by
 // 1e-9 (then 1e-7, 1e-5) towards the inside of the piece; if the piece is singular there too,
@@ -22,15 +24,9 @@
 
 #include <fair/Errors.h>
 #include <fair/Quadrature.h>
-#include <fair/internal/metrics/sampler.h>
 
-#include <CGAL/number_utils.h>
-
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstddef>
-#include <iterator>
 #include <vector>
 
 namespace fair {
@@ -57,6 +53,12 @@ struct Sampled_curve {
   std::size_t number_of_pieces() const { return piece_start.empty() ? 0 : piece_start.size() - 1; }
 };
 
+} // namespace fair
+
+// The implementation needs the types above.
+#include <fair/internal/metrics/sampler.h>
+
+namespace fair {
 
 /// The quadrature options of the sampler's arc lengths: 1e-13 relative to the length of each
 /// interval (the accuracy the plots and the gallery's length figures rely on), no absolute floor
@@ -88,39 +90,8 @@ double piece_arc_length(const Piece& piece, double a = 0.0, double b = 1.0,
 /// neighbourhood of a sample.
 template <class PieceRange>
 Sampled_curve sample_curve(const PieceRange& pieces, std::size_t samples_per_piece = 64) {
-  internal::require(samples_per_piece > 0, "sample_curve: samples_per_piece must be > 0");
-  typedef typename std::iterator_traits<decltype(std::begin(pieces))>::value_type Piece;
-  typedef typename Piece::FT FT;
-  Sampled_curve out;
-  double s = 0;
-  std::size_t index = 0;
-  const double n = static_cast<double>(samples_per_piece);
-  const Quadrature_options options = arc_length_options();
-  for (const Piece& piece : pieces) {
-    out.piece_start.push_back(s);
-    const internal::metrics::Piece_jet<Piece> jet(piece);
-    double previous_t = 0;
-    for (std::size_t k = 0; k <= samples_per_piece; ++k) {
-      Curve_sample c;
-      c.piece = index;
-      c.t = k == samples_per_piece ? 1.0 : static_cast<double>(k) / n;
-      if (k > 0) s += internal::metrics::arc_length_between(jet, previous_t, c.t, options, "sample_curve");
-      previous_t = c.t;
-      const auto p = piece.point(FT(c.t));
-      c.x = CGAL::to_double(p.x());
-      c.y = CGAL::to_double(p.y());
-      if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(s))
-        throw Precondition_error(internal::message("sample_curve: piece ", index, " at t = ", c.t,
-                                                   " gives the non-finite point (", c.x, ", ", c.y,
-                                                   ") or arc length ", s));
-      internal::metrics::normal_and_curvature(piece, index, c.t, c.nx, c.ny, c.curvature);
-      c.arc_length = s;
-      out.samples.push_back(c);
-    }
-    ++index;
-  }
-  out.piece_start.push_back(s);
-  return out;
+  return internal::metrics::sample_pieces(pieces, samples_per_piece, arc_length_options(),
+                                          internal::metrics::At_singular_sample::ONE_SIDED_LIMIT, "sample_curve");
 }
 
 } // namespace fair

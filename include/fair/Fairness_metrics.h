@@ -95,31 +95,25 @@ namespace fair {
 /// Arc length of the curve, int |c'(t)| dt over every piece.
 template <class Piece>
 Quadrature_estimate arc_length(const std::vector<Piece>& curve, const Quadrature_options& options = Quadrature_options()) {
-  return internal::metrics::integrate_over_curve(curve, [](const internal::metrics::Jet& j) { return j.speed(); }, options, "arc_length");
+  return internal::metrics::arc_length(curve, options);
 }
 
 /// Bending (strain) energy int kappa^2 ds = sum over pieces of int_0^1 kappa(t)^2 |c'(t)| dt.
+/// \throws Precondition_error at a singular point met by the quadrature.
 template <class Piece>
 Quadrature_estimate bending_energy(const std::vector<Piece>& curve, const Quadrature_options& options = Quadrature_options()) {
-  return internal::metrics::integrate_over_curve(
-      curve, [](const internal::metrics::Jet& j) { const double k = j.curvature(); return k * k * j.speed(); }, options,
-      "bending_energy");
+  return internal::metrics::bending_energy(curve, options);
 }
 
 /// Curvature variation energy: int (dkappa/ds)^2 ds = sum int_0^1 (dkappa/dt)^2 / |c'| dt
 /// (Energy_measure::ARC_LENGTH), or sum int_0^1 (dkappa/dt)^2 dt (Energy_measure::PARAMETER, eq. 5
 /// of Li's paper). Derivatives of order 3 are exact for Bernstein-form pieces.
+/// \throws Precondition_error at a singular point met by the quadrature.
 template <class Piece>
 Quadrature_estimate curvature_variation_energy(const std::vector<Piece>& curve,
                                                Energy_measure measure = Energy_measure::ARC_LENGTH,
                                                const Quadrature_options& options = Quadrature_options()) {
-  if (measure == Energy_measure::ARC_LENGTH)
-    return internal::metrics::integrate_over_curve(
-        curve, [](const internal::metrics::Jet& j) { const double k = j.curvature_derivative(); return k * k / j.speed(); },
-        options, "curvature_variation_energy");
-  return internal::metrics::integrate_over_curve(
-      curve, [](const internal::metrics::Jet& j) { const double k = j.curvature_derivative(); return k * k; }, options,
-      "curvature_variation_energy");
+  return internal::metrics::curvature_variation_energy(curve, measure == Energy_measure::ARC_LENGTH, options);
 }
 
 /// Curvature against arc length at samples_per_piece + 1 uniform parameters of every piece (the

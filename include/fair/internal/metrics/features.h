@@ -104,8 +104,7 @@ Curve_feature make_feature(const Piece& piece, std::size_t index, double t, cons
   const Jet j = jet(t);
   f.x = j.x;
   f.y = j.y;
-  const double s2 = j.x1 * j.x1 + j.y1 * j.y1;
-  f.curvature = s2 > 0 ? j.curvature() : 0.0;
+  f.curvature = j.curvature(); // 0 at a singular point
   f.at_joint = joint;
   return f;
 }

@@ -14,6 +14,7 @@
 #include <fair/Bernstein_polynomial.h>
 #include <fair/Bezier_2.h>
 #include <fair/Errors.h>
+#include <fair/internal/common/curvature.h>
 #include <fair/internal/bernstein/exact.h>
 
 #include <CGAL/Gmpq.h>
@@ -105,13 +106,10 @@ void bernstein_form(const P& piece, std::vector<typename P::Point_2>& cp, std::v
 struct Jet {
   double x = 0, y = 0, x1 = 0, y1 = 0, x2 = 0, y2 = 0, x3 = 0, y3 = 0;
   double speed() const { return std::hypot(x1, y1); }
-  // Both formulas divide by the speed s before multiplying, so that huge or tiny coordinates
-  // neither overflow nor underflow (u = c'/s is a unit vector).
-  /// Signed curvature (c' x c'') / |c'|^3.
-  double curvature() const {
-    const double s = speed(), ux = x1 / s, uy = y1 / s;
-    return (ux * (y2 / s) - uy * (x2 / s)) / s;
-  }
+  /// Signed curvature (c' x c'') / |c'|^3, scale-safe; 0 where c' = 0 (internal/common/curvature.h).
+  double curvature() const { return common::signed_curvature(x1, y1, x2, y2); }
+  // Divides by the speed s before multiplying, so that huge or tiny coordinates neither overflow
+  // nor underflow (u = c'/s is a unit vector).
   /// d kappa / dt = (c' x c''') / |c'|^3 - 3 (c' x c'')(c'.c'') / |c'|^5.
   double curvature_derivative() const {
     const double s = speed(), ux = x1 / s, uy = y1 / s;

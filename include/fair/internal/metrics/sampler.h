@@ -1,8 +1,12 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// The sampler of Curve_sampling.h: arc length by the adaptive Gauss-Kronrod quadrature of
-// |c'(t)| (internal/metrics/quadrature.h) on every sampling interval, normals and curvatures with
-// one-sided limits at singular parameters.
+// The one curvature sampler of the library, behind fair::sample_curve (Curve_sampling.h) and
+// fair::curvature_profile (Fairness_metrics.h): every piece is evaluated through its Piece_jet
+// (internal/metrics/pieces.h) at samples_per_piece + 1 uniform parameters; the arc length is the
+// adaptive Gauss-Kronrod quadrature of |c'(t)| on every sampling interval (quadrature.h), the
+// curvature the scale-safe one of internal/common/curvature.h. At a singular sample (c' = 0) the
+// caller chooses: throw, or take the one-sided limit a little inside the piece.
+// Included by Curve_sampling.h after its types (Curve_sample, Sampled_curve).
 
 #ifndef FAIR_INTERNAL_METRICS_SAMPLER_H
 #define FAIR_INTERNAL_METRICS_SAMPLER_H
@@ -12,12 +16,9 @@
 #include <fair/internal/metrics/pieces.h>
 #include <fair/internal/metrics/quadrature.h>
 
-#include <CGAL/number_utils.h>
-
-#include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <limits>
+#include <iterator>
 
 namespace fair {
 namespace internal {
@@ -30,51 +31,75 @@ double arc_length_between(const Piece_jet<Piece>& jet, double a, double b, const
   return adaptive_integral([&](double t) { return jet(t, 1).speed(); }, a, b, options, what).value;
 }
 
-/// Signed curvature from c' and c'' in double, scaled so that neither |c'|^3 nor the cross
-/// product overflows or underflows: with m = max(|x'|, |y'|), u = c'/m, v = c''/m,
-/// kappa = (u x v) / (m |u|^3). NaN when c' = 0 or a value is not finite.
-template <class Piece>
-double scaled_curvature(const Piece& piece, double t) {
-  typedef typename Piece::FT FT;
-  const auto d1 = piece.derivative(FT(t));
-  const auto d2 = piece.second_derivative(FT(t));
-  const double x1 = CGAL::to_double(d1.x()), y1 = CGAL::to_double(d1.y());
-  const double x2 = CGAL::to_double(d2.x()), y2 = CGAL::to_double(d2.y());
-  const double m = std::max(std::abs(x1), std::abs(y1));
-  if (!(m > 0) || !std::isfinite(m)) return std::numeric_limits<double>::quiet_NaN();
-  const double ux = x1 / m, uy = y1 / m, vx = x2 / m, vy = y2 / m;
-  const double u = std::hypot(ux, uy);
-  return (ux * vy - uy * vx) / (u * u * u) / m;
+/// What the sampler does at a sample where c' = 0 (the normal and the curvature are undefined).
+enum class At_singular_sample {
+  THROW,          ///< Precondition_error
+  ONE_SIDED_LIMIT ///< the values a little inside the piece (singular_sample_offsets)
+};
+
+/// How far inside the piece the one-sided limit at a singular sample is taken, tried in order:
+/// the smallest offset at which c' is nonzero in double, so that the limit is accurate.
+constexpr double singular_sample_offsets[] = {1e-9, 1e-7, 1e-5};
+
+/// Sets the unit normal and the curvature of `c` from the jet `j`; false where c' = 0 (or a value
+/// is not finite) and they are undefined.
+inline bool set_normal_and_curvature(const Jet& j, Curve_sample& c) {
+  const double v = j.speed();
+  const double kappa = j.curvature();
+  if (!(v > 0) || !std::isfinite(v) || !std::isfinite(kappa)) return false;
+  c.nx = -j.y1 / v;
+  c.ny = j.x1 / v;
+  c.curvature = kappa;
+  return true;
 }
 
-/// Unit normal and curvature at t, with the one-sided limit at a singular parameter. The
-/// piece's own curvature() is used; where it fails (it may overflow for coordinates near the
-/// ends of the double range), scaled_curvature() from the piece's derivatives.
-template <class Piece>
-void normal_and_curvature(const Piece& piece, std::size_t index, double t, double& nx, double& ny,
-                          double& kappa) {
-  typedef typename Piece::FT FT;
-  static const double nudges[4] = {0.0, 1e-9, 1e-7, 1e-5};
-  for (double nudge : nudges) {
-    const double s = t < 0.5 ? t + nudge : t - nudge;
-    const auto d = piece.derivative(FT(s));
-    const double dx = CGAL::to_double(d.x()), dy = CGAL::to_double(d.y());
-    const double v = std::hypot(dx, dy);
-    if (!(v > 0) || !std::isfinite(v)) continue;
-    double k = std::numeric_limits<double>::quiet_NaN();
-    try {
-      k = piece.curvature(s);
-    } catch (const Precondition_error&) {
+/// The sampled curve of `pieces` (a range of pieces joined end to start), arc lengths to the
+/// accuracy of `options`. \throws Precondition_error when samples_per_piece is 0, a point or the
+/// arc length is not finite, or at a singular sample (for ONE_SIDED_LIMIT: only when the piece is
+/// singular at every offset too).
+template <class PieceRange>
+Sampled_curve sample_pieces(const PieceRange& pieces, std::size_t samples_per_piece, const Quadrature_options& options,
+                            At_singular_sample at_singular, const char* what) {
+  require(samples_per_piece > 0, what, ": samples_per_piece must be > 0");
+  typedef typename std::iterator_traits<decltype(std::begin(pieces))>::value_type Piece;
+  Sampled_curve out;
+  double s = 0;
+  std::size_t index = 0;
+  const double n = static_cast<double>(samples_per_piece);
+  for (const Piece& piece : pieces) {
+    out.piece_start.push_back(s);
+    const Piece_jet<Piece> jet(piece);
+    double previous_t = 0;
+    for (std::size_t k = 0; k <= samples_per_piece; ++k) {
+      Curve_sample c;
+      c.piece = index;
+      c.t = k == samples_per_piece ? 1.0 : static_cast<double>(k) / n;
+      if (k > 0) s += arc_length_between(jet, previous_t, c.t, options, what);
+      previous_t = c.t;
+      const Jet j = jet(c.t, 2);
+      c.x = j.x;
+      c.y = j.y;
+      c.arc_length = s;
+      if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(s))
+        throw Precondition_error(message(what, ": piece ", index, " at t = ", c.t, " gives the non-finite point (", c.x,
+                                         ", ", c.y, ") or arc length ", s));
+      if (!set_normal_and_curvature(j, c)) {
+        require(at_singular == At_singular_sample::ONE_SIDED_LIMIT, what, ": singular point (c' = 0) on piece ", index,
+                " at t = ", c.t);
+        bool found = false;
+        for (double offset : singular_sample_offsets) {
+          found = set_normal_and_curvature(jet(c.t < 0.5 ? c.t + offset : c.t - offset, 2), c);
+          if (found) break;
+        }
+        require(found, what, ": piece ", index, " is singular at t = ", c.t,
+                " (c'(t) = 0 or undefined curvature, also nearby)");
+      }
+      out.samples.push_back(c);
     }
-    if (!std::isfinite(k)) k = scaled_curvature(piece, s);
-    if (!std::isfinite(k)) continue;
-    nx = -dy / v;
-    ny = dx / v;
-    kappa = k;
-    return;
+    ++index;
   }
-  throw Precondition_error(message("sample_curve: piece ", index, " is singular at t = ", t,
-                                   " (c'(t) = 0 or undefined curvature, also nearby)"));
+  out.piece_start.push_back(s);
+  return out;
 }
 
 } // namespace metrics
