@@ -28,6 +28,7 @@
 #define FAIR_FAIRNESS_METRICS_H
 
 #include <fair/Bernstein_root_isolation.h>
+#include <fair/Curve_sampling.h>
 #include <fair/Errors.h>
 #include <fair/Quadrature.h>
 #include <fair/internal/metrics/energies.h>
@@ -118,31 +119,20 @@ Quadrature_estimate curvature_variation_energy(const std::vector<Piece>& curve,
 
 /// Curvature against arc length at samples_per_piece + 1 uniform parameters of every piece (the
 /// first sample of a piece after the first is the previous piece's end, so both one-sided values
-/// at a join appear). Arc length by the adaptive quadrature of `options`.
+/// at a join appear): the sampler of fair::sample_curve, with arc lengths to the accuracy of
+/// `options`.
 /// \throws Precondition_error at a singular sample point.
 template <class Piece>
 std::vector<Curvature_sample> curvature_profile(const std::vector<Piece>& curve, std::size_t samples_per_piece = 64,
                                                 const Quadrature_options& options = Quadrature_options()) {
   internal::metrics::check_curve(curve, "curvature_profile");
-  internal::require(samples_per_piece >= 1, "curvature_profile: samples_per_piece must be >= 1");
-  std::vector<Curvature_sample> out;
-  double s = 0;
   Quadrature_options o = options;
-  o.initial_subintervals = 1;
-  for (std::size_t i = 0; i < curve.size(); ++i) {
-    internal::metrics::Piece_jet<Piece> jet(curve[i]);
-    double prev = 0;
-    for (std::size_t k = 0; k <= samples_per_piece; ++k) {
-      const double t = double(k) / double(samples_per_piece);
-      if (k > 0)
-        s += internal::metrics::adaptive_integral([&](double u) { return jet(u).speed(); }, prev, t, o, "curvature_profile").value;
-      const internal::metrics::Jet j = jet(t);
-      const double s2 = j.x1 * j.x1 + j.y1 * j.y1;
-      internal::require(s2 > 0, "curvature_profile: singular point (c' = 0) on piece ", i, " at t = ", t);
-      out.push_back(Curvature_sample{i, t, s, j.x, j.y, j.curvature()});
-      prev = t;
-    }
-  }
+  o.initial_subintervals = 1; // each sampling interval is already a small part of the piece
+  const Sampled_curve sampled = internal::metrics::sample_pieces(
+      curve, samples_per_piece, o, internal::metrics::At_singular_sample::THROW, "curvature_profile");
+  std::vector<Curvature_sample> out;
+  out.reserve(sampled.samples.size());
+  for (const Curve_sample& c : sampled.samples) out.push_back(Curvature_sample{c.piece, c.t, c.arc_length, c.x, c.y, c.curvature});
   return out;
 }
 
