@@ -10,6 +10,7 @@
 
 #include <fair/Bernstein_polynomial.h>
 #include <fair/Bernstein_root_isolation.h>
+#include <fair/internal/common/exact_conversion.h>
 #include <fair/internal/metrics/features.h>
 #include <fair/internal/metrics/pieces.h>
 
@@ -23,16 +24,14 @@ namespace internal {
 namespace metrics {
 
 /// The parameters of `piece` where |c - center| may be extremal: 0, 1 and the interior critical
-/// points. `certified` is cleared when they come from sampling or an inexact conversion.
+/// points. `certified` is cleared when they come from sampling (generic pieces).
 template <class Piece>
 std::vector<double> circle_deviation_candidates(const Piece& piece, const typename Piece::Point_2& center,
                                                 bool& certified) {
   std::vector<double> ts{0.0, 1.0};
   if constexpr (Piece_kind<Piece>::value != 0) {
-    typedef Exact_rational_of<typename Piece::FT> Conv;
-    const Homogeneous_form<CGAL::Gmpq> h = homogeneous_exact(piece);
-    certified = certified && h.exact && Conv::exact;
-    const CGAL::Gmpq Cx = Conv::convert(center.x()), Cy = Conv::convert(center.y());
+    const Homogeneous_form h = homogeneous_exact(piece);
+    const CGAL::Gmpq Cx = common::to_gmpq(center.x()), Cy = common::to_gmpq(center.y());
     const Bernstein_polynomial<CGAL::Gmpq> Bx = h.X - Cx * h.W, By = h.Y - Cy * h.W;
     const Bernstein_polynomial<CGAL::Gmpq> G =
         (Bx * Bx.derivative() + By * By.derivative()) * h.W - (Bx * Bx + By * By) * h.W.derivative();

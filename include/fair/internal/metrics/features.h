@@ -70,16 +70,16 @@ inline Signed_roots signed_roots(const Bernstein_polynomial<CGAL::Gmpq>& p) {
 }
 
 /// D = det(P, P', P'') of the homogeneous form (sign of the curvature).
-template <class ET>
-Bernstein_polynomial<ET> curvature_sign_polynomial(const Homogeneous_form<ET>& h) {
+inline Bernstein_polynomial<CGAL::Gmpq> curvature_sign_polynomial(const Homogeneous_form& h) {
+  typedef CGAL::Gmpq ET;
   const Bernstein_polynomial<ET> X1 = h.X.derivative(), Y1 = h.Y.derivative(), W1 = h.W.derivative();
   const Bernstein_polynomial<ET> X2 = X1.derivative(), Y2 = Y1.derivative(), W2 = W1.derivative();
   return h.X * (Y1 * W2 - W1 * Y2) - h.Y * (X1 * W2 - W1 * X2) + h.W * (X1 * Y2 - Y1 * X2);
 }
 
 /// N, with sign(N) = sign(d kappa / dt) on regular points (see the file comment).
-template <class ET>
-Bernstein_polynomial<ET> curvature_derivative_sign_polynomial(const Homogeneous_form<ET>& h) {
+inline Bernstein_polynomial<CGAL::Gmpq> curvature_derivative_sign_polynomial(const Homogeneous_form& h) {
+  typedef CGAL::Gmpq ET;
   const Bernstein_polynomial<ET> D = curvature_sign_polynomial(h);
   const Bernstein_polynomial<ET> X1 = h.X.derivative(), Y1 = h.Y.derivative(), W1 = h.W.derivative();
   const Bernstein_polynomial<ET> Ax = X1 * h.W - h.X * W1, Ay = Y1 * h.W - h.Y * W1;
@@ -140,8 +140,7 @@ Feature_report certified_features(const std::vector<Piece>& curve, int which, co
     int last = 0;          // last nonzero gap sign along the curve
     int first = 0;         // first nonzero gap sign along the curve
     for (std::size_t i = 0; i < curve.size(); ++i) {
-      const Homogeneous_form<CGAL::Gmpq> h = homogeneous_exact(curve[i]);
-      report.certified = report.certified && h.exact;
+      const Homogeneous_form h = homogeneous_exact(curve[i]);
       const Bernstein_polynomial<CGAL::Gmpq> p =
           which == 0 ? curvature_sign_polynomial(h) : curvature_derivative_sign_polynomial(h);
       if (is_zero_polynomial(p)) {

@@ -6,7 +6,7 @@
 //    (only the CurvePiece_2 concept);
 //  - Piece_jet evaluates position and the first three derivatives in double, fast;
 //  - homogeneous_exact() gives the exact homogeneous form (X, Y, W) as Bernstein polynomials over
-//    an exact rational type, for certified root isolation.
+//    CGAL::Gmpq, for certified root isolation.
 
 #ifndef FAIR_INTERNAL_METRICS_PIECES_H
 #define FAIR_INTERNAL_METRICS_PIECES_H
@@ -15,10 +15,9 @@
 #include <fair/Bezier_2.h>
 #include <fair/Errors.h>
 #include <fair/internal/common/curvature.h>
-#include <fair/internal/bernstein/exact.h>
+#include <fair/internal/common/exact_conversion.h>
 
 #include <CGAL/Gmpq.h>
-#include <CGAL/Lazy_exact_nt.h>
 #include <CGAL/number_utils.h>
 
 #include <cmath>
@@ -30,34 +29,6 @@
 namespace fair {
 namespace internal {
 namespace metrics {
-
-// ---------------------------------------------------------------- exact rational conversion
-/// The exact rational type used to certify features of pieces with number type FT, and whether
-/// the conversion FT -> that type is exact (it is for double, Gmpq and Lazy_exact_nt).
-template <class FT>
-struct Exact_rational_of {
-  typedef CGAL::Gmpq Type;
-  static const bool exact = false;
-  static Type convert(const FT& x) { return Type(CGAL::to_double(x)); }
-};
-template <>
-struct Exact_rational_of<double> {
-  typedef CGAL::Gmpq Type;
-  static const bool exact = true; // every finite double is a dyadic rational
-  static Type convert(double x) { return Type(x); }
-};
-template <>
-struct Exact_rational_of<CGAL::Gmpq> {
-  typedef CGAL::Gmpq Type;
-  static const bool exact = true;
-  static const Type& convert(const CGAL::Gmpq& x) { return x; }
-};
-template <class ET>
-struct Exact_rational_of<CGAL::Lazy_exact_nt<ET>> {
-  typedef CGAL::Gmpq Type;
-  static const bool exact = true;
-  static Type convert(const CGAL::Lazy_exact_nt<ET>& x) { return bernstein::exact_value_to_gmpq(CGAL::exact(x)); }
-};
 
 // ---------------------------------------------------------------- classification
 template <class P, class = void>
@@ -248,32 +219,31 @@ const char* check_curve(const std::vector<Piece>& curve, const char* what) {
 
 // ---------------------------------------------------------------- exact homogeneous form
 /// The homogeneous form (X, Y, W) = (sum B_i w_i x_i, sum B_i w_i y_i, sum B_i w_i) of a
-/// Bernstein-form piece over the exact rational type ET (W = 1 of degree 0 for polynomial pieces).
-template <class ET>
+/// Bernstein-form piece over the rationals (W = 1 of degree 0 for polynomial pieces), exact:
+/// every coordinate and weight is converted by internal::common::to_gmpq, exact for every number
+/// type it accepts (a double is the dyadic rational it stores).
 struct Homogeneous_form {
-  Bernstein_polynomial<ET> X, Y, W;
-  bool exact = true; // false if the conversion of some coordinate to ET was not exact
+  Bernstein_polynomial<CGAL::Gmpq> X, Y, W;
 };
 
 template <class P>
-Homogeneous_form<typename Exact_rational_of<typename P::FT>::Type> homogeneous_exact(const P& piece) {
-  typedef Exact_rational_of<typename P::FT> Conv;
-  typedef typename Conv::Type ET;
+Homogeneous_form homogeneous_exact(const P& piece) {
+  using common::to_gmpq;
   std::vector<typename P::Point_2> cp;
   std::vector<typename P::FT> w;
   bernstein_form(piece, cp, w);
-  std::vector<ET> X, Y, W;
+  std::vector<CGAL::Gmpq> X, Y, W;
   for (std::size_t i = 0; i < cp.size(); ++i) {
-    const ET wi = Conv::convert(w[i]);
-    X.push_back(wi * ET(Conv::convert(cp[i].x())));
-    Y.push_back(wi * ET(Conv::convert(cp[i].y())));
+    const CGAL::Gmpq wi = to_gmpq(w[i]);
+    X.push_back(wi * to_gmpq(cp[i].x()));
+    Y.push_back(wi * to_gmpq(cp[i].y()));
     W.push_back(wi);
   }
-  Homogeneous_form<ET> h;
-  h.X = Bernstein_polynomial<ET>(X);
-  h.Y = Bernstein_polynomial<ET>(Y);
-  h.W = (Piece_kind<P>::value == 1) ? Bernstein_polynomial<ET>(std::vector<ET>(1, ET(1))) : Bernstein_polynomial<ET>(W);
-  h.exact = Conv::exact;
+  Homogeneous_form h;
+  h.X = Bernstein_polynomial<CGAL::Gmpq>(X);
+  h.Y = Bernstein_polynomial<CGAL::Gmpq>(Y);
+  h.W = Piece_kind<P>::value == 1 ? Bernstein_polynomial<CGAL::Gmpq>(std::vector<CGAL::Gmpq>(1, CGAL::Gmpq(1)))
+                                  : Bernstein_polynomial<CGAL::Gmpq>(W);
   return h;
 }
 
