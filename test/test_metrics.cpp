@@ -230,8 +230,8 @@ TEST(Metrics, ConicPiecesUseTheirOwnCertifiedExtrema) {
   // Schiller, Schaefer); the homogeneous construction here must find the same points.
   typedef fair::Rational_quadratic_bezier_2<SC_gmpq> Conic;
   typedef SC_gmpq::Point_2 P;
-  static_assert(fair::internal::metrics::Has_own_curvature_extrema<Conic>::value, "the conic's own extrema are used");
-  static_assert(!fair::internal::metrics::Has_own_curvature_extrema<Test_rational_piece<SC_gmpq>>::value, "");
+  static_assert(fair::Piece_traits<Conic>::has_own_curvature_extrema, "the conic's own extrema are used");
+  static_assert(!fair::Piece_traits<Test_rational_piece<SC_gmpq>>::has_own_curvature_extrema, "");
   EXPECT_EQ(fair::curvature_extrema(std::vector<Conic>{Conic(P(3, 0), P(0, 3), P(0, 0), CGAL::Gmpq(3, 10))}).count(), 2u);
   for (const CGAL::Gmpq& w : {CGAL::Gmpq(3, 10), CGAL::Gmpq(1, 2), CGAL::Gmpq(1), CGAL::Gmpq(2)}) {
     const Conic c(P(3, 0), P(0, 3), P(0, 0), w);
@@ -248,6 +248,18 @@ TEST(Metrics, ConicPiecesUseTheirOwnCertifiedExtrema) {
     }
     EXPECT_EQ(fair::inflections(std::vector<Conic>{c}).count(), 0u);
   }
+}
+
+TEST(Metrics, PieceTraitsClassifyThePieces) {
+  // fair/Curve_traits.h: what the metrics see in each piece type.
+  static_assert(fair::Piece_traits<fair::Bezier_2<SC_double>>::kind == fair::Piece_kind::POLYNOMIAL_BEZIER, "");
+  static_assert(fair::Piece_traits<fair::Rational_bezier_2<EPECK>>::kind == fair::Piece_kind::RATIONAL_BEZIER, "");
+  static_assert(fair::Piece_traits<fair::Rational_quadratic_bezier_2<SC_gmpq>>::kind == fair::Piece_kind::RATIONAL_BEZIER, "");
+  static_assert(fair::Piece_traits<Test_rational_piece<SC_double>>::kind == fair::Piece_kind::RATIONAL_BEZIER, "");
+  static_assert(fair::Piece_traits<Generic_piece>::kind == fair::Piece_kind::GENERIC, "");
+  static_assert(!fair::Piece_traits<fair::Bezier_2<SC_double>>::has_own_curvature_extrema, "");
+  static_assert(fair::is_bernstein_form(fair::Piece_kind::RATIONAL_BEZIER) && !fair::is_bernstein_form(fair::Piece_kind::GENERIC), "");
+  SUCCEED();
 }
 
 TEST(Metrics, LibraryRationalPieces) {

@@ -5,9 +5,9 @@
 // per sample the point, the unit normal, the signed curvature, the arc length from the start
 // of the curve, the piece index and the piece parameter.
 //
-// Accuracy. Points, normals and curvatures are evaluated in double from the piece's jet
-// (internal/metrics/pieces.h: the Bernstein form converted to double once, or the piece's own
-// point / derivative / second_derivative for other pieces), the curvature by the scale-safe
+// Accuracy. Points, normals and curvatures are evaluated in double from the piece's jet (the
+// Bernstein form converted to double once, or the piece's own point / derivative /
+// second_derivative for other pieces: its fair::Piece_kind, fair/Curve_traits.h), the curvature by the scale-safe
 // formula of internal/common/curvature.h (no overflow or underflow for coordinates near
 // 1e+-300). The same sampler gives fair::curvature_profile. Arc length is integrated, not
 // accumulated from chords: on each sampling interval the speed |c'(t)| is integrated by the
@@ -22,6 +22,7 @@
 #ifndef FAIR_CURVE_SAMPLING_H
 #define FAIR_CURVE_SAMPLING_H
 
+#include <fair/Curve_traits.h>
 #include <fair/Errors.h>
 #include <fair/Quadrature.h>
 

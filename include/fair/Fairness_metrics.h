@@ -2,7 +2,8 @@
 //
 // Fairness metrics of a planar curve given as a std::vector of CurvePiece_2 pieces (joined end to
 // start): fair::Bezier_2, the rational pieces (anything with control_points() and weights(),
-// c = sum B_i w_i P_i / sum B_i w_i, w_i > 0) and any other model of the concept.
+// c = sum B_i w_i P_i / sum B_i w_i, w_i > 0) and any other model of the concept; what a piece
+// type must provide for each treatment is in fair/Curve_traits.h.
 // The user manual is doc/fairness_metrics.md.
 //
 //  - curvature_profile: curvature against arc length samples;
@@ -29,6 +30,7 @@
 
 #include <fair/Bernstein_root_isolation.h>
 #include <fair/Curve_sampling.h>
+#include <fair/Curve_traits.h>
 #include <fair/Errors.h>
 #include <fair/Quadrature.h>
 #include <fair/internal/metrics/energies.h>

@@ -29,7 +29,7 @@ template <class Piece>
 std::vector<double> circle_deviation_candidates(const Piece& piece, const typename Piece::Point_2& center,
                                                 bool& certified) {
   std::vector<double> ts{0.0, 1.0};
-  if constexpr (Piece_kind<Piece>::value != 0) {
+  if constexpr (is_bernstein_form(kind_of<Piece>)) {
     const Homogeneous_form h = homogeneous_exact(piece);
     const CGAL::Gmpq Cx = common::to_gmpq(center.x()), Cy = common::to_gmpq(center.y());
     const Bernstein_polynomial<CGAL::Gmpq> Bx = h.X - Cx * h.W, By = h.Y - Cy * h.W;

@@ -114,7 +114,7 @@ template <class Piece>
 Feature_report certified_features(const std::vector<Piece>& curve, int which, const char* what) {
   check_curve(curve, what);
   Feature_report report;
-  if constexpr (Piece_kind<Piece>::value == 0) {
+  if constexpr (kind_of<Piece> == Piece_kind::GENERIC) {
     // Generic pieces: sign changes of kappa (or dkappa/dt) on 512 samples per piece.
     report.certified = false;
     int last = 0;
@@ -151,7 +151,7 @@ Feature_report certified_features(const std::vector<Piece>& curve, int which, co
       // A piece that certifies its own curvature extrema provides the interior ones; the signs
       // computed here still decide the changes at the joins.
       bool own = false;
-      if constexpr (Has_own_curvature_extrema<Piece>::value) own = (which == 1);
+      if constexpr (Piece_traits<Piece>::has_own_curvature_extrema) own = (which == 1);
       for (std::size_t g = 0; g < s.gaps.size(); ++g) {
         const int sign = s.gaps[g];
         if (sign == 0) continue;
@@ -170,7 +170,7 @@ Feature_report certified_features(const std::vector<Piece>& curve, int which, co
         }
         last = sign;
       }
-      if constexpr (Has_own_curvature_extrema<Piece>::value) {
+      if constexpr (Piece_traits<Piece>::has_own_curvature_extrema) {
         if (own) {
           for (const auto& x : curve[i].curvature_extrema()) {
             if (x.multiplicity % 2 == 0) continue; // no sign change of kappa': not an extremum

@@ -1,9 +1,8 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // How the fairness metrics look inside a curve piece:
-//  - Piece_traits classifies a piece as polynomial Bezier (fair::Bezier_2), rational Bezier (any
-//    piece with control_points() and weights(): c = sum B_i w_i P_i / sum B_i w_i) or generic
-//    (only the CurvePiece_2 concept);
+//  - kind_of<P> is the fair::Piece_kind of fair/Curve_traits.h: polynomial Bezier (fair::Bezier_2),
+//    rational Bezier (control_points() and weights()) or generic (only the CurvePiece_2 concept);
 //  - Piece_jet evaluates position and the first three derivatives in double, fast;
 //  - homogeneous_exact() gives the exact homogeneous form (X, Y, W) as Bernstein polynomials over
 //    CGAL::Gmpq, for certified root isolation.
@@ -12,7 +11,7 @@
 #define FAIR_INTERNAL_METRICS_PIECES_H
 
 #include <fair/Bernstein_polynomial.h>
-#include <fair/Bezier_2.h>
+#include <fair/Curve_traits.h>
 #include <fair/Errors.h>
 #include <fair/internal/common/curvature.h>
 #include <fair/internal/common/exact_conversion.h>
@@ -31,38 +30,16 @@ namespace internal {
 namespace metrics {
 
 // ---------------------------------------------------------------- classification
-template <class P, class = void>
-struct Has_weights : std::false_type {};
+/// The kind of the piece type P (fair/Curve_traits.h).
 template <class P>
-struct Has_weights<P, std::void_t<decltype(std::declval<const P&>().weights()),
-                                  decltype(std::declval<const P&>().control_points())>> : std::true_type {};
-
-/// Pieces that certify their own curvature extrema (e.g. fair::Rational_quadratic_bezier_2):
-/// curvature_extrema() returning entries with t, t_lower, t_upper (exact) and multiplicity.
-template <class P, class = void>
-struct Has_own_curvature_extrema : std::false_type {};
-template <class P>
-struct Has_own_curvature_extrema<
-    P, std::void_t<decltype(std::declval<const P&>().curvature_extrema().front().t_lower),
-                   decltype(std::declval<const P&>().curvature_extrema().front().t_upper),
-                   decltype(std::declval<const P&>().curvature_extrema().front().t),
-                   decltype(std::declval<const P&>().curvature_extrema().front().multiplicity)>> : std::true_type {};
-
-template <class P>
-struct Is_bezier : std::false_type {};
-template <class K>
-struct Is_bezier<Bezier_2<K>> : std::true_type {};
-
-/// 0 = generic (concept only), 1 = polynomial Bezier, 2 = rational Bezier.
-template <class P>
-struct Piece_kind : std::integral_constant<int, Is_bezier<P>::value ? 1 : (Has_weights<P>::value ? 2 : 0)> {};
+constexpr Piece_kind kind_of = Piece_traits<P>::kind;
 
 /// Control points and weights of a Bernstein-form piece (weights all 1 for polynomial pieces).
 template <class P>
 void bernstein_form(const P& piece, std::vector<typename P::Point_2>& cp, std::vector<typename P::FT>& w) {
   const auto& c = piece.control_points();
   cp.assign(c.begin(), c.end());
-  if constexpr (Piece_kind<P>::value == 2) {
+  if constexpr (kind_of<P> == Piece_kind::RATIONAL_BEZIER) {
     const auto& ws = piece.weights();
     w.assign(ws.begin(), ws.end());
     require(w.size() == cp.size(), "fairness metrics: a rational piece has ", cp.size(), " control points but ",
@@ -131,7 +108,7 @@ class Piece_jet {
 public:
   typedef typename P::FT FT;
   explicit Piece_jet(const P& piece) : piece_(&piece) {
-    if constexpr (Piece_kind<P>::value != 0) {
+    if constexpr (is_bernstein_form(kind_of<P>)) {
       std::vector<typename P::Point_2> cp;
       std::vector<FT> w;
       bernstein_form(piece, cp, w);
@@ -152,11 +129,11 @@ public:
   /// with that (its third derivative costs two more evaluations).
   Jet operator()(double t, int order = 3) const {
     Jet j;
-    if constexpr (Piece_kind<P>::value != 0) {
+    if constexpr (is_bernstein_form(kind_of<P>)) {
       double X[4], Y[4], W[4];
       X_.evaluate(t, X, scratch_);
       Y_.evaluate(t, Y, scratch_);
-      if constexpr (Piece_kind<P>::value == 1) {
+      if constexpr (kind_of<P> == Piece_kind::POLYNOMIAL_BEZIER) {
         j.x = X[0]; j.y = Y[0]; j.x1 = X[1]; j.y1 = Y[1]; j.x2 = X[2]; j.y2 = Y[2]; j.x3 = X[3]; j.y3 = Y[3];
       } else {
         W_.evaluate(t, W, scratch_);
@@ -242,7 +219,7 @@ Homogeneous_form homogeneous_exact(const P& piece) {
   Homogeneous_form h;
   h.X = Bernstein_polynomial<CGAL::Gmpq>(X);
   h.Y = Bernstein_polynomial<CGAL::Gmpq>(Y);
-  h.W = Piece_kind<P>::value == 1 ? Bernstein_polynomial<CGAL::Gmpq>(std::vector<CGAL::Gmpq>(1, CGAL::Gmpq(1)))
+  h.W = kind_of<P> == Piece_kind::POLYNOMIAL_BEZIER ? Bernstein_polynomial<CGAL::Gmpq>(std::vector<CGAL::Gmpq>(1, CGAL::Gmpq(1)))
                                   : Bernstein_polynomial<CGAL::Gmpq>(W);
   return h;
 }
