@@ -85,12 +85,15 @@ double piece_arc_length(const Piece& piece, double a = 0.0, double b = 1.0,
   return internal::metrics::arc_length_between(jet, a, b, options, "piece_arc_length");
 }
 
+/// The default number of sampling intervals per piece: a smooth plot and comb of a fair piece.
+constexpr std::size_t default_samples_per_piece = 64;
+
 /// Samples every piece of `pieces` (a range of CurvePiece_2 pieces, joined end to start) at
 /// samples_per_piece + 1 uniformly spaced parameters. Throws Precondition_error when
 /// samples_per_piece is 0, or when a piece gives a non-finite point or is singular over a
 /// neighbourhood of a sample.
 template <class PieceRange>
-Sampled_curve sample_curve(const PieceRange& pieces, std::size_t samples_per_piece = 64) {
+Sampled_curve sample_curve(const PieceRange& pieces, std::size_t samples_per_piece = default_samples_per_piece) {
   return internal::metrics::sample_pieces(pieces, samples_per_piece, arc_length_options(),
                                           internal::metrics::At_singular_sample::ONE_SIDED_LIMIT, "sample_curve");
 }

@@ -125,7 +125,8 @@ Quadrature_estimate curvature_variation_energy(const std::vector<Piece>& curve,
 /// `options`.
 /// \throws Precondition_error at a singular sample point.
 template <class Piece>
-std::vector<Curvature_sample> curvature_profile(const std::vector<Piece>& curve, std::size_t samples_per_piece = 64,
+std::vector<Curvature_sample> curvature_profile(const std::vector<Piece>& curve,
+                                                std::size_t samples_per_piece = default_samples_per_piece,
                                                 const Quadrature_options& options = Quadrature_options()) {
   internal::metrics::check_curve(curve, "curvature_profile");
   Quadrature_options o = options;
@@ -143,7 +144,7 @@ std::vector<Curvature_sample> curvature_profile(const std::vector<Piece>& curve,
 /// (see the file comment); an even-multiplicity root (curvature touching 0) is not an inflection.
 template <class Piece>
 Feature_report inflections(const std::vector<Piece>& curve) {
-  return internal::metrics::certified_features(curve, 0, "inflections");
+  return internal::metrics::certified_features(curve, internal::metrics::Feature_kind::INFLECTION, "inflections");
 }
 
 /// The curvature extrema: the points where dkappa/dt changes sign inside a piece or across a join
@@ -151,7 +152,8 @@ Feature_report inflections(const std::vector<Piece>& curve) {
 /// reported only when the one-sided slopes differ in sign). Certified for Bernstein-form pieces.
 template <class Piece>
 Feature_report curvature_extrema(const std::vector<Piece>& curve) {
-  return internal::metrics::certified_features(curve, 1, "curvature_extrema");
+  return internal::metrics::certified_features(curve, internal::metrics::Feature_kind::CURVATURE_EXTREMUM,
+                                                "curvature_extrema");
 }
 
 /// The largest deviation of a curve from a reference circle.
@@ -221,7 +223,7 @@ Fairness_report fairness_report(const std::vector<Piece>& curve, const Quadratur
   r.length = arc_length(curve, options);
   r.bending = bending_energy(curve, options);
   r.curvature_variation = curvature_variation_energy(curve, Energy_measure::ARC_LENGTH, options);
-  const std::vector<Curvature_sample> prof = curvature_profile(curve, 64, options);
+  const std::vector<Curvature_sample> prof = curvature_profile(curve, default_samples_per_piece, options);
   r.min_curvature = r.max_curvature = prof.front().curvature;
   for (const Curvature_sample& s : prof) {
     r.min_curvature = std::min(r.min_curvature, s.curvature);

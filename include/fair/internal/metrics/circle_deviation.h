@@ -23,6 +23,10 @@ namespace fair {
 namespace internal {
 namespace metrics {
 
+/// Samples per piece of the uncertified candidates on generic pieces (a deviation peak narrower
+/// than 1/4096 of the parameter range can be missed; they are not certified).
+constexpr int generic_deviation_samples = 4096;
+
 /// The parameters of `piece` where |c - center| may be extremal: 0, 1 and the interior critical
 /// points. `certified` is cleared when they come from sampling (generic pieces).
 template <class Piece>
@@ -41,7 +45,7 @@ std::vector<double> circle_deviation_candidates(const Piece& piece, const typena
     } // else |c - C| is constant on the piece: the ends suffice
   } else {
     certified = false;
-    for (int k = 1; k < 4096; ++k) ts.push_back(k / 4096.0);
+    for (int k = 1; k < generic_deviation_samples; ++k) ts.push_back(double(k) / generic_deviation_samples);
   }
   return ts;
 }

@@ -38,6 +38,11 @@ struct Signed_roots {
   std::vector<int> gaps;
 };
 
+/// Cap on the refinements of the isolating intervals next to a gap while looking for a rational
+/// that is not a root inside it: one refinement suffices unless the midpoint hits a root; the cap
+/// only guards against a broken isolation (then Internal_error).
+constexpr int max_gap_refinements = 200;
+
 inline Signed_roots signed_roots(const Bernstein_polynomial<CGAL::Gmpq>& p) {
   Signed_roots out;
   Bernstein_root_isolation iso(p);
@@ -48,21 +53,25 @@ inline Signed_roots signed_roots(const Bernstein_polynomial<CGAL::Gmpq>& p) {
   for (std::size_t g = 0; g <= k; ++g) {
     // Find an exact rational strictly inside the gap between root g-1 and root g.
     int sign = 0;
-    for (int attempt = 0; attempt < 200; ++attempt) {
+    bool empty = false;
+    for (int attempt = 0; attempt < max_gap_refinements; ++attempt) {
       const std::vector<Isolating_interval>& R = iso.intervals();
       const bool has_prev = g > 0, has_next = g < k;
-      if (has_prev && !has_next && R[g - 1].is_point() && R[g - 1].lower == one) break;  // empty gap at 1
-      if (!has_prev && has_next && R[g].is_point() && R[g].lower == zero) break;        // empty gap at 0
+      empty = (has_prev && !has_next && R[g - 1].is_point() && R[g - 1].lower == one) ||  // empty gap at 1
+              (!has_prev && has_next && R[g].is_point() && R[g].lower == zero);          // empty gap at 0
+      if (empty) break;
       const CGAL::Gmpq left = has_prev ? R[g - 1].upper : zero;
       const CGAL::Gmpq right = has_next ? R[g].lower : one;
-      CGAL::Gmpq x = (left + right) / 2;
-      sign = exact_sign_at(p, x);
+      sign = exact_sign_at(p, (left + right) / 2);
       if (sign != 0) break;
-      // x is a root: it is the end of a neighbouring point interval; shrink the other neighbour.
+      // The midpoint is a root: it is the end of a neighbouring point interval (all roots are
+      // isolated), so the other neighbour is not a point interval; shrink it.
       if (has_next && !R[g].is_point()) iso.refine(g, R[g].width() / 2);
       else if (has_prev && !R[g - 1].is_point()) iso.refine(g - 1, R[g - 1].width() / 2);
       else break;
     }
+    // Between two consecutive isolated roots the polynomial has no root, so a nonzero sign exists.
+    FAIR_ASSERT_MSG(empty || sign != 0, "signed_roots: no non-root found in gap ", g, " of ", k + 1);
     out.gaps.push_back(sign);
   }
   out.roots = iso.intervals();
@@ -109,22 +118,31 @@ Curve_feature make_feature(const Piece& piece, std::size_t index, double t, cons
   return f;
 }
 
-// Which polynomial: 0 = D (inflections), 1 = N (curvature extrema).
+/// Which sign changes certified_features() looks for.
+enum class Feature_kind {
+  INFLECTION,        ///< of D, the sign of the curvature
+  CURVATURE_EXTREMUM ///< of N, the sign of its derivative
+};
+
+/// Samples per piece of the uncertified search on generic pieces: enough to separate the few
+/// features of a fair piece, cheap enough for a report.
+constexpr int generic_feature_samples = 512;
+
 template <class Piece>
-Feature_report certified_features(const std::vector<Piece>& curve, int which, const char* what) {
+Feature_report certified_features(const std::vector<Piece>& curve, Feature_kind which, const char* what) {
   check_curve(curve, what);
   Feature_report report;
   if constexpr (kind_of<Piece> == Piece_kind::GENERIC) {
-    // Generic pieces: sign changes of kappa (or dkappa/dt) on 512 samples per piece.
+    // Generic pieces: sign changes of kappa (or dkappa/dt) on the samples.
     report.certified = false;
     int last = 0;
     for (std::size_t i = 0; i < curve.size(); ++i) {
       Piece_jet<Piece> jet(curve[i]);
-      const int m = 512;
+      const int m = generic_feature_samples;
       for (int k = 0; k <= m; ++k) {
         const double t = double(k) / m;
         const Jet j = jet(t);
-        const double v = which == 0 ? (j.x1 * j.y2 - j.y1 * j.x2) : j.curvature_derivative();
+        const double v = which == Feature_kind::INFLECTION ? (j.x1 * j.y2 - j.y1 * j.x2) : j.curvature_derivative();
         const int s = (v > 0) - (v < 0);
         if (s != 0 && last != 0 && s != last) {
           Isolating_interval I;
@@ -142,7 +160,7 @@ Feature_report certified_features(const std::vector<Piece>& curve, int which, co
     for (std::size_t i = 0; i < curve.size(); ++i) {
       const Homogeneous_form h = homogeneous_exact(curve[i]);
       const Bernstein_polynomial<CGAL::Gmpq> p =
-          which == 0 ? curvature_sign_polynomial(h) : curvature_derivative_sign_polynomial(h);
+          which == Feature_kind::INFLECTION ? curvature_sign_polynomial(h) : curvature_derivative_sign_polynomial(h);
       if (is_zero_polynomial(p)) {
         report.degenerate_pieces.push_back(i);
         continue;
@@ -151,7 +169,7 @@ Feature_report certified_features(const std::vector<Piece>& curve, int which, co
       // A piece that certifies its own curvature extrema provides the interior ones; the signs
       // computed here still decide the changes at the joins.
       bool own = false;
-      if constexpr (Piece_traits<Piece>::has_own_curvature_extrema) own = (which == 1);
+      if constexpr (Piece_traits<Piece>::has_own_curvature_extrema) own = (which == Feature_kind::CURVATURE_EXTREMUM);
       for (std::size_t g = 0; g < s.gaps.size(); ++g) {
         const int sign = s.gaps[g];
         if (sign == 0) continue;

@@ -20,15 +20,25 @@ namespace fair {
 namespace internal {
 namespace metrics {
 
+/// Depth cap of the bisection of a parameter interval: 2^-40 of a quarter piece is far below any
+/// tolerance a caller can ask for, and it bounds the work on a piece singular at a point.
+constexpr int max_polyline_depth = 40;
+/// Largest midpoint sagitta of a polyline segment, as a fraction of the chord tolerance: keeps the
+/// polyline within about tolerance/4 of the curve, so that the distance is within `tolerance`.
+constexpr double polyline_sagitta_fraction = 0.25;
+/// Every piece is first split into this many parameter intervals, so that a closed loop piece (or a
+/// piece whose midpoint lies on its chord) is not mistaken for a short chord.
+constexpr int polyline_initial_splits = 4;
+
 // Sampling of a piece into a polyline with chord <= h (recursive bisection, depth-capped).
 template <class Piece>
 void sample_polyline_piece(const Piece_jet<Piece>& jet, double t0, double t1, double x0, double y0, double x1, double y1,
-                  double h, int depth, std::vector<std::pair<double, double>>& out) {
+                           double h, int depth, std::vector<std::pair<double, double>>& out) {
   const double tm = 0.5 * (t0 + t1);
   const Jet m = jet(tm);
   const double chord = std::hypot(x1 - x0, y1 - y0);
   const double sag = std::hypot(m.x - 0.5 * (x0 + x1), m.y - 0.5 * (y0 + y1));
-  if (depth >= 40 || (chord <= h && sag <= 0.25 * h)) {
+  if (depth >= max_polyline_depth || (chord <= h && sag <= polyline_sagitta_fraction * h)) {
     out.emplace_back(x1, y1);
     return;
   }
@@ -44,11 +54,10 @@ std::vector<std::pair<double, double>> sample_polyline(const std::vector<Piece>&
     const Jet a = jet(0.0), b = jet(1.0);
     if (i == 0) out.emplace_back(a.x, a.y);
     else if (out.back().first != a.x || out.back().second != a.y) out.emplace_back(a.x, a.y);
-    // Split each piece in 4 first so that a closed loop piece is not mistaken for a short chord.
     double tx = 0, px = a.x, py = a.y;
-    for (int q = 1; q <= 4; ++q) {
-      const double tq = q / 4.0;
-      const Jet e = q == 4 ? b : jet(tq);
+    for (int q = 1; q <= polyline_initial_splits; ++q) {
+      const double tq = double(q) / polyline_initial_splits;
+      const Jet e = q == polyline_initial_splits ? b : jet(tq);
       sample_polyline_piece(jet, tx, tq, px, py, e.x, e.y, h, 0, out);
       tx = tq; px = e.x; py = e.y;
     }

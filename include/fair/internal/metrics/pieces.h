@@ -100,6 +100,11 @@ private:
   std::vector<double> d_[4];
 };
 
+/// Step of the central difference of second derivatives giving the third derivative of a generic
+/// piece: the truncation error h^2 |c^(5)| / 6 and the rounding error eps |c''| / h balance near
+/// 1e-4..1e-5; 1e-4 gives about 1e-8 relative for smooth pieces.
+constexpr double generic_third_derivative_step = 1e-4;
+
 /// Evaluates Jets of one piece. Bernstein-form pieces are converted to double once; a generic piece
 /// is evaluated through its concept functions, with the third derivative by a central difference
 /// of second derivatives (step 1e-4: relative error about 1e-8 for smooth pieces).
@@ -158,7 +163,7 @@ public:
       if (order < 3) return j;
       // Second-order differences that stay inside [0,1] (pieces may reject other parameters):
       // central inside, one-sided three-point formulas within h of an end.
-      const double h = 1e-4;
+      const double h = generic_third_derivative_step;
       auto second = [&](double u, double& x, double& y) {
         const auto v = piece_->second_derivative(FT(u));
         x = CGAL::to_double(v.x());

@@ -25,6 +25,10 @@ namespace fair {
 namespace internal {
 namespace metrics {
 
+/// Bisections between two exact re-summations of the value and error totals: the running totals
+/// are updated by differences, whose rounding would otherwise drift over thousands of steps.
+constexpr std::size_t quadrature_resum_period = 64;
+
 struct Gk_interval {
   double a, b, kronrod, error;
   bool operator<(const Gk_interval& o) const { return error < o.error; }
@@ -104,7 +108,7 @@ Quadrature_estimate adaptive_integral(F f, double a, double b, const Quadrature_
     ++count;
     value += l.kronrod + r.kronrod - worst.kronrod;
     error += l.error + r.error - worst.error;
-    if (++since_resum == 64) {
+    if (++since_resum == quadrature_resum_period) {
       totals();
       since_resum = 0;
     }
