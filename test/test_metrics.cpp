@@ -346,6 +346,29 @@ TEST(Metrics, ProfileAndLengthOfAStraightPiece) {
   EXPECT_EQ(in.degenerate_pieces.size(), 2u);
 }
 
+TEST(Metrics, ProfileIsScaleCovariant) {
+  // The one sampler and the one curvature: scaling a rational cubic by 2^+-500 scales its arc
+  // lengths by 2^+-500 and its curvatures by 2^-+500 (|c'|^3 would be out of the double range).
+  typedef SC_double::Point_2 P;
+  const std::vector<P> cp{P(0, 0), P(1, 2), P(3, -1), P(4, 1)};
+  const std::vector<double> w{1, 0.5, 2, 1};
+  const std::vector<fair::Rational_bezier_2<SC_double>> base{fair::Rational_bezier_2<SC_double>(cp, w)};
+  const auto pb = fair::curvature_profile(base, 16);
+  for (const double s : {0x1p500, 0x1p-500}) {
+    std::vector<P> q;
+    for (const P& p : cp) q.push_back(P(s * p.x(), s * p.y()));
+    const std::vector<fair::Rational_bezier_2<SC_double>> c{fair::Rational_bezier_2<SC_double>(q, w)};
+    const auto pc = fair::curvature_profile(c, 16);
+    ASSERT_EQ(pc.size(), pb.size());
+    for (std::size_t i = 0; i < pc.size(); ++i) {
+      EXPECT_EQ(pc[i].curvature * s, pb[i].curvature) << s << " " << pc[i].t;
+      EXPECT_NEAR(pc[i].arc_length / s, pb[i].arc_length, 1e-13 * pb.back().arc_length) << s << " " << pc[i].t;
+    }
+    const fair::Sampled_curve sc = fair::sample_curve(c, 16);
+    EXPECT_EQ(sc.samples[5].curvature, pc[5].curvature);  // the same sampler
+  }
+}
+
 TEST(Metrics, GenericPiecesFallBackToSampling) {
   const std::vector<Generic_piece> g{Generic_piece{cubic_x3<SC_double>()}};
   const std::vector<fair::Bezier_2<SC_double>> b{cubic_x3<SC_double>()};
