@@ -147,6 +147,13 @@ TEST(Bezier, HugeAndTinyCoordinates) {
     EXPECT_NEAR(c.curvature(0.4) * s, unit.curvature(0.4), 1e-12);
     EXPECT_NEAR(c.point(0.5).y() / s, 0.5, 1e-15);
   }
+  // Powers of two scale every intermediate of the curvature exactly (internal/common/curvature.h):
+  // the same value bit for bit, also where |c'|^3 is far outside the double range.
+  const fair::Bezier_2<SC_double> unit(P(0, 0), P(1, 0.25), P(1.5, 1), P(0, 1));
+  for (double s : {0x1p-900, 0x1p-500, 0x1p500, 0x1p900}) {
+    const fair::Bezier_2<SC_double> c(P(0, 0), P(s, 0.25 * s), P(1.5 * s, s), P(0, s));
+    for (double t : {0.0, 0.3, 0.5, 1.0}) EXPECT_EQ(c.curvature(t) * s, unit.curvature(t)) << s << " " << t;
+  }
 }
 
 } // namespace

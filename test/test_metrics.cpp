@@ -195,8 +195,8 @@ TEST(Metrics, RandomCubicsCertifiedCountsAreConsistent) {
     const std::vector<fair::Bezier_2<SC_gmpq>> cq{fair::Bezier_2<SC_gmpq>(q)};
     const std::vector<fair::Bezier_2<SC_double>> cd{fair::Bezier_2<SC_double>(p)};
     const auto h = fair::internal::metrics::homogeneous_exact(cq[0]);
-    const auto D = fair::internal::curvature_sign_polynomial(h);
-    if (fair::internal::is_zero_polynomial(D)) continue;
+    const auto D = fair::internal::metrics::curvature_sign_polynomial(h);
+    if (fair::internal::metrics::is_zero_polynomial(D)) continue;
     const fair::Feature_report in = fair::inflections(cq);
     // Double input converts exactly: the same certified answer.
     EXPECT_EQ(in.count(), fair::inflections(cd).count());
@@ -230,8 +230,8 @@ TEST(Metrics, ConicPiecesUseTheirOwnCertifiedExtrema) {
   // Schiller, Schaefer); the homogeneous construction here must find the same points.
   typedef fair::Rational_quadratic_bezier_2<SC_gmpq> Conic;
   typedef SC_gmpq::Point_2 P;
-  static_assert(fair::internal::metrics::Has_own_curvature_extrema<Conic>::value, "the conic's own extrema are used");
-  static_assert(!fair::internal::metrics::Has_own_curvature_extrema<Test_rational_piece<SC_gmpq>>::value, "");
+  static_assert(fair::Piece_traits<Conic>::has_own_curvature_extrema, "the conic's own extrema are used");
+  static_assert(!fair::Piece_traits<Test_rational_piece<SC_gmpq>>::has_own_curvature_extrema, "");
   EXPECT_EQ(fair::curvature_extrema(std::vector<Conic>{Conic(P(3, 0), P(0, 3), P(0, 0), CGAL::Gmpq(3, 10))}).count(), 2u);
   for (const CGAL::Gmpq& w : {CGAL::Gmpq(3, 10), CGAL::Gmpq(1, 2), CGAL::Gmpq(1), CGAL::Gmpq(2)}) {
     const Conic c(P(3, 0), P(0, 3), P(0, 0), w);
@@ -248,6 +248,18 @@ TEST(Metrics, ConicPiecesUseTheirOwnCertifiedExtrema) {
     }
     EXPECT_EQ(fair::inflections(std::vector<Conic>{c}).count(), 0u);
   }
+}
+
+TEST(Metrics, PieceTraitsClassifyThePieces) {
+  // fair/Curve_traits.h: what the metrics see in each piece type.
+  static_assert(fair::Piece_traits<fair::Bezier_2<SC_double>>::kind == fair::Piece_kind::POLYNOMIAL_BEZIER, "");
+  static_assert(fair::Piece_traits<fair::Rational_bezier_2<EPECK>>::kind == fair::Piece_kind::RATIONAL_BEZIER, "");
+  static_assert(fair::Piece_traits<fair::Rational_quadratic_bezier_2<SC_gmpq>>::kind == fair::Piece_kind::RATIONAL_BEZIER, "");
+  static_assert(fair::Piece_traits<Test_rational_piece<SC_double>>::kind == fair::Piece_kind::RATIONAL_BEZIER, "");
+  static_assert(fair::Piece_traits<Generic_piece>::kind == fair::Piece_kind::GENERIC, "");
+  static_assert(!fair::Piece_traits<fair::Bezier_2<SC_double>>::has_own_curvature_extrema, "");
+  static_assert(fair::is_bernstein_form(fair::Piece_kind::RATIONAL_BEZIER) && !fair::is_bernstein_form(fair::Piece_kind::GENERIC), "");
+  SUCCEED();
 }
 
 TEST(Metrics, LibraryRationalPieces) {
@@ -332,6 +344,29 @@ TEST(Metrics, ProfileAndLengthOfAStraightPiece) {
   const fair::Feature_report in = fair::inflections(line);
   EXPECT_EQ(in.count(), 0u);
   EXPECT_EQ(in.degenerate_pieces.size(), 2u);
+}
+
+TEST(Metrics, ProfileIsScaleCovariant) {
+  // The one sampler and the one curvature: scaling a rational cubic by 2^+-500 scales its arc
+  // lengths by 2^+-500 and its curvatures by 2^-+500 (|c'|^3 would be out of the double range).
+  typedef SC_double::Point_2 P;
+  const std::vector<P> cp{P(0, 0), P(1, 2), P(3, -1), P(4, 1)};
+  const std::vector<double> w{1, 0.5, 2, 1};
+  const std::vector<fair::Rational_bezier_2<SC_double>> base{fair::Rational_bezier_2<SC_double>(cp, w)};
+  const auto pb = fair::curvature_profile(base, 16);
+  for (const double s : {0x1p500, 0x1p-500}) {
+    std::vector<P> q;
+    for (const P& p : cp) q.push_back(P(s * p.x(), s * p.y()));
+    const std::vector<fair::Rational_bezier_2<SC_double>> c{fair::Rational_bezier_2<SC_double>(q, w)};
+    const auto pc = fair::curvature_profile(c, 16);
+    ASSERT_EQ(pc.size(), pb.size());
+    for (std::size_t i = 0; i < pc.size(); ++i) {
+      EXPECT_EQ(pc[i].curvature * s, pb[i].curvature) << s << " " << pc[i].t;
+      EXPECT_NEAR(pc[i].arc_length / s, pb[i].arc_length, 1e-13 * pb.back().arc_length) << s << " " << pc[i].t;
+    }
+    const fair::Sampled_curve sc = fair::sample_curve(c, 16);
+    EXPECT_EQ(sc.samples[5].curvature, pc[5].curvature);  // the same sampler
+  }
 }
 
 TEST(Metrics, GenericPiecesFallBackToSampling) {

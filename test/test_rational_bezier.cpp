@@ -7,6 +7,7 @@
 #include <fair/Bezier_2.h>
 #include <fair/Rational_bezier_2.h>
 #include <fair/Rational_quadratic_bezier_2.h>
+#include <fair/internal/common/curvature.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -174,6 +175,67 @@ TYPED_TEST(Rational_bezier_test, BadInputThrows) {
   const Rb point({P(3, 4)});
   EXPECT_TRUE(point.point(q<K>(1, 2)) == P(3, 4));
   EXPECT_THROW(point.curvature(0.5), fair::Precondition_error);
+}
+
+// The curvature is scale-safe (internal/common/curvature.h): scaling the control points by lambda
+// divides it by lambda, also at 2^+-500 and 1e+-150 where |c'|^3 overflows or underflows (the
+// former formula det / |c'|^3 returned 0, inf or NaN there). Powers of two scale every
+// intermediate exactly, so the result is the same bit for bit.
+template <class K>
+class Rational_bezier_scale_test : public ::testing::Test {};
+TYPED_TEST_SUITE(Rational_bezier_scale_test, fair_test::Floating_kernels);
+
+TYPED_TEST(Rational_bezier_scale_test, CurvatureIsScaleCovariant) {
+  typedef TypeParam K;
+  typedef typename K::Point_2 P;
+  typedef fair::Rational_bezier_2<K> Rb;
+  std::mt19937 rng(20261201);
+  std::uniform_real_distribution<double> U(-1.0, 1.0), Wd(0.25, 4.0);
+  int checked = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    const std::size_t n = 2 + trial % 4;  // degrees 2..5
+    std::vector<double> x(n + 1), y(n + 1), w(n + 1);
+    for (std::size_t i = 0; i <= n; ++i) { x[i] = U(rng); y[i] = U(rng); w[i] = Wd(rng); }
+    auto scaled = [&](double lambda) {
+      std::vector<P> cp;
+      for (std::size_t i = 0; i <= n; ++i) cp.push_back(P(lambda * x[i], lambda * y[i]));
+      return Rb(cp, std::vector<typename K::FT>(w.begin(), w.end()));
+    };
+    const Rb base = scaled(1.0);
+    for (const double lambda : {0x1p500, 0x1p-500, 1e150, 1e-150}) {
+      const Rb c = scaled(lambda);
+      const bool pow2 = lambda == 0x1p500 || lambda == 0x1p-500;
+      for (int i = 0; i <= 8; ++i) {
+        const double t = i / 8.0, kb = base.curvature(t);
+        if (std::fabs(kb) < 1e-6) continue;  // nearly straight: the relative test is meaningless
+        const double k = c.curvature(t);
+        ASSERT_TRUE(std::isfinite(k)) << lambda << " " << t;
+        if (pow2) {
+          EXPECT_EQ(k * lambda, kb) << lambda << " " << t;
+        } else {
+          // each coordinate is rounded once by the decimal scaling
+          EXPECT_NEAR(k * lambda / kb, 1.0, 1e-9) << lambda << " " << t;
+        }
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 500);
+}
+
+TEST(Signed_curvature, ScaleSafeAndDefinedAtASingularPoint) {
+  using fair::internal::common::signed_curvature;
+  // Unit circle at (1, 0): c' = (0, 1), c'' = (-1, 0): kappa = 1.
+  EXPECT_EQ(signed_curvature(0, 1, -1, 0), 1.0);
+  for (const double s : {0x1p-1000, 0x1p-500, 0x1p500, 0x1p1000}) {
+    // c' scaled by s, c'' by s: kappa / s, exact for powers of two.
+    EXPECT_EQ(signed_curvature(0, s, -s, 0), 1.0 / s);
+    EXPECT_EQ(signed_curvature(3 * s, 4 * s, -4 * s, 3 * s), 1.0 / (5 * s)) << s;
+  }
+  // A singular point (c' = 0) gives 0, never NaN; a straight piece (c'' = 0) too.
+  EXPECT_EQ(signed_curvature(0, 0, 1, 2), 0.0);
+  EXPECT_EQ(signed_curvature(1, 2, 0, 0), 0.0);
+  EXPECT_TRUE(std::isnan(signed_curvature(std::numeric_limits<double>::infinity(), 0, 1, 0)));
 }
 
 } // namespace

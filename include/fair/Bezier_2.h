@@ -7,13 +7,14 @@
 // Accuracy: point(), derivative(), second_derivative(), nth_derivative(), split() and
 // hodograph() only add, subtract and multiply in Kernel::FT (de Casteljau's algorithm), so they
 // are exact in an exact kernel (EPECK, Simple_cartesian<Gmpq>) and backward stable in double.
-// curvature() is computed in double from double control points.
+// curvature() is computed in double from double control points (internal/common/curvature.h).
 
 #ifndef FAIR_BEZIER_2_H
 #define FAIR_BEZIER_2_H
 
 #include <fair/Bernstein_polynomial.h>
 #include <fair/Errors.h>
+#include <fair/internal/common/curvature.h>
 
 #include <CGAL/number_utils.h>
 #include <CGAL/Origin.h>
@@ -85,7 +86,8 @@ public:
     return Vector_2(factor * de_casteljau(x, t), factor * de_casteljau(y, t));
   }
 
-  /// Signed curvature kappa(t) = (c' x c'') / |c'|^3, computed in double.
+  /// Signed curvature kappa(t) = (c' x c'') / |c'|^3, computed in double from double control
+  /// points, scale-safe (no overflow or underflow unless kappa itself is not representable).
   /// Throws Precondition_error at a singular point (c'(t) = 0 in double), where it is undefined.
   double curvature(double t) const {
     double d1x, d1y, d2x, d2y;
@@ -93,9 +95,7 @@ public:
     const double speed = std::hypot(d1x, d1y);
     internal::require(speed > 0 && std::isfinite(speed), "Bezier_2::curvature: singular point at t = ", t,
                       " (c'(t) = (", d1x, ", ", d1y, "))");
-    // Normalise by the speed first so that huge or tiny coordinates neither overflow nor underflow.
-    const double ux = d1x / speed, uy = d1y / speed;
-    return (ux * (d2y / speed) - uy * (d2x / speed)) / speed;
+    return internal::common::signed_curvature(d1x, d1y, d2x, d2y);
   }
 
   /// c'(t) and c''(t) in double (fast path for sampling and quadrature).

@@ -5,32 +5,29 @@
 // per sample the point, the unit normal, the signed curvature, the arc length from the start
 // of the curve, the piece index and the piece parameter.
 //
-// Accuracy. Points, normals and curvatures are the piece's own values rounded to double (where
-// a piece's curvature() throws or overflows -- e.g. |c'|^2 beyond the double range for
-// coordinates near 1e300 -- the curvature is recomputed from c' and c'' with a scaling that
-// avoids overflow and underflow). Arc
-// length is integrated, not accumulated from chords: on each sampling interval the speed
-// |c'(t)| is integrated by adaptive 7-point Gauss-Legendre quadrature (exact for polynomial
-// integrands up to degree 13; the interval is bisected until the one-level and two-level
-// results agree to 1e-13 of the piece's scale). For a regular piece the arc length is then
-// accurate to about 1e-12 relative. Degenerate cases: where c'(t) = 0 (a cusp, or a degenerate
-// end of a piece) |c'| has a kink; bisection stops at depth 40 and the last estimate is kept,
-// which still leaves an error far below the sampling resolution. At such a sample the normal
-// and the curvature are the one-sided limits, taken at t moved by 1e-9 (then 1e-7, 1e-5)
-// towards the inside of the piece; if the piece is singular there too, Precondition_error.
+// Accuracy. Points, normals and curvatures are evaluated in double from the piece's jet (the
+// Bernstein form converted to double once, or the piece's own point / derivative /
+// second_derivative for other pieces: its fair::Piece_kind, fair/Curve_traits.h), the curvature by the scale-safe
+// formula of internal/common/curvature.h (no overflow or underflow for coordinates near
+// 1e+-300). The same sampler gives fair::curvature_profile. Arc length is integrated, not
+// accumulated from chords: on each sampling interval the speed |c'(t)| is integrated by the
+// library's adaptive Gauss-Kronrod quadrature (fair/Quadrature.h) to 1e-13 of the interval's
+// length (arc_length_options()), so for a regular piece the arc length is accurate to about
+// 1e-13 relative. Where c'(t) = 0 (a
+// cusp, or a degenerate end of a piece) |c'| has a kink, which the adaptive bisection resolves.
+// At such a sample the normal and the curvature are the one-sided limits, taken at t moved by
+// 1e-9 (then 1e-7, 1e-5) towards the inside of the piece; if the piece is singular there too,
+// Precondition_error.
 
 #ifndef FAIR_CURVE_SAMPLING_H
 #define FAIR_CURVE_SAMPLING_H
 
+#include <fair/Curve_traits.h>
 #include <fair/Errors.h>
+#include <fair/Quadrature.h>
 
-#include <CGAL/number_utils.h>
-
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstddef>
-#include <iterator>
 #include <vector>
 
 namespace fair {
@@ -57,169 +54,48 @@ struct Sampled_curve {
   std::size_t number_of_pieces() const { return piece_start.empty() ? 0 : piece_start.size() - 1; }
 };
 
-namespace internal {
+} // namespace fair
 
-/// c'(t) of a piece in double.
-template <class Piece>
-void speed_vector(const Piece& piece, double t, double& dx, double& dy) {
-  typedef typename Piece::FT FT;
-  const auto d = piece.derivative(FT(t));
-  dx = CGAL::to_double(d.x());
-  dy = CGAL::to_double(d.y());
+// The implementation needs the types above.
+#include <fair/internal/metrics/sampler.h>
+
+namespace fair {
+
+/// The quadrature options of the sampler's arc lengths: 1e-13 relative to the length of each
+/// interval (the accuracy the plots and the gallery's length figures rely on), no absolute floor
+/// so that the accuracy does not depend on the scale of the curve.
+inline Quadrature_options arc_length_options() {
+  Quadrature_options o;
+  o.relative_tolerance = 1e-13;
+  o.absolute_tolerance = 0;
+  o.initial_subintervals = 1;
+  return o;
 }
 
+/// Arc length of one piece between parameters 0 <= a <= b <= 1: the adaptive Gauss-Kronrod
+/// quadrature of |c'(t)| (fair/Quadrature.h) to the accuracy of `options`.
+/// \throws Precondition_error unless a <= b are finite, or if |c'| is not finite on [a, b];
+/// Non_convergence_error when options.max_subintervals does not reach the accuracy.
 template <class Piece>
-double speed(const Piece& piece, double t) {
-  double dx, dy;
-  speed_vector(piece, t, dx, dy);
-  return std::hypot(dx, dy);
-}
-
-/// 7-point Gauss-Legendre rule on [a, b] for |c'|.
-template <class Piece>
-double gauss_legendre_7(const Piece& piece, double a, double b) {
-  // Nodes and weights of the 7-point rule on [-1, 1].
-  static const double x[4] = {0.0, 0.4058451513773971669066064, 0.7415311855993944398638648,
-                              0.9491079123427585245261897};
-  static const double w[4] = {0.4179591836734693877551020, 0.3818300505051189449503698,
-                              0.2797053914892766679014678, 0.1294849661688696932706114};
-  const double m = 0.5 * (a + b), h = 0.5 * (b - a);
-  double s = w[0] * speed(piece, m);
-  for (int k = 1; k < 4; ++k) s += w[k] * (speed(piece, m - h * x[k]) + speed(piece, m + h * x[k]));
-  return s * h;
-}
-
-template <class Piece>
-double adaptive_length(const Piece& piece, double a, double b, double whole, double tol, int depth) {
-  const double m = 0.5 * (a + b);
-  const double left = gauss_legendre_7(piece, a, m), right = gauss_legendre_7(piece, m, b);
-  const double refined = left + right;
-  if (std::abs(refined - whole) <= tol || depth >= 40) return refined;
-  return adaptive_length(piece, a, m, left, 0.5 * tol, depth + 1) +
-         adaptive_length(piece, m, b, right, 0.5 * tol, depth + 1);
-}
-
-/// A length scale of the piece: the length of its control polygon (positive unless the piece
-/// is a single point).
-template <class Piece>
-double control_polygon_length(const Piece& piece) {
-  const auto cps = piece.control_points();
-  double len = 0, px = 0, py = 0;
-  bool first = true;
-  for (const auto& p : cps) {
-    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
-    if (!first) len += std::hypot(x - px, y - py);
-    px = x;
-    py = y;
-    first = false;
-  }
-  return len;
-}
-
-/// Signed curvature from c' and c'' in double, scaled so that neither |c'|^3 nor the cross
-/// product overflows or underflows: with m = max(|x'|, |y'|), u = c'/m, v = c''/m,
-/// kappa = (u x v) / (m |u|^3). NaN when c' = 0 or a value is not finite.
-template <class Piece>
-double scaled_curvature(const Piece& piece, double t) {
-  typedef typename Piece::FT FT;
-  const auto d1 = piece.derivative(FT(t));
-  const auto d2 = piece.second_derivative(FT(t));
-  const double x1 = CGAL::to_double(d1.x()), y1 = CGAL::to_double(d1.y());
-  const double x2 = CGAL::to_double(d2.x()), y2 = CGAL::to_double(d2.y());
-  const double m = std::max(std::abs(x1), std::abs(y1));
-  if (!(m > 0) || !std::isfinite(m)) return std::numeric_limits<double>::quiet_NaN();
-  const double ux = x1 / m, uy = y1 / m, vx = x2 / m, vy = y2 / m;
-  const double u = std::hypot(ux, uy);
-  return (ux * vy - uy * vx) / (u * u * u) / m;
-}
-
-/// Unit normal and curvature at t, with the one-sided limit at a singular parameter. The
-/// piece's own curvature() is used; where it fails (it may overflow for coordinates near the
-/// ends of the double range), scaled_curvature() from the piece's derivatives.
-template <class Piece>
-void normal_and_curvature(const Piece& piece, std::size_t index, double t, double& nx, double& ny,
-                          double& kappa) {
-  static const double nudges[4] = {0.0, 1e-9, 1e-7, 1e-5};
-  for (double nudge : nudges) {
-    const double s = t < 0.5 ? t + nudge : t - nudge;
-    double dx, dy;
-    speed_vector(piece, s, dx, dy);
-    const double v = std::hypot(dx, dy);
-    if (!(v > 0) || !std::isfinite(v)) continue;
-    double k = std::numeric_limits<double>::quiet_NaN();
-    try {
-      k = piece.curvature(s);
-    } catch (const Precondition_error&) {
-    }
-    if (!std::isfinite(k)) k = scaled_curvature(piece, s);
-    if (!std::isfinite(k)) continue;
-    nx = -dy / v;
-    ny = dx / v;
-    kappa = k;
-    return;
-  }
-  throw Precondition_error(message("sample_curve: piece ", index, " is singular at t = ", t,
-                                   " (c'(t) = 0 or undefined curvature, also nearby)"));
-}
-
-} // namespace internal
-
-/// Arc length of one piece between parameters a <= b, by adaptive Gauss-Legendre quadrature
-/// of |c'(t)| (accuracy: see the top of this file).
-template <class Piece>
-double piece_arc_length(const Piece& piece, double a = 0.0, double b = 1.0) {
+double piece_arc_length(const Piece& piece, double a = 0.0, double b = 1.0,
+                        const Quadrature_options& options = arc_length_options()) {
   internal::require(a <= b && std::isfinite(a) && std::isfinite(b),
                     "piece_arc_length: need finite a <= b, got a = ", a, ", b = ", b);
-  const double scale = internal::control_polygon_length(piece);
-  const double whole = internal::gauss_legendre_7(piece, a, b);
-  const double length = internal::adaptive_length(piece, a, b, whole, 1e-13 * scale * (b - a), 0);
-  if (!std::isfinite(length))
-    throw Precondition_error(internal::message("piece_arc_length: non-finite length on [", a, ", ",
-                                               b, "]"));
-  return length;
+  const internal::metrics::Piece_jet<Piece> jet(piece);
+  return internal::metrics::arc_length_between(jet, a, b, options, "piece_arc_length");
 }
+
+/// The default number of sampling intervals per piece: a smooth plot and comb of a fair piece.
+constexpr std::size_t default_samples_per_piece = 64;
 
 /// Samples every piece of `pieces` (a range of CurvePiece_2 pieces, joined end to start) at
 /// samples_per_piece + 1 uniformly spaced parameters. Throws Precondition_error when
 /// samples_per_piece is 0, or when a piece gives a non-finite point or is singular over a
 /// neighbourhood of a sample.
 template <class PieceRange>
-Sampled_curve sample_curve(const PieceRange& pieces, std::size_t samples_per_piece = 64) {
-  internal::require(samples_per_piece > 0, "sample_curve: samples_per_piece must be > 0");
-  typedef typename std::iterator_traits<decltype(std::begin(pieces))>::value_type Piece;
-  typedef typename Piece::FT FT;
-  Sampled_curve out;
-  double s = 0;
-  std::size_t index = 0;
-  const double n = static_cast<double>(samples_per_piece);
-  for (const Piece& piece : pieces) {
-    out.piece_start.push_back(s);
-    const double scale = internal::control_polygon_length(piece);
-    double previous_t = 0;
-    for (std::size_t k = 0; k <= samples_per_piece; ++k) {
-      Curve_sample c;
-      c.piece = index;
-      c.t = k == samples_per_piece ? 1.0 : static_cast<double>(k) / n;
-      if (k > 0) {
-        const double whole = internal::gauss_legendre_7(piece, previous_t, c.t);
-        s += internal::adaptive_length(piece, previous_t, c.t, whole, 1e-13 * scale / n, 0);
-      }
-      previous_t = c.t;
-      const auto p = piece.point(FT(c.t));
-      c.x = CGAL::to_double(p.x());
-      c.y = CGAL::to_double(p.y());
-      if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(s))
-        throw Precondition_error(internal::message("sample_curve: piece ", index, " at t = ", c.t,
-                                                   " gives the non-finite point (", c.x, ", ", c.y,
-                                                   ") or arc length ", s));
-      internal::normal_and_curvature(piece, index, c.t, c.nx, c.ny, c.curvature);
-      c.arc_length = s;
-      out.samples.push_back(c);
-    }
-    ++index;
-  }
-  out.piece_start.push_back(s);
-  return out;
+Sampled_curve sample_curve(const PieceRange& pieces, std::size_t samples_per_piece = default_samples_per_piece) {
+  return internal::metrics::sample_pieces(pieces, samples_per_piece, arc_length_options(),
+                                          internal::metrics::At_singular_sample::ONE_SIDED_LIMIT, "sample_curve");
 }
 
 } // namespace fair

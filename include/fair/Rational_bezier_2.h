@@ -16,13 +16,15 @@
 // Simple_cartesian<Gmpq>); in double the de Casteljau evaluations are backward stable and the
 // quotients add a few ulps. W(t) > 0 on [0,1] because every weight is positive, so no division
 // by zero can occur for t in [0,1]. curvature() is computed in double from double copies of
-// the control points; it throws where the tangent vanishes (a cusp) instead of returning NaN.
+// the control points, scale-safe (internal/common/curvature.h); it throws where the tangent
+// vanishes (a cusp) instead of returning NaN.
 
 #ifndef FAIR_RATIONAL_BEZIER_2_H
 #define FAIR_RATIONAL_BEZIER_2_H
 
 #include <fair/Bernstein_polynomial.h>
 #include <fair/Errors.h>
+#include <fair/internal/common/curvature.h>
 
 #include <CGAL/number_utils.h>
 
@@ -129,7 +131,8 @@ public:
     return det * det / (n2 * n2 * n2);
   }
 
-  /// Signed curvature det(c', c'') / |c'|^3 in double (from double control points).
+  /// Signed curvature det(c', c'') / |c'|^3 in double (from double control points), scale-safe:
+  /// no overflow or underflow unless kappa itself is not representable (internal/common/curvature.h).
   /// \throws Precondition_error if t is not in [0,1] or the tangent vanishes at t.
   double curvature(double t) const {
     internal::require(t >= 0 && t <= 1, "Rational_bezier_2::curvature: t = ", t, " is not in [0,1]");
@@ -138,7 +141,7 @@ public:
     const double n = std::hypot(dx, dy);
     internal::require(n > 0 && std::isfinite(n), "Rational_bezier_2::curvature: the tangent vanishes at t = ", t,
                       " (|c'| = ", n, ")");
-    return (dx * ey - dy * ex) / (n * n * n);
+    return internal::common::signed_curvature(dx, dy, ex, ey);
   }
 
   /// Homogeneous de Casteljau subdivision at s in (0,1): the pieces on [0,s] and [s,1], each

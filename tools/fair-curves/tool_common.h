@@ -134,7 +134,7 @@ fair::io::Gallery_case make_gallery_case(const PieceRange& pieces, const Curve_c
   g.caption = c.caption;
   g.images = {{"curve", f.curve_svg}, {"curvature", f.curvature_svg}};
   g.measurements = c.measurements;
-  g.measurements.emplace_back("arc length (adaptive Gauss-Legendre)", format_number(f.sampled.length(), 12));
+  g.measurements.emplace_back("arc length (adaptive Gauss-Kronrod)", format_number(f.sampled.length(), 12));
   return g;
 }
 

@@ -1,23 +1,22 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // How the fairness metrics look inside a curve piece:
-//  - Piece_traits classifies a piece as polynomial Bezier (fair::Bezier_2), rational Bezier (any
-//    piece with control_points() and weights(): c = sum B_i w_i P_i / sum B_i w_i) or generic
-//    (only the CurvePiece_2 concept);
+//  - kind_of<P> is the fair::Piece_kind of fair/Curve_traits.h: polynomial Bezier (fair::Bezier_2),
+//    rational Bezier (control_points() and weights()) or generic (only the CurvePiece_2 concept);
 //  - Piece_jet evaluates position and the first three derivatives in double, fast;
 //  - homogeneous_exact() gives the exact homogeneous form (X, Y, W) as Bernstein polynomials over
-//    an exact rational type, for certified root isolation.
+//    CGAL::Gmpq, for certified root isolation.
 
 #ifndef FAIR_INTERNAL_METRICS_PIECES_H
 #define FAIR_INTERNAL_METRICS_PIECES_H
 
 #include <fair/Bernstein_polynomial.h>
-#include <fair/Bezier_2.h>
+#include <fair/Curve_traits.h>
 #include <fair/Errors.h>
+#include <fair/internal/common/curvature.h>
 #include <fair/internal/common/exact_conversion.h>
 
 #include <CGAL/Gmpq.h>
-#include <CGAL/Lazy_exact_nt.h>
 #include <CGAL/number_utils.h>
 
 #include <cmath>
@@ -30,67 +29,17 @@ namespace fair {
 namespace internal {
 namespace metrics {
 
-// ---------------------------------------------------------------- exact rational conversion
-/// The exact rational type used to certify features of pieces with number type FT, and whether
-/// the conversion FT -> that type is exact (it is for double, Gmpq and Lazy_exact_nt).
-template <class FT>
-struct Exact_rational_of {
-  typedef CGAL::Gmpq Type;
-  static const bool exact = false;
-  static Type convert(const FT& x) { return Type(CGAL::to_double(x)); }
-};
-template <>
-struct Exact_rational_of<double> {
-  typedef CGAL::Gmpq Type;
-  static const bool exact = true; // every finite double is a dyadic rational
-  static Type convert(double x) { return Type(x); }
-};
-template <>
-struct Exact_rational_of<CGAL::Gmpq> {
-  typedef CGAL::Gmpq Type;
-  static const bool exact = true;
-  static const Type& convert(const CGAL::Gmpq& x) { return x; }
-};
-template <class ET>
-struct Exact_rational_of<CGAL::Lazy_exact_nt<ET>> {
-  typedef CGAL::Gmpq Type;
-  static const bool exact = true;
-  static Type convert(const CGAL::Lazy_exact_nt<ET>& x) { return common::to_gmpq(x); }
-};
-
 // ---------------------------------------------------------------- classification
-template <class P, class = void>
-struct Has_weights : std::false_type {};
+/// The kind of the piece type P (fair/Curve_traits.h).
 template <class P>
-struct Has_weights<P, std::void_t<decltype(std::declval<const P&>().weights()),
-                                  decltype(std::declval<const P&>().control_points())>> : std::true_type {};
-
-/// Pieces that certify their own curvature extrema (e.g. fair::Rational_quadratic_bezier_2):
-/// curvature_extrema() returning entries with t, t_lower, t_upper (exact) and multiplicity.
-template <class P, class = void>
-struct Has_own_curvature_extrema : std::false_type {};
-template <class P>
-struct Has_own_curvature_extrema<
-    P, std::void_t<decltype(std::declval<const P&>().curvature_extrema().front().t_lower),
-                   decltype(std::declval<const P&>().curvature_extrema().front().t_upper),
-                   decltype(std::declval<const P&>().curvature_extrema().front().t),
-                   decltype(std::declval<const P&>().curvature_extrema().front().multiplicity)>> : std::true_type {};
-
-template <class P>
-struct Is_bezier : std::false_type {};
-template <class K>
-struct Is_bezier<Bezier_2<K>> : std::true_type {};
-
-/// 0 = generic (concept only), 1 = polynomial Bezier, 2 = rational Bezier.
-template <class P>
-struct Piece_kind : std::integral_constant<int, Is_bezier<P>::value ? 1 : (Has_weights<P>::value ? 2 : 0)> {};
+constexpr Piece_kind kind_of = Piece_traits<P>::kind;
 
 /// Control points and weights of a Bernstein-form piece (weights all 1 for polynomial pieces).
 template <class P>
 void bernstein_form(const P& piece, std::vector<typename P::Point_2>& cp, std::vector<typename P::FT>& w) {
   const auto& c = piece.control_points();
   cp.assign(c.begin(), c.end());
-  if constexpr (Piece_kind<P>::value == 2) {
+  if constexpr (kind_of<P> == Piece_kind::RATIONAL_BEZIER) {
     const auto& ws = piece.weights();
     w.assign(ws.begin(), ws.end());
     require(w.size() == cp.size(), "fairness metrics: a rational piece has ", cp.size(), " control points but ",
@@ -105,13 +54,10 @@ void bernstein_form(const P& piece, std::vector<typename P::Point_2>& cp, std::v
 struct Jet {
   double x = 0, y = 0, x1 = 0, y1 = 0, x2 = 0, y2 = 0, x3 = 0, y3 = 0;
   double speed() const { return std::hypot(x1, y1); }
-  // Both formulas divide by the speed s before multiplying, so that huge or tiny coordinates
-  // neither overflow nor underflow (u = c'/s is a unit vector).
-  /// Signed curvature (c' x c'') / |c'|^3.
-  double curvature() const {
-    const double s = speed(), ux = x1 / s, uy = y1 / s;
-    return (ux * (y2 / s) - uy * (x2 / s)) / s;
-  }
+  /// Signed curvature (c' x c'') / |c'|^3, scale-safe; 0 where c' = 0 (internal/common/curvature.h).
+  double curvature() const { return common::signed_curvature(x1, y1, x2, y2); }
+  // Divides by the speed s before multiplying, so that huge or tiny coordinates neither overflow
+  // nor underflow (u = c'/s is a unit vector).
   /// d kappa / dt = (c' x c''') / |c'|^3 - 3 (c' x c'')(c'.c'') / |c'|^5.
   double curvature_derivative() const {
     const double s = speed(), ux = x1 / s, uy = y1 / s;
@@ -154,6 +100,11 @@ private:
   std::vector<double> d_[4];
 };
 
+/// Step of the central difference of second derivatives giving the third derivative of a generic
+/// piece: the truncation error h^2 |c^(5)| / 6 and the rounding error eps |c''| / h balance near
+/// 1e-4..1e-5; 1e-4 gives about 1e-8 relative for smooth pieces.
+constexpr double generic_third_derivative_step = 1e-4;
+
 /// Evaluates Jets of one piece. Bernstein-form pieces are converted to double once; a generic piece
 /// is evaluated through its concept functions, with the third derivative by a central difference
 /// of second derivatives (step 1e-4: relative error about 1e-8 for smooth pieces).
@@ -162,7 +113,7 @@ class Piece_jet {
 public:
   typedef typename P::FT FT;
   explicit Piece_jet(const P& piece) : piece_(&piece) {
-    if constexpr (Piece_kind<P>::value != 0) {
+    if constexpr (is_bernstein_form(kind_of<P>)) {
       std::vector<typename P::Point_2> cp;
       std::vector<FT> w;
       bernstein_form(piece, cp, w);
@@ -179,13 +130,15 @@ public:
     }
   }
 
-  Jet operator()(double t) const {
+  /// The jet at t. Derivatives above `order` (1..3) may be left 0: only a generic piece saves work
+  /// with that (its third derivative costs two more evaluations).
+  Jet operator()(double t, int order = 3) const {
     Jet j;
-    if constexpr (Piece_kind<P>::value != 0) {
+    if constexpr (is_bernstein_form(kind_of<P>)) {
       double X[4], Y[4], W[4];
       X_.evaluate(t, X, scratch_);
       Y_.evaluate(t, Y, scratch_);
-      if constexpr (Piece_kind<P>::value == 1) {
+      if constexpr (kind_of<P> == Piece_kind::POLYNOMIAL_BEZIER) {
         j.x = X[0]; j.y = Y[0]; j.x1 = X[1]; j.y1 = Y[1]; j.x2 = X[2]; j.y2 = Y[2]; j.x3 = X[3]; j.y3 = Y[3];
       } else {
         W_.evaluate(t, W, scratch_);
@@ -207,9 +160,10 @@ public:
       j.x = CGAL::to_double(p.x()); j.y = CGAL::to_double(p.y());
       j.x1 = CGAL::to_double(d1.x()); j.y1 = CGAL::to_double(d1.y());
       j.x2 = CGAL::to_double(d2.x()); j.y2 = CGAL::to_double(d2.y());
+      if (order < 3) return j;
       // Second-order differences that stay inside [0,1] (pieces may reject other parameters):
       // central inside, one-sided three-point formulas within h of an end.
-      const double h = 1e-4;
+      const double h = generic_third_derivative_step;
       auto second = [&](double u, double& x, double& y) {
         const auto v = piece_->second_derivative(FT(u));
         x = CGAL::to_double(v.x());
@@ -238,34 +192,40 @@ private:
   mutable std::vector<double> scratch_;
 };
 
+/// Rejects an empty curve: every metric needs at least one piece. Returns `what`.
+template <class Piece>
+const char* check_curve(const std::vector<Piece>& curve, const char* what) {
+  require(!curve.empty(), what, ": the curve has no piece");
+  return what;
+}
+
 // ---------------------------------------------------------------- exact homogeneous form
 /// The homogeneous form (X, Y, W) = (sum B_i w_i x_i, sum B_i w_i y_i, sum B_i w_i) of a
-/// Bernstein-form piece over the exact rational type ET (W = 1 of degree 0 for polynomial pieces).
-template <class ET>
+/// Bernstein-form piece over the rationals (W = 1 of degree 0 for polynomial pieces), exact:
+/// every coordinate and weight is converted by internal::common::to_gmpq, exact for every number
+/// type it accepts (a double is the dyadic rational it stores).
 struct Homogeneous_form {
-  Bernstein_polynomial<ET> X, Y, W;
-  bool exact = true; // false if the conversion of some coordinate to ET was not exact
+  Bernstein_polynomial<CGAL::Gmpq> X, Y, W;
 };
 
 template <class P>
-Homogeneous_form<typename Exact_rational_of<typename P::FT>::Type> homogeneous_exact(const P& piece) {
-  typedef Exact_rational_of<typename P::FT> Conv;
-  typedef typename Conv::Type ET;
+Homogeneous_form homogeneous_exact(const P& piece) {
+  using common::to_gmpq;
   std::vector<typename P::Point_2> cp;
   std::vector<typename P::FT> w;
   bernstein_form(piece, cp, w);
-  std::vector<ET> X, Y, W;
+  std::vector<CGAL::Gmpq> X, Y, W;
   for (std::size_t i = 0; i < cp.size(); ++i) {
-    const ET wi = Conv::convert(w[i]);
-    X.push_back(wi * ET(Conv::convert(cp[i].x())));
-    Y.push_back(wi * ET(Conv::convert(cp[i].y())));
+    const CGAL::Gmpq wi = to_gmpq(w[i]);
+    X.push_back(wi * to_gmpq(cp[i].x()));
+    Y.push_back(wi * to_gmpq(cp[i].y()));
     W.push_back(wi);
   }
-  Homogeneous_form<ET> h;
-  h.X = Bernstein_polynomial<ET>(X);
-  h.Y = Bernstein_polynomial<ET>(Y);
-  h.W = (Piece_kind<P>::value == 1) ? Bernstein_polynomial<ET>(std::vector<ET>(1, ET(1))) : Bernstein_polynomial<ET>(W);
-  h.exact = Conv::exact;
+  Homogeneous_form h;
+  h.X = Bernstein_polynomial<CGAL::Gmpq>(X);
+  h.Y = Bernstein_polynomial<CGAL::Gmpq>(Y);
+  h.W = kind_of<P> == Piece_kind::POLYNOMIAL_BEZIER ? Bernstein_polynomial<CGAL::Gmpq>(std::vector<CGAL::Gmpq>(1, CGAL::Gmpq(1)))
+                                  : Bernstein_polynomial<CGAL::Gmpq>(W);
   return h;
 }
 

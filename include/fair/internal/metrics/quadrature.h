@@ -1,8 +1,10 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// Globally adaptive Gauss-Kronrod (7/15 points) quadrature in double, used by the fairness
-// metrics. The 15-point Kronrod rule integrates polynomials of degree <= 22 exactly; the error
-// of a subinterval is estimated by |K15 - G7| (the embedded 7-point Gauss rule). This estimate
+// Globally adaptive Gauss-Kronrod (7/15 points) quadrature in double, the one adaptive
+// quadrature of the library (fairness metrics, arc lengths of the sampler); its options and
+// result are the public types of fair/Quadrature.h. The 15-point Kronrod rule integrates
+// polynomials of degree <= 22 exactly; the error of a subinterval is estimated by |K15 - G7|
+// (the embedded 7-point Gauss rule). This estimate
 // is conservative for smooth integrands (the Kronrod value is usually far more accurate than
 // the Gauss value it is compared with) but it is not a rigorous bound: an integrand with
 // features narrower than the initial subintervals can be missed.
@@ -11,6 +13,7 @@
 #define FAIR_INTERNAL_METRICS_QUADRATURE_H
 
 #include <fair/Errors.h>
+#include <fair/Quadrature.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,37 +22,12 @@
 #include <vector>
 
 namespace fair {
-
-/// Accuracy goals and caps of the adaptive quadrature.
-struct Quadrature_options {
-  /// Stop when the summed error estimate is <= max(absolute_tolerance, relative_tolerance |value|).
-  double relative_tolerance = 1e-10;
-  double absolute_tolerance = 1e-14;
-  /// Cap on the number of subintervals per integral (each costs 15 integrand evaluations).
-  /// Reaching it throws Non_convergence_error.
-  std::size_t max_subintervals = 20000;
-  /// Initial uniform subdivision of each piece's parameter interval.
-  std::size_t initial_subintervals = 4;
-};
-
-/// A quadrature result: the value, an error estimate (see internal/metrics/quadrature.h) and cost.
-struct Quadrature_estimate {
-  double value = 0;
-  double error_bound = 0;
-  std::size_t evaluations = 0;
-  std::size_t subintervals = 0;
-
-  Quadrature_estimate& operator+=(const Quadrature_estimate& o) {
-    value += o.value;
-    error_bound += o.error_bound;
-    evaluations += o.evaluations;
-    subintervals += o.subintervals;
-    return *this;
-  }
-};
-
 namespace internal {
 namespace metrics {
+
+/// Bisections between two exact re-summations of the value and error totals: the running totals
+/// are updated by differences, whose rounding would otherwise drift over thousands of steps.
+constexpr std::size_t quadrature_resum_period = 64;
 
 struct Gk_interval {
   double a, b, kronrod, error;
@@ -130,7 +108,7 @@ Quadrature_estimate adaptive_integral(F f, double a, double b, const Quadrature_
     ++count;
     value += l.kronrod + r.kronrod - worst.kronrod;
     error += l.error + r.error - worst.error;
-    if (++since_resum == 64) {
+    if (++since_resum == quadrature_resum_period) {
       totals();
       since_resum = 0;
     }

@@ -1,0 +1,218 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// The certified curvature features of Fairness_metrics.h (the method is in its file comment and in
+// doc/fairness_metrics.md): the exact polynomials D (sign of the curvature) and N (sign of its
+// derivative) of a Bernstein-form piece, their roots with the signs between them, and the walk
+// along the curve that turns sign changes into inflections and curvature extrema.
+// Included by Fairness_metrics.h after its report types (Curve_feature, Feature_report).
+
+#ifndef FAIR_INTERNAL_METRICS_FEATURES_H
+#define FAIR_INTERNAL_METRICS_FEATURES_H
+
+#include <fair/Bernstein_polynomial.h>
+#include <fair/Bernstein_root_isolation.h>
+#include <fair/Errors.h>
+#include <fair/internal/metrics/pieces.h>
+
+#include <CGAL/Gmpq.h>
+#include <CGAL/number_utils.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace fair {
+namespace internal {
+namespace metrics {
+
+/// Exact sign of a Gmpq polynomial at x.
+inline int exact_sign_at(const Bernstein_polynomial<CGAL::Gmpq>& p, const CGAL::Gmpq& x) {
+  return CGAL::sign(p.evaluate(x));
+}
+
+/// The roots of p in [0,1] with the sign of p on each gap between consecutive roots (and before
+/// the first / after the last). gaps[k] is the sign on the gap just before root k
+/// (gaps.size() == roots + 1); an empty gap (root at 0 or at 1) has sign 0.
+struct Signed_roots {
+  std::vector<Isolating_interval> roots;
+  std::vector<double> approximations;
+  std::vector<int> gaps;
+};
+
+/// Cap on the refinements of the isolating intervals next to a gap while looking for a rational
+/// that is not a root inside it: one refinement suffices unless the midpoint hits a root; the cap
+/// only guards against a broken isolation (then Internal_error).
+constexpr int max_gap_refinements = 200;
+
+inline Signed_roots signed_roots(const Bernstein_polynomial<CGAL::Gmpq>& p) {
+  Signed_roots out;
+  Bernstein_root_isolation iso(p);
+  const std::size_t k = iso.number_of_roots();
+  for (std::size_t i = 0; i < k; ++i) out.approximations.push_back(iso.root_approximation(i));
+  out.roots = iso.intervals();
+  const CGAL::Gmpq zero(0), one(1);
+  for (std::size_t g = 0; g <= k; ++g) {
+    // Find an exact rational strictly inside the gap between root g-1 and root g.
+    int sign = 0;
+    bool empty = false;
+    for (int attempt = 0; attempt < max_gap_refinements; ++attempt) {
+      const std::vector<Isolating_interval>& R = iso.intervals();
+      const bool has_prev = g > 0, has_next = g < k;
+      empty = (has_prev && !has_next && R[g - 1].is_point() && R[g - 1].lower == one) ||  // empty gap at 1
+              (!has_prev && has_next && R[g].is_point() && R[g].lower == zero);          // empty gap at 0
+      if (empty) break;
+      const CGAL::Gmpq left = has_prev ? R[g - 1].upper : zero;
+      const CGAL::Gmpq right = has_next ? R[g].lower : one;
+      sign = exact_sign_at(p, (left + right) / 2);
+      if (sign != 0) break;
+      // The midpoint is a root: it is the end of a neighbouring point interval (all roots are
+      // isolated), so the other neighbour is not a point interval; shrink it.
+      if (has_next && !R[g].is_point()) iso.refine(g, R[g].width() / 2);
+      else if (has_prev && !R[g - 1].is_point()) iso.refine(g - 1, R[g - 1].width() / 2);
+      else break;
+    }
+    // Between two consecutive isolated roots the polynomial has no root, so a nonzero sign exists.
+    FAIR_ASSERT_MSG(empty || sign != 0, "signed_roots: no non-root found in gap ", g, " of ", k + 1);
+    out.gaps.push_back(sign);
+  }
+  out.roots = iso.intervals();
+  return out;
+}
+
+/// D = det(P, P', P'') of the homogeneous form (sign of the curvature).
+inline Bernstein_polynomial<CGAL::Gmpq> curvature_sign_polynomial(const Homogeneous_form& h) {
+  typedef CGAL::Gmpq ET;
+  const Bernstein_polynomial<ET> X1 = h.X.derivative(), Y1 = h.Y.derivative(), W1 = h.W.derivative();
+  const Bernstein_polynomial<ET> X2 = X1.derivative(), Y2 = Y1.derivative(), W2 = W1.derivative();
+  return h.X * (Y1 * W2 - W1 * Y2) - h.Y * (X1 * W2 - W1 * X2) + h.W * (X1 * Y2 - Y1 * X2);
+}
+
+/// N, with sign(N) = sign(d kappa / dt) on regular points (see the file comment).
+inline Bernstein_polynomial<CGAL::Gmpq> curvature_derivative_sign_polynomial(const Homogeneous_form& h) {
+  typedef CGAL::Gmpq ET;
+  const Bernstein_polynomial<ET> D = curvature_sign_polynomial(h);
+  const Bernstein_polynomial<ET> X1 = h.X.derivative(), Y1 = h.Y.derivative(), W1 = h.W.derivative();
+  const Bernstein_polynomial<ET> Ax = X1 * h.W - h.X * W1, Ay = Y1 * h.W - h.Y * W1;
+  const Bernstein_polynomial<ET> Ax1 = Ax.derivative(), Ay1 = Ay.derivative();
+  const Bernstein_polynomial<ET> A2 = Ax * Ax + Ay * Ay, AA1 = Ax * Ax1 + Ay * Ay1;
+  return ET(2) * (D.derivative() * h.W + ET(3) * D * W1) * A2 - ET(6) * D * h.W * AA1;
+}
+
+inline bool is_zero_polynomial(const Bernstein_polynomial<CGAL::Gmpq>& p) {
+  for (const CGAL::Gmpq& c : p.coefficients())
+    if (!CGAL::is_zero(c)) return false;
+  return true;
+}
+
+template <class Piece>
+Curve_feature make_feature(const Piece& piece, std::size_t index, double t, const Isolating_interval& I, bool joint) {
+  Curve_feature f;
+  f.piece = index;
+  f.t = t;
+  f.interval = I;
+  Piece_jet<Piece> jet(piece);
+  const Jet j = jet(t);
+  f.x = j.x;
+  f.y = j.y;
+  f.curvature = j.curvature(); // 0 at a singular point
+  f.at_joint = joint;
+  return f;
+}
+
+/// Which sign changes certified_features() looks for.
+enum class Feature_kind {
+  INFLECTION,        ///< of D, the sign of the curvature
+  CURVATURE_EXTREMUM ///< of N, the sign of its derivative
+};
+
+/// Samples per piece of the uncertified search on generic pieces: enough to separate the few
+/// features of a fair piece, cheap enough for a report.
+constexpr int generic_feature_samples = 512;
+
+template <class Piece>
+Feature_report certified_features(const std::vector<Piece>& curve, Feature_kind which, const char* what) {
+  check_curve(curve, what);
+  Feature_report report;
+  if constexpr (kind_of<Piece> == Piece_kind::GENERIC) {
+    // Generic pieces: sign changes of kappa (or dkappa/dt) on the samples.
+    report.certified = false;
+    int last = 0;
+    for (std::size_t i = 0; i < curve.size(); ++i) {
+      Piece_jet<Piece> jet(curve[i]);
+      const int m = generic_feature_samples;
+      for (int k = 0; k <= m; ++k) {
+        const double t = double(k) / m;
+        const Jet j = jet(t);
+        const double v = which == Feature_kind::INFLECTION ? (j.x1 * j.y2 - j.y1 * j.x2) : j.curvature_derivative();
+        const int s = (v > 0) - (v < 0);
+        if (s != 0 && last != 0 && s != last) {
+          Isolating_interval I;
+          I.lower = CGAL::Gmpq(t);
+          I.upper = CGAL::Gmpq(t);
+          report.features.push_back(make_feature(curve[i], i, t, I, k == 0));
+        }
+        if (s != 0) last = s;
+      }
+    }
+    return report;
+  } else {
+    int last = 0;          // last nonzero gap sign along the curve
+    int first = 0;         // first nonzero gap sign along the curve
+    for (std::size_t i = 0; i < curve.size(); ++i) {
+      const Homogeneous_form h = homogeneous_exact(curve[i]);
+      const Bernstein_polynomial<CGAL::Gmpq> p =
+          which == Feature_kind::INFLECTION ? curvature_sign_polynomial(h) : curvature_derivative_sign_polynomial(h);
+      if (is_zero_polynomial(p)) {
+        report.degenerate_pieces.push_back(i);
+        continue;
+      }
+      const Signed_roots s = signed_roots(p);
+      // A piece that certifies its own curvature extrema provides the interior ones; the signs
+      // computed here still decide the changes at the joins.
+      bool own = false;
+      if constexpr (Piece_traits<Piece>::has_own_curvature_extrema) own = (which == Feature_kind::CURVATURE_EXTREMUM);
+      for (std::size_t g = 0; g < s.gaps.size(); ++g) {
+        const int sign = s.gaps[g];
+        if (sign == 0) continue;
+        if (first == 0) first = sign;
+        if (last != 0 && sign != last) {
+          // The sign changed since the last nonempty gap: at root g-1 of this piece when it is an
+          // interior one, otherwise across the join into this piece.
+          if (g > 0) {
+            const bool at_start = s.roots[g - 1].is_point() && CGAL::is_zero(s.roots[g - 1].lower);
+            if (!own || at_start)
+              report.features.push_back(make_feature(curve[i], i, s.approximations[g - 1], s.roots[g - 1], at_start));
+          } else {
+            Isolating_interval I;
+            report.features.push_back(make_feature(curve[i], i, 0.0, I, true));
+          }
+        }
+        last = sign;
+      }
+      if constexpr (Piece_traits<Piece>::has_own_curvature_extrema) {
+        if (own) {
+          for (const auto& x : curve[i].curvature_extrema()) {
+            if (x.multiplicity % 2 == 0) continue; // no sign change of kappa': not an extremum
+            Isolating_interval I;
+            I.lower = x.t_lower;
+            I.upper = x.t_upper;
+            I.multiplicity = x.multiplicity;
+            report.features.push_back(make_feature(curve[i], i, x.t, I, false));
+          }
+        }
+      }
+    }
+    // A closed curve (last end point == first start point, exactly): the closing join too.
+    if (first != 0 && last != first &&
+        curve.back().control_points().back() == curve.front().control_points().front()) {
+      Isolating_interval I;
+      report.features.push_back(make_feature(curve.front(), 0, 0.0, I, true));
+    }
+    return report;
+  }
+}
+
+} // namespace metrics
+} // namespace internal
+} // namespace fair
+
+#endif // FAIR_INTERNAL_METRICS_FEATURES_H
