@@ -5,7 +5,6 @@
 #include <fair/Bezier_2.h>
 #include <fair/Curve_sampling.h>
 #include <fair/Rational_quadratic_bezier_2.h>
-#include <fair/io/gallery.h>
 #include <fair/io/svg.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -16,6 +15,9 @@
 #include <gtest/gtest.h>
 
 #include "test_support.h"
+
+// The demo page of fair-curves (a program header, tested here with the figures it shows).
+#include "../tools/fair-curves/gallery.h"
 
 #include <algorithm>
 #include <cctype>
@@ -279,7 +281,7 @@ TEST(Svg, CurvaturePlotHasOnePolylinePerPieceAndJoinMarks) {
 // ------------------------------------------------------------------ gallery
 
 TEST(Gallery, WritesIndexWithSectionsFiguresAndTables) {
-  fair::io::Gallery g("Test <gallery>", "intro & more");
+  fair_curves::Gallery g("Test <gallery>", "intro & more");
   g.add_section("First", "one");
   const std::string svg = parabola_figure<SC_double>(1);
   g.add_case({"parabola", "caption <b>", {{"curve", svg}, {"curvature plot", svg}}, {{"length", "2.96"}}});

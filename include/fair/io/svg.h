@@ -47,9 +47,8 @@ struct Svg_mark {
   std::string label;
 };
 
-namespace internal {
-
-/// Escapes text for SVG/HTML character data and attribute values.
+/// `s` with & < > " ' replaced by their entities: safe as SVG/HTML character data and as a
+/// quoted attribute value. Linear in the length of `s`.
 inline std::string xml_escape(const std::string& s) {
   std::string out;
   out.reserve(s.size());
@@ -65,6 +64,8 @@ inline std::string xml_escape(const std::string& s) {
   }
   return out;
 }
+
+namespace internal {
 
 /// A pixel coordinate with two decimals.
 inline std::string px(double v) {
@@ -284,7 +285,7 @@ public:
            internal::px(height) + "\" fill=\"white\"/>\n";
     if (!title_.empty())
       out += "<text x=\"" + internal::px(margin) + "\" y=\"16\" font-family=\"sans-serif\" "
-             "font-size=\"13\">" + internal::xml_escape(title_) + "</text>\n";
+             "font-size=\"13\">" + xml_escape(title_) + "</text>\n";
     out += "<g transform=\"translate(0," + internal::px(title_height) + ")\">\n";
     for (const Line& l : lines_) {
       out += "<polyline fill=\"none\" stroke=\"" + l.color + "\" stroke-width=\"" +
@@ -313,7 +314,7 @@ public:
         const bool left = x > 0.75 * width;
         out += "<text x=\"" + internal::px(left ? x - 8 : x + 8) + "\" y=\"" + internal::px(y - 8) +
                "\" font-family=\"sans-serif\" font-size=\"11\" fill=\"" + d.color + "\"" +
-               (left ? " text-anchor=\"end\"" : "") + ">" + internal::xml_escape(d.label) + "</text>\n";
+               (left ? " text-anchor=\"end\"" : "") + ">" + xml_escape(d.label) + "</text>\n";
       }
     }
     out += "</g>\n</svg>\n";
@@ -400,7 +401,7 @@ inline std::string curvature_plot_svg(const Sampled_curve& curve,
          "\" viewBox=\"0 0 " + px(width) + " " + px(height) + "\">\n";
   out += "<rect x=\"0\" y=\"0\" width=\"" + px(width) + "\" height=\"" + px(height) + "\" fill=\"white\"/>\n";
   out += "<text x=\"" + px(left) + "\" y=\"16\" font-family=\"sans-serif\" font-size=\"13\">" +
-         internal::xml_escape(title) + "</text>\n";
+         xml_escape(title) + "</text>\n";
   // Frame and ticks.
   out += "<rect x=\"" + px(left) + "\" y=\"" + px(top) + "\" width=\"" + px(pw) + "\" height=\"" + px(ph) +
          "\" fill=\"none\" stroke=\"#444\" stroke-width=\"0.8\"/>\n";
@@ -461,7 +462,7 @@ inline std::string curvature_plot_svg(const Sampled_curve& curve,
       const double label_y = Y(m.kappa) - 7 < top + 12 ? Y(m.kappa) + 16 : Y(m.kappa) - 7;
       out += "<text x=\"" + px(to_left ? X(m.s) - 7 : X(m.s) + 7) + "\" y=\"" + px(label_y) +
              "\" font-family=\"sans-serif\" font-size=\"10\" fill=\"#c0392b\"" +
-             (to_left ? " text-anchor=\"end\"" : "") + ">" + internal::xml_escape(m.label) + "</text>\n";
+             (to_left ? " text-anchor=\"end\"" : "") + ">" + xml_escape(m.label) + "</text>\n";
     }
   }
   out += "</svg>\n";
