@@ -285,11 +285,42 @@ TEST(IoJson, MalformedJsonInMemory) {
   EXPECT_EQ(ok.points[1], K::Point_2(3, 4.5));
 }
 
+// The public JSON reader of fair/io/parsing.h: kinds, lines, texts and members.
+TEST(IoJson, ParseJsonKeepsKindsAndLines) {
+  using fair::io::Json_value;
+  const Json_value root = fair::io::parse_json(
+      "{\"a\": [1.5,\n \"x\", true],\n \"b\": null,\n\n \"c\": {\"d\": \"2/3\"}}", "j.json");
+  ASSERT_EQ(root.kind, Json_value::OBJECT);
+  EXPECT_EQ(root.line, 1u);
+  ASSERT_EQ(root.members.size(), 3u);
+  const Json_value* a = root.find("a");
+  ASSERT_NE(a, nullptr);
+  ASSERT_EQ(a->kind, Json_value::ARRAY);
+  ASSERT_EQ(a->items.size(), 3u);
+  EXPECT_EQ(a->items[0].kind, Json_value::NUMBER);
+  EXPECT_EQ(a->items[0].text, "1.5");
+  EXPECT_EQ(a->items[1].kind, Json_value::STRING);
+  EXPECT_EQ(a->items[1].line, 2u);
+  EXPECT_EQ(a->items[2].kind, Json_value::BOOLEAN);
+  EXPECT_TRUE(a->items[2].flag);
+  EXPECT_EQ(root.find("b")->kind, Json_value::NULL_VALUE);
+  EXPECT_EQ(root.find("b")->line, 3u);
+  const Json_value* d = root.find("c")->find("d");
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->line, 5u);
+  EXPECT_EQ(fair::io::to_ft<CGAL::Gmpq>(fair::io::parse_number(d->text, "j.json", d->line, "d")), CGAL::Gmpq(2, 3));
+  EXPECT_EQ(root.find("missing"), nullptr);
+  EXPECT_STREQ(Json_value::kind_name(Json_value::OBJECT), "an object");
+  expect_parse_error([&] { fair::io::parse_json("[1,\n2,\n nan]", "n.json"); }, "n.json", 3);
+}
+
 TEST(IoFiles, MissingFileAndDirectory) {
   const std::string missing = data_dir + "does_not_exist.csv";
   const std::string msg = expect_parse_error([&] { fair::io::read_points<SC_double>(missing); }, missing, 0);
   EXPECT_NE(msg.find("cannot open"), std::string::npos) << msg;
   expect_parse_error([&] { fair::io::read_points<SC_double>(data_dir); }, data_dir, 0);
+  expect_parse_error([&] { fair::io::read_text_file(missing); }, missing, 0);
+  EXPECT_NE(fair::io::read_text_file(data_dir + "good.csv").find("0,0"), std::string::npos);
 }
 
 TEST(IoFiles, CheckPointFileNamesTheLineOfARepeatedPoint) {

@@ -201,6 +201,12 @@ std::string parabola_figure(double scale, double shift_x = 0) {
   return f.str();
 }
 
+// fair::io::xml_escape (public since the gallery moved into the program, which uses it).
+TEST(SvgText, XmlEscapeReplacesTheFiveSpecialCharacters) {
+  EXPECT_EQ(fair::io::xml_escape("a<b & \"c\" > 'd'"), "a&lt;b &amp; &quot;c&quot; &gt; &#39;d&#39;");
+  EXPECT_EQ(fair::io::xml_escape("plain"), "plain");
+}
+
 TEST(Svg, FigureIsFiniteInsideItsViewBoxAndEscaped) {
   const std::string svg = parabola_figure<SC_double>(1);
   expect_clean_svg(svg);
