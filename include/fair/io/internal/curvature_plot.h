@@ -26,8 +26,14 @@ namespace internal {
 constexpr double plot_margin_left = 64, plot_margin_right = 16, plot_margin_top = 26, plot_margin_bottom = 34;
 // The curvature axis spans 8% more than the data, so that extrema do not touch the frame.
 constexpr double plot_curvature_headroom = 1.08;
+// About how many ticks each axis gets (nice_step rounds the step to 1, 2 or 5 times 10^k).
+constexpr int plot_arc_length_ticks = 6, plot_curvature_ticks = 5;
 // More ticks than any "nice" step gives over its range: a guard against a degenerate step.
 constexpr int plot_max_ticks = 40;
+// A tick this close (relative) past the end of the arc is still drawn: it is the end, rounded.
+constexpr double plot_end_tick_slack = 1e-9;
+// A curvature tick within this fraction of a step from 0 is 0 (labelled "0", not "-1.2e-17").
+constexpr double plot_zero_tick_fraction = 1e-12;
 
 /// The smallest and largest curvature of the samples and the marks (0 included, so that the
 /// zero line is always in range). Throws Precondition_error on a non-finite value.
@@ -94,10 +100,10 @@ inline std::string plot_axes(const Plot_frame& f) {
   std::string out;
   out += "<rect x=\"" + px(f.left) + "\" y=\"" + px(f.top) + "\" width=\"" + px(f.pw) + "\" height=\"" + px(f.ph) +
          "\" fill=\"none\" stroke=\"#444\" stroke-width=\"0.8\"/>\n";
-  const double sstep = nice_step(f.length, 6);
+  const double sstep = nice_step(f.length, plot_arc_length_ticks);
   for (int i = 0; i <= plot_max_ticks; ++i) {
     const double s = i * sstep;
-    if (s > f.length * (1 + 1e-9)) break;
+    if (s > f.length * (1 + plot_end_tick_slack)) break;
     out += "<line x1=\"" + px(f.x(s)) + "\" y1=\"" + px(f.top + f.ph) + "\" x2=\"" + px(f.x(s)) + "\" y2=\"" +
            px(f.top + f.ph + 4) + "\" stroke=\"#444\" stroke-width=\"0.8\"/>\n";
     out += "<text x=\"" + px(f.x(s)) + "\" y=\"" + px(f.top + f.ph + 16) +
@@ -105,7 +111,7 @@ inline std::string plot_axes(const Plot_frame& f) {
   }
   out += "<text x=\"" + px(f.left + f.pw) + "\" y=\"" + px(f.height - 4) +
          "\" font-family=\"sans-serif\" font-size=\"11\" text-anchor=\"end\">arc length s</text>\n";
-  const double kstep = nice_step(2 * f.khalf, 5);
+  const double kstep = nice_step(2 * f.khalf, plot_curvature_ticks);
   if (std::isfinite(kstep) && kstep > 0) {
     const double first = std::ceil(f.klo() / kstep);
     for (int i = 0; i <= plot_max_ticks; ++i) {
@@ -115,7 +121,7 @@ inline std::string plot_axes(const Plot_frame& f) {
              px(f.y(k)) + "\" stroke=\"#444\" stroke-width=\"0.8\"/>\n";
       out += "<text x=\"" + px(f.left - 6) + "\" y=\"" + px(f.y(k) + 3) +
              "\" font-family=\"sans-serif\" font-size=\"10\" text-anchor=\"end\">" +
-             short_number(std::abs(k) < 1e-12 * kstep ? 0.0 : k) + "</text>\n";
+             short_number(std::abs(k) < plot_zero_tick_fraction * kstep ? 0.0 : k) + "</text>\n";
     }
   }
   out += "<text x=\"12\" y=\"" + px(f.top + 0.5 * f.ph) + "\" font-family=\"sans-serif\" font-size=\"11\" "

@@ -195,6 +195,7 @@ private:
 
 } // namespace internal
 
+// Declared, with its contract, in fair/io/parsing.h.
 inline Json_value parse_json(const std::string& text, const std::string& file) {
   return internal::Json_line_parser(text, file).parse();
 }

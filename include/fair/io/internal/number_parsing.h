@@ -107,6 +107,8 @@ struct Lazy_exact_type<T, std::void_t<decltype(std::declval<const T&>().exact())
 
 } // namespace internal
 
+// The functions of fair/io/parsing.h (their contracts are there).
+
 inline double parse_decimal(const std::string& text, const std::string& file, std::size_t line,
                             const char* what) {
   using internal::quoted;
