@@ -2,6 +2,7 @@
 // the JSON/CSV writers (round trips, exact rationals, refusal to write non-finite numbers).
 
 #include <fair/Bezier_2.h>
+#include <fair/io/parsing.h>
 #include <fair/io/read_points.h>
 #include <fair/io/write_json.h>
 
@@ -67,18 +68,18 @@ TEST(IoNumbers, DecimalsRoundTripEveryDouble) {
     const double v = std::ldexp(mantissa(rng), exponent(rng));
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.17g", v);
-    EXPECT_EQ(fair::io::internal::parse_decimal(buffer, "f", 1, "x"), v) << buffer;
+    EXPECT_EQ(fair::io::parse_decimal(buffer, "f", 1, "x"), v) << buffer;
     const std::string shortest = nlohmann::json(v).dump();
-    EXPECT_EQ(fair::io::internal::parse_decimal(shortest, "f", 1, "x"), v) << shortest;
+    EXPECT_EQ(fair::io::parse_decimal(shortest, "f", 1, "x"), v) << shortest;
   }
   // Halfway cases and subnormals are rounded correctly.
-  EXPECT_EQ(fair::io::internal::parse_decimal("0.1", "f", 1, "x"), 0.1);
-  EXPECT_EQ(fair::io::internal::parse_decimal("9007199254740993", "f", 1, "x"), 9007199254740992.0);
-  EXPECT_EQ(fair::io::internal::parse_decimal("4.9406564584124654e-324", "f", 1, "x"),
+  EXPECT_EQ(fair::io::parse_decimal("0.1", "f", 1, "x"), 0.1);
+  EXPECT_EQ(fair::io::parse_decimal("9007199254740993", "f", 1, "x"), 9007199254740992.0);
+  EXPECT_EQ(fair::io::parse_decimal("4.9406564584124654e-324", "f", 1, "x"),
             std::numeric_limits<double>::denorm_min());
-  EXPECT_EQ(fair::io::internal::parse_decimal("+.5", "f", 1, "x"), 0.5);
-  EXPECT_EQ(fair::io::internal::parse_decimal("-7.", "f", 1, "x"), -7.0);
-  EXPECT_EQ(fair::io::internal::parse_decimal("1.7976931348623157e308", "f", 1, "x"),
+  EXPECT_EQ(fair::io::parse_decimal("+.5", "f", 1, "x"), 0.5);
+  EXPECT_EQ(fair::io::parse_decimal("-7.", "f", 1, "x"), -7.0);
+  EXPECT_EQ(fair::io::parse_decimal("1.7976931348623157e308", "f", 1, "x"),
             std::numeric_limits<double>::max());
 }
 
@@ -98,26 +99,26 @@ TEST(IoNumbers, RejectsEveryMalformedNumberWithItsReason) {
                         {"1,5", "trailing"},      {"12abc", "trailing"}};
   for (const Case& c : cases) {
     const std::string msg = expect_parse_error(
-        [&] { fair::io::internal::parse_decimal(c.text, "n.csv", 9, "x coordinate"); }, "n.csv", 9);
+        [&] { fair::io::parse_decimal(c.text, "n.csv", 9, "x coordinate"); }, "n.csv", 9);
     EXPECT_NE(msg.find(c.reason), std::string::npos) << c.text << " -> " << msg;
   }
 }
 
 TEST(IoNumbers, Rationals) {
-  const auto r = fair::io::internal::parse_number("-9192/12241", "f", 1, "x");
+  const auto r = fair::io::parse_number("-9192/12241", "f", 1, "x");
   EXPECT_TRUE(r.rational);
   EXPECT_EQ(r.value, -9192.0 / 12241.0);
-  const CGAL::Gmpq q = fair::io::internal::to_ft<CGAL::Gmpq>(r);
+  const CGAL::Gmpq q = fair::io::to_ft<CGAL::Gmpq>(r);
   EXPECT_EQ(q, CGAL::Gmpq(-9192, 12241));
   // An exact FT gets the exact value even for digits beyond double precision.
-  const auto big = fair::io::internal::parse_number("123456789012345678901234567891/7", "f", 1, "x");
-  const EPECK::FT e = fair::io::internal::to_ft<EPECK::FT>(big);
+  const auto big = fair::io::parse_number("123456789012345678901234567891/7", "f", 1, "x");
+  const EPECK::FT e = fair::io::to_ft<EPECK::FT>(big);
   std::ostringstream exact;
   exact << e.exact();
   EXPECT_EQ(exact.str(), "123456789012345678901234567891/7");
-  EXPECT_EQ(fair::io::internal::to_ft<double>(big), 123456789012345678901234567891.0 / 7.0);
+  EXPECT_EQ(fair::io::to_ft<double>(big), 123456789012345678901234567891.0 / 7.0);
   for (const char* bad : {"1/0", "1/-3", "1/", "/3", "1.5/2", "1/2/3", "a/b", "1/00"})
-    expect_parse_error([&] { fair::io::internal::parse_number(bad, "r", 4, "x"); }, "r", 4);
+    expect_parse_error([&] { fair::io::parse_number(bad, "r", 4, "x"); }, "r", 4);
 }
 
 // ------------------------------------------------------------------ point files, per kernel
@@ -284,11 +285,42 @@ TEST(IoJson, MalformedJsonInMemory) {
   EXPECT_EQ(ok.points[1], K::Point_2(3, 4.5));
 }
 
+// The public JSON reader of fair/io/parsing.h: kinds, lines, texts and members.
+TEST(IoJson, ParseJsonKeepsKindsAndLines) {
+  using fair::io::Json_value;
+  const Json_value root = fair::io::parse_json(
+      "{\"a\": [1.5,\n \"x\", true],\n \"b\": null,\n\n \"c\": {\"d\": \"2/3\"}}", "j.json");
+  ASSERT_EQ(root.kind, Json_value::OBJECT);
+  EXPECT_EQ(root.line, 1u);
+  ASSERT_EQ(root.members.size(), 3u);
+  const Json_value* a = root.find("a");
+  ASSERT_NE(a, nullptr);
+  ASSERT_EQ(a->kind, Json_value::ARRAY);
+  ASSERT_EQ(a->items.size(), 3u);
+  EXPECT_EQ(a->items[0].kind, Json_value::NUMBER);
+  EXPECT_EQ(a->items[0].text, "1.5");
+  EXPECT_EQ(a->items[1].kind, Json_value::STRING);
+  EXPECT_EQ(a->items[1].line, 2u);
+  EXPECT_EQ(a->items[2].kind, Json_value::BOOLEAN);
+  EXPECT_TRUE(a->items[2].flag);
+  EXPECT_EQ(root.find("b")->kind, Json_value::NULL_VALUE);
+  EXPECT_EQ(root.find("b")->line, 3u);
+  const Json_value* d = root.find("c")->find("d");
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->line, 5u);
+  EXPECT_EQ(fair::io::to_ft<CGAL::Gmpq>(fair::io::parse_number(d->text, "j.json", d->line, "d")), CGAL::Gmpq(2, 3));
+  EXPECT_EQ(root.find("missing"), nullptr);
+  EXPECT_STREQ(Json_value::kind_name(Json_value::OBJECT), "an object");
+  expect_parse_error([&] { fair::io::parse_json("[1,\n2,\n nan]", "n.json"); }, "n.json", 3);
+}
+
 TEST(IoFiles, MissingFileAndDirectory) {
   const std::string missing = data_dir + "does_not_exist.csv";
   const std::string msg = expect_parse_error([&] { fair::io::read_points<SC_double>(missing); }, missing, 0);
   EXPECT_NE(msg.find("cannot open"), std::string::npos) << msg;
   expect_parse_error([&] { fair::io::read_points<SC_double>(data_dir); }, data_dir, 0);
+  expect_parse_error([&] { fair::io::read_text_file(missing); }, missing, 0);
+  EXPECT_NE(fair::io::read_text_file(data_dir + "good.csv").find("0,0"), std::string::npos);
 }
 
 TEST(IoFiles, CheckPointFileNamesTheLineOfARepeatedPoint) {

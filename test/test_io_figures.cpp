@@ -5,7 +5,6 @@
 #include <fair/Bezier_2.h>
 #include <fair/Curve_sampling.h>
 #include <fair/Rational_quadratic_bezier_2.h>
-#include <fair/io/gallery.h>
 #include <fair/io/svg.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -16,6 +15,9 @@
 #include <gtest/gtest.h>
 
 #include "test_support.h"
+
+// The demo page of fair-curves (a program header, tested here with the figures it shows).
+#include "../tools/fair-curves/gallery.h"
 
 #include <algorithm>
 #include <cctype>
@@ -199,6 +201,12 @@ std::string parabola_figure(double scale, double shift_x = 0) {
   return f.str();
 }
 
+// fair::io::xml_escape (public since the gallery moved into the program, which uses it).
+TEST(SvgText, XmlEscapeReplacesTheFiveSpecialCharacters) {
+  EXPECT_EQ(fair::io::xml_escape("a<b & \"c\" > 'd'"), "a&lt;b &amp; &quot;c&quot; &gt; &#39;d&#39;");
+  EXPECT_EQ(fair::io::xml_escape("plain"), "plain");
+}
+
 TEST(Svg, FigureIsFiniteInsideItsViewBoxAndEscaped) {
   const std::string svg = parabola_figure<SC_double>(1);
   expect_clean_svg(svg);
@@ -279,7 +287,7 @@ TEST(Svg, CurvaturePlotHasOnePolylinePerPieceAndJoinMarks) {
 // ------------------------------------------------------------------ gallery
 
 TEST(Gallery, WritesIndexWithSectionsFiguresAndTables) {
-  fair::io::Gallery g("Test <gallery>", "intro & more");
+  fair_curves::Gallery g("Test <gallery>", "intro & more");
   g.add_section("First", "one");
   const std::string svg = parabola_figure<SC_double>(1);
   g.add_case({"parabola", "caption <b>", {{"curve", svg}, {"curvature plot", svg}}, {{"length", "2.96"}}});

@@ -2,7 +2,7 @@
 //
 // Cardinal spline curves and the parameter / auxiliary points that minimise their curvature
 // variation, after J. Li, "Curvature variation minimizing Cardinal spline curves"
-// (/work/shared/papers/li-curvature-variation-cardinal-splines.md; eq. numbers refer to it).
+// ([Li] in doc/references.md; eq. numbers refer to it).
 // The user manual is doc/cardinal_splines.md.
 //
 // Conventions. The segment on the four consecutive points (q0, q1, q2, q3) is (eqs. 1-2)

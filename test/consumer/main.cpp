@@ -1,7 +1,9 @@
 // A tiny consumer of the installed package: find_package(fair) + fair::fair must bring CGAL,
-// GMP/MPFR (EPECK) and Eigen (the kappa solver) with it.
+// GMP/MPFR (EPECK) and Eigen (the kappa solver) with it, and fair::io nlohmann-json (the JSON
+// writer). all_public_headers.cpp (generated) includes every other public header.
 #include <fair/Kappa_curve_2.h>
 #include <fair/Rational_quadratic_bezier_2.h>
+#include <fair/io/write_json.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -21,6 +23,12 @@ int main() {
     const K::Point_2 p = curve.pieces().front().control_points()[1];
     if (std::abs(p.x() + 0.08187) > 1e-4 || std::abs(p.y() - 1.71183) > 1e-4) {
       std::cerr << "unexpected control point " << p << '\n';
+      return 1;
+    }
+    // The curve as JSON (fair::io).
+    const nlohmann::json json = fair::io::curve_to_json(curve.pieces());
+    if (json.at("format") != "fair-curve" || json.at("pieces").size() != curve.number_of_pieces()) {
+      std::cerr << "unexpected curve JSON " << json.dump() << '\n';
       return 1;
     }
     // An exact conic piece: w = 1 is a parabola, decided exactly.

@@ -8,6 +8,11 @@ macro(run)
 endmacro()
 # Only the library (component Development): the consumer needs neither the program nor a full build.
 run(${CMAKE_COMMAND} --install ${FAIR_BINARY_DIR} --prefix ${SCRATCH}/prefix --component Development)
+# The licence every file refers to is installed with the headers.
+file(GLOB_RECURSE licence ${SCRATCH}/prefix/share/doc/fair/LICENSE_1_0.txt)
+if(NOT licence)
+  message(FATAL_ERROR "LICENSE_1_0.txt not installed under ${SCRATCH}/prefix/share/doc/fair")
+endif()
 run(${CMAKE_COMMAND} -S ${FAIR_SOURCE_DIR}/test/consumer -B ${SCRATCH}/build
     -DCMAKE_PREFIX_PATH=${SCRATCH}/prefix -DCMAKE_BUILD_TYPE=Release)
 run(${CMAKE_COMMAND} --build ${SCRATCH}/build)

@@ -21,6 +21,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -29,81 +30,110 @@ struct Cardinal_options {
   bool closed = false, exact = false;
 };
 
+// What `cardinal` computed, for the JSON, the report and the figures.
 template <class K>
-void run_cardinal_in(const Cardinal_options& o) {
+struct Cardinal_result {
+  typedef typename K::FT FT;
+  fair::io::Point_file<K> data;
+  bool closed = false, optimal = false, explicit_aux = false;
+  FT alpha;
+  std::optional<fair::Cardinal_spline_2<K>> curve;
+  std::vector<typename fair::Cardinal_spline_2<K>::Piece> pieces;
+  FT energy_approx;
+  fair::Quadrature_estimate energy_parameter, energy_arc_length;
+};
+
+// Reads and checks the input, then builds the spline: the optimum of eq. 18 or the given alpha,
+// with the given auxiliary points or those of eqs. 19-20.
+template <class K>
+Cardinal_result<K> compute_cardinal(const Cardinal_options& o) {
   typedef typename K::FT FT;
   typedef typename K::Point_2 P;
-  const fair::io::Point_file<K> data = fair::io::read_point_file<K>(o.input);
-  const bool closed = o.closed || data.closed;
-  const bool optimal = o.alpha == "optimal";
-  const bool explicit_aux = !o.aux_start.empty() || !o.aux_end.empty();
-  if (closed && explicit_aux)
+  Cardinal_result<K> r;
+  r.data = fair::io::read_point_file<K>(o.input);
+  r.closed = o.closed || r.data.closed;
+  r.optimal = o.alpha == "optimal";
+  r.explicit_aux = !o.aux_start.empty() || !o.aux_end.empty();
+  if (r.closed && r.explicit_aux)
     throw CLI::ValidationError("--aux-start/--aux-end", "a closed curve has no auxiliary points");
-  if (explicit_aux && (o.aux_start.empty() || o.aux_end.empty()))
+  if (r.explicit_aux && (o.aux_start.empty() || o.aux_end.empty()))
     throw CLI::ValidationError("--aux-start/--aux-end", "give both auxiliary points or neither");
-  const std::size_t minimum = optimal ? (closed ? 3 : 4) : (closed ? 3 : (explicit_aux ? 2 : 3));
-  fair::io::check_point_file(data, minimum, closed, "fair-curves cardinal");
+  const std::size_t minimum = r.optimal ? (r.closed ? 3 : 4) : (r.closed ? 3 : (r.explicit_aux ? 2 : 3));
+  fair::io::check_point_file(r.data, minimum, r.closed, "fair-curves cardinal");
 
-  FT alpha;
-  if (optimal) {
-    alpha = fair::optimal_cardinal_parameters(data.points, closed).alpha;
+  if (r.optimal) {
+    r.alpha = fair::optimal_cardinal_parameters(r.data.points, r.closed).alpha;
   } else {
-    alpha = FT(fair_curves::option_number(o.alpha, "--alpha"));
+    r.alpha = FT(fair_curves::option_number(o.alpha, "--alpha"));
   }
-  std::optional<fair::Cardinal_spline_2<K>> curve;
-  if (closed) {
-    curve.emplace(data.points, alpha, true);
-  } else if (explicit_aux) {
+  if (r.closed) {
+    r.curve.emplace(r.data.points, r.alpha, true);
+  } else if (r.explicit_aux) {
     const fair_curves::Point_2 a = fair_curves::option_point(o.aux_start, "--aux-start");
     const fair_curves::Point_2 b = fair_curves::option_point(o.aux_end, "--aux-end");
-    curve.emplace(data.points, alpha, P(a.x(), a.y()), P(b.x(), b.y()));
+    r.curve.emplace(r.data.points, r.alpha, P(a.x(), a.y()), P(b.x(), b.y()));
   } else {
-    curve.emplace(data.points, alpha, false); // the auxiliary points of eqs. 19-20 for this alpha
+    r.curve.emplace(r.data.points, r.alpha, false); // the auxiliary points of eqs. 19-20 for this alpha
   }
-  const auto pieces = curve->pieces();
-  const FT energy_approx = curve->approximate_energy();
-  const fair::Quadrature_estimate e_t = curve->curvature_variation_energy(fair::Energy_measure::PARAMETER);
-  const fair::Quadrature_estimate e_s = curve->curvature_variation_energy(fair::Energy_measure::ARC_LENGTH);
+  r.pieces = r.curve->pieces();
+  r.energy_approx = r.curve->approximate_energy();
+  r.energy_parameter = r.curve->curvature_variation_energy(fair::Energy_measure::PARAMETER);
+  r.energy_arc_length = r.curve->curvature_variation_energy(fair::Energy_measure::ARC_LENGTH);
+  return r;
+}
 
+// The curve JSON: the pieces plus the method's parameters, energies and input.
+template <class K>
+nlohmann::json cardinal_json(const Cardinal_result<K>& r, const Cardinal_options& o) {
   nlohmann::json extra{{"method", "cardinal"},
-                       {"closed", closed},
-                       {"alpha", CGAL::to_double(alpha)},
-                       {"alpha_choice", optimal ? "optimal (Li eq. 18)" : "given"},
-                       {"energy_approx", CGAL::to_double(energy_approx)},
-                       {"energy_true", e_t.value},
-                       {"energy_true_error", e_t.error_bound},
-                       {"energy_true_arc_length", e_s.value},
-                       {"input", fair::io::points_to_json(data.points, closed)}};
+                       {"closed", r.closed},
+                       {"alpha", CGAL::to_double(r.alpha)},
+                       {"alpha_choice", r.optimal ? "optimal (Li eq. 18)" : "given"},
+                       {"energy_approx", CGAL::to_double(r.energy_approx)},
+                       {"energy_true", r.energy_parameter.value},
+                       {"energy_true_error", r.energy_parameter.error_bound},
+                       {"energy_true_arc_length", r.energy_arc_length.value},
+                       {"input", fair::io::points_to_json(r.data.points, r.closed)}};
   if (o.exact) {
-    extra["alpha_exact"] = fair::io::number_text(alpha);
-    extra["energy_approx_exact"] = fair::io::number_text(energy_approx);
+    extra["alpha_exact"] = fair::io::number_text(r.alpha);
+    extra["energy_approx_exact"] = fair::io::number_text(r.energy_approx);
   }
-  if (!closed) {
-    extra["aux_start"] = fair::io::point_to_json(curve->aux_start(), "aux_start");
-    extra["aux_end"] = fair::io::point_to_json(curve->aux_end(), "aux_end");
+  if (!r.closed) {
+    extra["aux_start"] = fair::io::point_to_json(r.curve->aux_start(), "aux_start");
+    extra["aux_end"] = fair::io::point_to_json(r.curve->aux_end(), "aux_end");
   }
-  const nlohmann::json out = fair::io::curve_to_json(pieces, extra);
+  return fair::io::curve_to_json(r.pieces, extra);
+}
 
-  // The report goes to stdout unless stdout is the JSON ("-o -").
+// The text report (stdout unless the JSON goes there).
+template <class K>
+std::string cardinal_report(const Cardinal_result<K>& r, const Cardinal_options& o) {
+  using fair_curves::format_number;
   std::ostringstream report;
-  report << "cardinal: " << data.points.size() << " points, " << (closed ? "closed" : "open") << ", "
-            << pieces.size() << " cubic pieces\n";
-  report << "alpha = " << fair_curves::format_number(CGAL::to_double(alpha), 10)
-            << (o.exact ? " = " + fair::io::number_text(alpha) : std::string())
-            << (optimal ? " (optimal, eq. 18)" : " (given)") << "\n";
-  if (!closed) {
-    report << "aux_start = (" << fair_curves::format_number(CGAL::to_double(curve->aux_start().x()), 10) << ", "
-              << fair_curves::format_number(CGAL::to_double(curve->aux_start().y()), 10) << ")"
-              << (explicit_aux ? " (given)" : " (eq. 19)") << "\n";
-    report << "aux_end = (" << fair_curves::format_number(CGAL::to_double(curve->aux_end().x()), 10) << ", "
-              << fair_curves::format_number(CGAL::to_double(curve->aux_end().y()), 10) << ")"
-              << (explicit_aux ? " (given)" : " (eq. 20)") << "\n";
+  report << "cardinal: " << r.data.points.size() << " points, " << (r.closed ? "closed" : "open") << ", "
+         << r.pieces.size() << " cubic pieces\n";
+  report << "alpha = " << format_number(CGAL::to_double(r.alpha), 10)
+         << (o.exact ? " = " + fair::io::number_text(r.alpha) : std::string())
+         << (r.optimal ? " (optimal, eq. 18)" : " (given)") << "\n";
+  if (!r.closed) {
+    report << "aux_start = (" << format_number(CGAL::to_double(r.curve->aux_start().x()), 10) << ", "
+           << format_number(CGAL::to_double(r.curve->aux_start().y()), 10) << ")"
+           << (r.explicit_aux ? " (given)" : " (eq. 19)") << "\n";
+    report << "aux_end = (" << format_number(CGAL::to_double(r.curve->aux_end().x()), 10) << ", "
+           << format_number(CGAL::to_double(r.curve->aux_end().y()), 10) << ")"
+           << (r.explicit_aux ? " (given)" : " (eq. 20)") << "\n";
   }
-  report << "energy_approx (eq. 10) = " << fair_curves::format_number(CGAL::to_double(energy_approx), 10) << "\n";
-  report << "energy_true (eq. 5, int (dk/dt)^2 dt) = " << fair_curves::format_number(e_t.value, 10)
-            << " (error estimate " << fair_curves::format_number(e_t.error_bound, 2) << ")\n";
-  report << "energy_true_arc_length (int (dk/ds)^2 ds) = " << fair_curves::format_number(e_s.value, 10) << "\n";
+  report << "energy_approx (eq. 10) = " << format_number(CGAL::to_double(r.energy_approx), 10) << "\n";
+  report << "energy_true (eq. 5, int (dk/dt)^2 dt) = " << format_number(r.energy_parameter.value, 10)
+         << " (error estimate " << format_number(r.energy_parameter.error_bound, 2) << ")\n";
+  report << "energy_true_arc_length (int (dk/ds)^2 ds) = " << format_number(r.energy_arc_length.value, 10) << "\n";
+  return report.str();
+}
 
+template <class K>
+void run_cardinal_in(const Cardinal_options& o) {
+  const Cardinal_result<K> r = compute_cardinal<K>(o);
+  const nlohmann::json out = cardinal_json(r, o);
   std::string json_text, svg_text, plot_text;
   if (!o.json_out.empty()) {
     std::ostringstream s;
@@ -112,14 +142,14 @@ void run_cardinal_in(const Cardinal_options& o) {
   }
   if (!o.svg_out.empty() || !o.plot_out.empty()) {
     fair_curves::Curve_case c;
-    c.title = o.input + ": Cardinal spline, alpha = " + fair_curves::format_number(CGAL::to_double(alpha), 6);
+    c.title = o.input + ": Cardinal spline, alpha = " + fair_curves::format_number(CGAL::to_double(r.alpha), 6);
     c.title_in_figure = true;
-    c.input_points = fair::io::to_xy(data.points);
-    const fair_curves::Curve_figures f = fair_curves::make_curve_figures(pieces, c);
+    c.input_points = fair::io::to_xy(r.data.points);
+    const fair_curves::Curve_figures f = fair_curves::make_curve_figures(r.pieces, c);
     svg_text = f.curve_svg;
     plot_text = f.curvature_svg;
   }
-  fair_curves::write_outputs(report.str(), o.json_out, json_text, {{o.svg_out, svg_text}, {o.plot_out, plot_text}});
+  fair_curves::write_outputs(cardinal_report(r, o), o.json_out, json_text, {{o.svg_out, svg_text}, {o.plot_out, plot_text}});
 }
 
 void run_cardinal(const Cardinal_options& o) {

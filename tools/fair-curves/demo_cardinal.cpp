@@ -44,7 +44,7 @@ std::string point_text(const Point_2& p) {
 }
 
 // One case: the curve, its certified inflections marked, and its energies in the table.
-void add_case(fair::io::Gallery& gallery, const fair::Cardinal_spline_2<Kernel>& curve, const std::string& title,
+void add_case(fair_curves::Gallery& gallery, const fair::Cardinal_spline_2<Kernel>& curve, const std::string& title,
               const std::string& caption, std::vector<std::pair<std::string, std::string>> rows,
               const Point_2* circle_centre = nullptr) {
   const auto pieces = curve.pieces();
@@ -79,7 +79,7 @@ void add_case(fair::io::Gallery& gallery, const fair::Cardinal_spline_2<Kernel>&
 
 } // namespace
 
-void add_cardinal_cases(fair::io::Gallery& gallery) {
+void add_cardinal_cases(fair_curves::Gallery& gallery) {
   gallery.add_section(
       "Cardinal splines with minimum curvature variation (Li)",
       "r_i(t) = b0 p_i + b1 p_{i+1} + b2 p_{i+2} + b3 p_{i+3} with the basis of eq. 2 and parameter alpha = (1 - T)/2 "

@@ -77,7 +77,7 @@ double knot_deviation(const std::vector<Piece>& pieces, const std::vector<Point_
   return worst;
 }
 
-void add_piece_case(fair::io::Gallery& gallery, const std::vector<Piece>& pieces, const std::vector<Point_2>& data,
+void add_piece_case(fair_curves::Gallery& gallery, const std::vector<Piece>& pieces, const std::vector<Point_2>& data,
                     const std::string& title, const std::string& caption, bool approximating) {
   fair_curves::Curve_case c;
   c.title = title;
@@ -91,7 +91,7 @@ void add_piece_case(fair::io::Gallery& gallery, const std::vector<Piece>& pieces
 }
 
 // A refined polyline as degree-1 pieces (curvature 0 on each; drawn without control polygons).
-void add_polyline_case(fair::io::Gallery& gallery, const std::vector<Point_2>& polyline,
+void add_polyline_case(fair_curves::Gallery& gallery, const std::vector<Point_2>& polyline,
                        const std::vector<Point_2>& data, const std::string& title, const std::string& caption) {
   std::vector<Piece> pieces;
   for (std::size_t i = 0; i + 1 < polyline.size(); ++i)
@@ -109,7 +109,7 @@ void add_polyline_case(fair::io::Gallery& gallery, const std::vector<Point_2>& p
 
 } // namespace
 
-void add_classic_cases(fair::io::Gallery& gallery) {
+void add_classic_cases(fair_curves::Gallery& gallery) {
   gallery.add_section(
       "Classic baselines",
       "The classic constructions the fair methods are compared with, on the data of Fig. 2 of Karciauskas and "

@@ -3,10 +3,10 @@
 // fair-curves demo: the gallery of built-in cases. Each method contributes its cases from its
 // own file demo_<method>.cpp through FAIR_CURVES_DEMO (see registry.h).
 
+#include "gallery.h"
 #include "registry.h"
 
 #include <fair/Errors.h>
-#include <fair/io/gallery.h>
 
 #include <algorithm>
 #include <exception>
@@ -32,7 +32,7 @@ void run_demo(const Demo_options& o) {
     for (const fair_curves::Demo_entry& e : entries) std::cout << e.order << ' ' << e.name << '\n';
     return;
   }
-  fair::io::Gallery gallery(
+  fair_curves::Gallery gallery(
       "fair: demo gallery",
       "Fair interpolating planar curves, computed by the fair library. Each case shows the curve with its control "
       "polygons (grey, dashed), its curvature comb (orange, teeth pointing away from the centre of curvature), the "

@@ -21,7 +21,7 @@ using fair_curves::Conic_piece;
 using fair_curves::Point_2;
 
 template <class K>
-void add_conic_case(fair::io::Gallery& gallery, const fair::Rational_quadratic_bezier_2<K>& piece,
+void add_conic_case(fair_curves::Gallery& gallery, const fair::Rational_quadratic_bezier_2<K>& piece,
                     const std::string& title, const std::string& caption) {
   const fair_curves::Conic_report report = fair_curves::conic_report(piece);
   fair_curves::Curve_case c;
@@ -36,7 +36,7 @@ void add_conic_case(fair::io::Gallery& gallery, const fair::Rational_quadratic_b
 
 } // namespace
 
-void add_conics_cases(fair::io::Gallery& gallery) {
+void add_conics_cases(fair_curves::Gallery& gallery) {
   gallery.add_section(
       "Conic pieces (rational quadratic Bezier)",
       "c(t) = ((1-t)^2 P0 + 2(1-t)t w P1 + t^2 P2) / ((1-t)^2 + 2(1-t)t w + t^2). The weight w decides the "

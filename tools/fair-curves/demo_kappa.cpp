@@ -28,7 +28,7 @@ std::string report_text(const fair::Kappa_solve_report& r) {
          " passes + " + std::to_string(r.iterations) + " iterations";
 }
 
-void add_kappa_case(fair::io::Gallery& gallery, const std::vector<Point_2>& points, const fair::Kappa_curve_options& o,
+void add_kappa_case(fair_curves::Gallery& gallery, const std::vector<Point_2>& points, const fair::Kappa_curve_options& o,
                     const std::string& title, const std::string& caption) {
   const fair::Kappa_curve_2<fair_curves::Kernel> curve(points, o);
   fair_curves::Curve_case c;
@@ -93,7 +93,7 @@ std::vector<Point_2> on_circle(const std::vector<double>& degrees) {
 /// 1e-3: the solver handles it on these shapes, and the "weights on the clamp" line shows
 /// whether it acted at all (it does not on any of these inputs: there the weights are exactly
 /// those of eq. 15).
-void add_comparison_row(fair::io::Gallery& gallery, const std::vector<Point_2>& points, const std::string& figure,
+void add_comparison_row(fair_curves::Gallery& gallery, const std::vector<Point_2>& points, const std::string& figure,
                         const std::string& shape) {
   const double unclamped = 1e-3;
   for (int k = 0; k < 3; ++k) {
@@ -111,7 +111,7 @@ void add_comparison_row(fair::io::Gallery& gallery, const std::vector<Point_2>& 
   }
 }
 
-void add_eccentricity_comparisons(fair::io::Gallery& gallery) {
+void add_eccentricity_comparisons(fair_curves::Gallery& gallery) {
   // We do not have the coordinates of the paper's figures: these inputs are our own and show the
   // same situations. Fig. 5: a closed cross-like shape with four concave corners (the inner
   // points), so the curve has inflections between the convex arms and the concave corners.
@@ -145,7 +145,7 @@ void add_eccentricity_comparisons(fair::io::Gallery& gallery) {
 
 } // namespace
 
-void add_kappa_cases(fair::io::Gallery& gallery) {
+void add_kappa_cases(fair_curves::Gallery& gallery) {
   gallery.add_section(
       "Rational kappa-curves",
       "One rational quadratic piece per input point; each input point is a curvature extremum of its piece "

@@ -11,8 +11,7 @@
 
 #include <fair/Bezier_2.h>
 #include <fair/Fairness_metrics.h>
-#include <fair/io/internal/json_lines.h>
-#include <fair/io/internal/number_parsing.h>
+#include <fair/io/parsing.h>
 #include <fair/io/read_points.h>
 #include <fair/io/svg.h>
 #include <fair/io/write_json.h>
@@ -59,12 +58,12 @@ struct File_curve {
 const char* const not_a_curve = "expected a curve JSON written by fair-curves (an object with a \"pieces\" array)";
 
 File_curve read_curve_file(const std::string& file) {
-  using fair::io::internal::Json_value;
+  using fair::io::Json_value;
   using fair::Parse_error;
-  const std::string text = fair::io::internal::read_text_file(file);
+  const std::string text = fair::io::read_text_file(file);
   Json_value root;
   try {
-    root = fair::io::internal::Json_line_parser(text, file).parse();
+    root = fair::io::parse_json(text, file);
   } catch (const Parse_error& e) {
     // A points CSV, or any other text: say what was expected, then the parser's reason.
     const std::string what = e.what();
@@ -72,18 +71,18 @@ File_curve read_curve_file(const std::string& file) {
     throw Parse_error(file, e.line(),
                       std::string(not_a_curve) + "; " + (what.compare(0, prefix.size(), prefix) == 0 ? what.substr(prefix.size()) : what));
   }
-  if (root.kind != Json_value::object) throw Parse_error(file, root.line, not_a_curve);
+  if (root.kind != Json_value::OBJECT) throw Parse_error(file, root.line, not_a_curve);
   const Json_value* pieces = root.find("pieces");
   if (!pieces) throw Parse_error(file, root.line, std::string(not_a_curve) + "; this JSON object has no \"pieces\"");
-  if (pieces->kind != Json_value::array || pieces->items.empty())
+  if (pieces->kind != Json_value::ARRAY || pieces->items.empty())
     throw Parse_error(file, pieces->line, "\"pieces\" must be a nonempty array");
   auto number = [&](const Json_value& v, const std::string& what) {
-    if (v.kind != Json_value::number && v.kind != Json_value::string)
+    if (v.kind != Json_value::NUMBER && v.kind != Json_value::STRING)
       throw Parse_error(file, v.line, what + " must be a number, got " + Json_value::kind_name(v.kind));
-    return fair::io::internal::to_ft<CGAL::Gmpq>(fair::io::internal::parse_number(v.text, file, v.line, what.c_str()));
+    return fair::io::to_ft<CGAL::Gmpq>(fair::io::parse_number(v.text, file, v.line, what.c_str()));
   };
   auto point = [&](const Json_value& xy, const std::string& what) {
-    if (xy.kind != Json_value::array || xy.items.size() != 2)
+    if (xy.kind != Json_value::ARRAY || xy.items.size() != 2)
       throw Parse_error(file, xy.line, what + ": expected an [x, y] pair");
     return Exact_kernel::Point_2(number(xy.items[0], what + " x"), number(xy.items[1], what + " y"));
   };
@@ -91,7 +90,7 @@ File_curve read_curve_file(const std::string& file) {
   for (std::size_t i = 0; i < pieces->items.size(); ++i) {
     const Json_value& p = pieces->items[i];
     const std::string name = "piece " + std::to_string(i);
-    if (p.kind != Json_value::object) throw Parse_error(file, p.line, name + ": expected an object");
+    if (p.kind != Json_value::OBJECT) throw Parse_error(file, p.line, name + ": expected an object");
     File_rational_piece piece;
     const Json_value* cps = p.find("control_points");
     if (!cps && p.find("P0") && p.find("P1") && p.find("P2")) {
@@ -106,12 +105,12 @@ File_curve read_curve_file(const std::string& file) {
       curve.pieces.push_back(std::move(piece));
       continue;
     }
-    if (!cps || cps->kind != Json_value::array || cps->items.empty())
+    if (!cps || cps->kind != Json_value::ARRAY || cps->items.empty())
       throw Parse_error(file, p.line, name + ": needs a nonempty \"control_points\" array (or \"P0\", \"P1\", \"P2\", \"w\")");
     for (std::size_t k = 0; k < cps->items.size(); ++k)
       piece.cp.push_back(point(cps->items[k], name + " control point " + std::to_string(k)));
     if (const Json_value* w = p.find("weights")) {
-      if (w->kind != Json_value::array || w->items.size() != cps->items.size())
+      if (w->kind != Json_value::ARRAY || w->items.size() != cps->items.size())
         throw Parse_error(file, w->line, name + ": \"weights\" must be an array with one weight per control point");
       for (const Json_value& x : w->items) {
         piece.w.push_back(number(x, name + " weight"));

@@ -8,7 +8,7 @@
 //   FAIR_CURVES_COMMAND(register_<name>_command)
 //
 //   // demo_<method>.cpp
-//   void add_<method>_cases(fair::io::Gallery& gallery) { gallery.add_section(...); ... }
+//   void add_<method>_cases(fair_curves::Gallery& gallery) { gallery.add_section(...); ... }
 //   FAIR_CURVES_DEMO(30, add_<method>_cases)   // 30: position of the section in the gallery
 //
 // Every *.cpp of tools/fair-curves/ is compiled into the program (CMake glob), so adding such a
@@ -17,7 +17,7 @@
 #ifndef FAIR_CURVES_REGISTRY_H
 #define FAIR_CURVES_REGISTRY_H
 
-#include <fair/io/gallery.h>
+#include "gallery.h"
 
 #include <CLI/CLI.hpp>
 
@@ -32,7 +32,7 @@ struct Command_entry {
   std::string name;
   Command_registrar add;
 };
-typedef void (*Demo_adder)(fair::io::Gallery&);
+typedef void (*Demo_adder)(fair_curves::Gallery&);
 
 struct Demo_entry {
   int order;

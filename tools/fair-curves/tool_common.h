@@ -7,10 +7,11 @@
 #ifndef FAIR_CURVES_TOOL_COMMON_H
 #define FAIR_CURVES_TOOL_COMMON_H
 
+#include "gallery.h"
+
 #include <fair/Curve_sampling.h>
 #include <fair/Errors.h>
-#include <fair/io/gallery.h>
-#include <fair/io/internal/number_parsing.h>
+#include <fair/io/parsing.h>
 #include <fair/io/svg.h>
 
 #include <CGAL/Simple_cartesian.h>
@@ -49,7 +50,7 @@ inline void write_outputs(const std::string& report, const std::string& json_out
 /// A finite number given as an option value; anything else is a usage error (exit code 2).
 inline double option_number(const std::string& text, const std::string& option) {
   try {
-    return fair::io::internal::parse_number(text, option, 0, "value").value;
+    return fair::io::parse_number(text, option, 0, "value").value;
   } catch (const fair::Parse_error& e) {
     throw CLI::ValidationError(option, std::string(e.what()).substr(option.size() + 2));
   }
@@ -109,8 +110,9 @@ Curve_figures make_curve_figures(const PieceRange& pieces, const Curve_case& c) 
   std::vector<fair::io::Plot_mark> plot_marks;
   for (const Curve_mark& m : c.marks) {
     auto it = std::begin(pieces);
-    fair::internal::require(m.piece < out.sampled.number_of_pieces(), "make_curve_figures: mark on piece ", m.piece,
-                            " of a curve of ", out.sampled.number_of_pieces(), " pieces");
+    // The marks come from the program's own cases: one off the curve is a bug of the program.
+    FAIR_ASSERT_MSG(m.piece < out.sampled.number_of_pieces(), "make_curve_figures: mark on piece ", m.piece,
+                    " of a curve of ", out.sampled.number_of_pieces(), " pieces");
     std::advance(it, static_cast<std::ptrdiff_t>(m.piece));
     typedef typename std::iterator_traits<decltype(it)>::value_type Piece;
     const auto p = it->point(typename Piece::FT(m.t));
@@ -127,9 +129,9 @@ Curve_figures make_curve_figures(const PieceRange& pieces, const Curve_case& c) 
 /// A gallery case: both figures, the caption and the measured figures (the curve's length is
 /// added to the measurements).
 template <class PieceRange>
-fair::io::Gallery_case make_gallery_case(const PieceRange& pieces, const Curve_case& c) {
+fair_curves::Gallery_case make_gallery_case(const PieceRange& pieces, const Curve_case& c) {
   const Curve_figures f = make_curve_figures(pieces, c);
-  fair::io::Gallery_case g;
+  fair_curves::Gallery_case g;
   g.title = c.title;
   g.caption = c.caption;
   g.images = {{"curve", f.curve_svg}, {"curvature", f.curvature_svg}};

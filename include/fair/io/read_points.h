@@ -11,14 +11,11 @@
 
 #include <fair/Errors.h>
 #include <fair/internal/common/input_checks.h>
-#include <fair/io/internal/json_lines.h>
-#include <fair/io/internal/number_parsing.h>
+#include <fair/io/parsing.h>
 
-#include <cerrno>
+#include <cctype>
 #include <cstddef>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <istream>
 #include <sstream>
 #include <string>
@@ -86,23 +83,6 @@ template <class Kernel>
 typename Kernel::Point_2 make_point(const Parsed_number& x, const Parsed_number& y) {
   typedef typename Kernel::FT FT;
   return typename Kernel::Point_2(to_ft<FT>(x), to_ft<FT>(y));
-}
-
-/// Reads the whole file into `text`; throws Parse_error(file, 0, ...) if it cannot.
-inline std::string read_text_file(const std::string& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec))
-    throw Parse_error(file, 0, "cannot read: it is a directory");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    const int e = errno;
-    throw Parse_error(file, 0, std::string("cannot open file: ") +
-                                   (e ? std::strerror(e) : "unknown error"));
-  }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw Parse_error(file, 0, "read error");
-  return buffer.str();
 }
 
 /// Rejects bytes that cannot appear in a text point file (NUL and other control characters).
@@ -176,13 +156,13 @@ Point_file<Kernel> parse_points_json(const std::string& text, const std::string&
   using namespace internal;
   Point_file<Kernel> out;
   out.file = file;
-  const Json_value root = Json_line_parser(text, file).parse();
+  const Json_value root = parse_json(text, file);
   const Json_value* points = &root;
-  if (root.kind == Json_value::object) {
+  if (root.kind == Json_value::OBJECT) {
     points = root.find("points");
     if (!points) throw Parse_error(file, root.line, "the JSON object has no \"points\" member");
     if (const Json_value* closed = root.find("closed")) {
-      if (closed->kind != Json_value::boolean)
+      if (closed->kind != Json_value::BOOLEAN)
         throw Parse_error(file, closed->line,
                           fair::internal::message("\"closed\" must be true or false, got ",
                                   Json_value::kind_name(closed->kind)));
@@ -190,13 +170,13 @@ Point_file<Kernel> parse_points_json(const std::string& text, const std::string&
       out.closed_given = true;
     }
   }
-  if (points->kind != Json_value::array)
+  if (points->kind != Json_value::ARRAY)
     throw Parse_error(file, points->line,
                       fair::internal::message("expected an array of [x, y] pairs, got ",
                               Json_value::kind_name(points->kind)));
   for (std::size_t i = 0; i < points->items.size(); ++i) {
     const Json_value& pair = points->items[i];
-    if (pair.kind != Json_value::array)
+    if (pair.kind != Json_value::ARRAY)
       throw Parse_error(file, pair.line, fair::internal::message("point ", i, ": expected an [x, y] pair, got ",
                                                  Json_value::kind_name(pair.kind)));
     if (pair.items.size() != 2)
@@ -206,7 +186,7 @@ Point_file<Kernel> parse_points_json(const std::string& text, const std::string&
     for (int k = 0; k < 2; ++k) {
       const Json_value& c = pair.items[std::size_t(k)];
       const char* what = k == 0 ? "x coordinate" : "y coordinate";
-      if (c.kind != Json_value::number && c.kind != Json_value::string)
+      if (c.kind != Json_value::NUMBER && c.kind != Json_value::STRING)
         throw Parse_error(file, c.line, fair::internal::message("point ", i, ": ", what, " must be a number, got ",
                                                 Json_value::kind_name(c.kind)));
       xy[k] = parse_number(c.text, file, c.line, what);
@@ -231,7 +211,7 @@ inline bool is_json_point_text(const std::string& file, const std::string& text)
 /// Reads a point file (CSV or JSON, chosen by is_json_point_text) with its line numbers.
 template <class Kernel>
 Point_file<Kernel> read_point_file(const std::string& file) {
-  const std::string text = internal::read_text_file(file);
+  const std::string text = read_text_file(file);
   return is_json_point_text(file, text) ? parse_points_json<Kernel>(text, file)
                                         : parse_points_csv<Kernel>(text, file);
 }

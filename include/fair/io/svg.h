@@ -20,6 +20,7 @@
 
 #include <fair/Curve_sampling.h>
 #include <fair/Errors.h>
+#include <fair/io/internal/svg_layout.h>
 
 #include <CGAL/number_utils.h>
 
@@ -47,9 +48,8 @@ struct Svg_mark {
   std::string label;
 };
 
-namespace internal {
-
-/// Escapes text for SVG/HTML character data and attribute values.
+/// `s` with & < > " ' replaced by their entities: safe as SVG/HTML character data and as a
+/// quoted attribute value. Linear in the length of `s`.
 inline std::string xml_escape(const std::string& s) {
   std::string out;
   out.reserve(s.size());
@@ -65,96 +65,6 @@ inline std::string xml_escape(const std::string& s) {
   }
   return out;
 }
-
-/// A pixel coordinate with two decimals.
-inline std::string px(double v) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.2f", v);
-  return buffer;
-}
-
-/// A short human-readable number (4 significant digits), for tick labels and captions.
-inline std::string short_number(double v, int digits = 4) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*g", digits, v == 0 ? 0.0 : v);
-  return buffer;
-}
-
-inline void require_finite(double v, const char* what) {
-  if (!std::isfinite(v))
-    throw Precondition_error(fair::internal::message("fair::io SVG: refusing the non-finite ", what, " ", v));
-}
-
-/// An axis-aligned box growing to include points.
-struct Box {
-  double xmin = std::numeric_limits<double>::infinity(), xmax = -std::numeric_limits<double>::infinity();
-  double ymin = std::numeric_limits<double>::infinity(), ymax = -std::numeric_limits<double>::infinity();
-  bool empty() const { return !(xmin <= xmax); }
-  void add(double x, double y) {
-    xmin = std::min(xmin, x); xmax = std::max(xmax, x);
-    ymin = std::min(ymin, y); ymax = std::max(ymax, y);
-  }
-};
-
-/// Maps world coordinates into [margin, width - margin] x [margin, height - margin] with one
-/// scale for both axes (y up), fitted to a box. See the robustness note at the top.
-class View {
-public:
-  View() = default;
-  View(const Box& box, double width, double height, double margin)
-    : w_(width), h_(height) {
-    if (box.empty()) {
-      cx_ = cy_ = 0;
-      half_ = 1;
-    } else {
-      cx_ = 0.5 * box.xmin + 0.5 * box.xmax;
-      cy_ = 0.5 * box.ymin + 0.5 * box.ymax;
-      const double hx = 0.5 * box.xmax - 0.5 * box.xmin, hy = 0.5 * box.ymax - 0.5 * box.ymin;
-      half_ = std::max(hx, hy);
-      if (!(half_ > 0)) {
-        // A single point: show a neighbourhood proportional to its magnitude.
-        const double mag = std::max(std::abs(cx_), std::abs(cy_));
-        half_ = mag > 0 ? mag * 1e-3 : 1.0;
-        sx_ = sy_ = 1;
-      } else {
-        sx_ = hx / half_;
-        sy_ = hy / half_;
-      }
-    }
-    const double pw = 0.5 * width - margin, ph = 0.5 * height - margin;
-    // Pixels per normalised unit: the larger normalised extent fills its pixel extent.
-    k_ = std::min(sx_ > 0 ? pw / sx_ : std::numeric_limits<double>::infinity(),
-                  sy_ > 0 ? ph / sy_ : std::numeric_limits<double>::infinity());
-    if (!std::isfinite(k_)) k_ = std::min(pw, ph);
-  }
-  double x(double wx) const { return clamp(0.5 * w_ + (wx - cx_) / half_ * k_, w_); }
-  double y(double wy) const { return clamp(0.5 * h_ - (wy - cy_) / half_ * k_, h_); }
-  /// Pixels per world unit, as a normalised pair (useful for lengths): length_px = l / half * k.
-  double length(double world_length) const { return world_length / half_ * k_; }
-
-private:
-  static double clamp(double v, double hi) { return std::min(std::max(v, 0.0), hi); }
-  double w_ = 1, h_ = 1, cx_ = 0, cy_ = 0, half_ = 1, sx_ = 1, sy_ = 1, k_ = 1;
-};
-
-/// Aspect ratio (height / width) of a box, clamped to [lo, hi]; 1 for a degenerate box.
-inline double aspect(const Box& b, double lo, double hi) {
-  if (b.empty()) return 1;
-  const double hx = 0.5 * b.xmax - 0.5 * b.xmin, hy = 0.5 * b.ymax - 0.5 * b.ymin;
-  if (!(hx > 0)) return hi;
-  return std::min(std::max(hy / hx, lo), hi);
-}
-
-/// "Nice" tick step (1, 2 or 5 times a power of ten) for about `count` ticks over `range`.
-inline double nice_step(double range, int count) {
-  const double raw = range / count;
-  const double p = std::pow(10.0, std::floor(std::log10(raw)));
-  const double f = raw / p;
-  const double m = f < 1.5 ? 1 : (f < 3.5 ? 2 : (f < 7.5 ? 5 : 10));
-  return m * p;
-}
-
-} // namespace internal
 
 /// Converts any range of kernel points to double points.
 template <class PointRange>
@@ -284,7 +194,7 @@ public:
            internal::px(height) + "\" fill=\"white\"/>\n";
     if (!title_.empty())
       out += "<text x=\"" + internal::px(margin) + "\" y=\"16\" font-family=\"sans-serif\" "
-             "font-size=\"13\">" + internal::xml_escape(title_) + "</text>\n";
+             "font-size=\"13\">" + xml_escape(title_) + "</text>\n";
     out += "<g transform=\"translate(0," + internal::px(title_height) + ")\">\n";
     for (const Line& l : lines_) {
       out += "<polyline fill=\"none\" stroke=\"" + l.color + "\" stroke-width=\"" +
@@ -313,7 +223,7 @@ public:
         const bool left = x > 0.75 * width;
         out += "<text x=\"" + internal::px(left ? x - 8 : x + 8) + "\" y=\"" + internal::px(y - 8) +
                "\" font-family=\"sans-serif\" font-size=\"11\" fill=\"" + d.color + "\"" +
-               (left ? " text-anchor=\"end\"" : "") + ">" + internal::xml_escape(d.label) + "</text>\n";
+               (left ? " text-anchor=\"end\"" : "") + ">" + xml_escape(d.label) + "</text>\n";
       }
     }
     out += "</g>\n</svg>\n";
@@ -359,114 +269,12 @@ struct Plot_mark {
 
 /// SVG plot of signed curvature against arc length: axes with ticks, the curvature of each
 /// piece as its own polyline (so jumps at joins show), dashed vertical lines at the joins,
-/// a zero line, and `marks` (e.g. curvature extrema) as rings.
-inline std::string curvature_plot_svg(const Sampled_curve& curve,
-                                      const std::vector<Plot_mark>& marks = {},
+/// a zero line, and `marks` (e.g. curvature extrema) as rings. Linear in the number of samples
+/// and marks. Throws Precondition_error if the figure is smaller than 200 x 120, the curve has
+/// no samples, or a curvature, arc length or mark is not finite.
+inline std::string curvature_plot_svg(const Sampled_curve& curve, const std::vector<Plot_mark>& marks = {},
                                       const std::string& title = "curvature against arc length",
-                                      double width = 720, double height = 280) {
-  using internal::px;
-  fair::internal::require(width >= 200 && height >= 120 && std::isfinite(width) && std::isfinite(height),
-                    "curvature_plot_svg: figure too small (", width, " x ", height, ")");
-  fair::internal::require(!curve.samples.empty(), "curvature_plot_svg: the curve has no samples");
-  double kmin = 0, kmax = 0;
-  for (const Curve_sample& s : curve.samples) {
-    internal::require_finite(s.curvature, "curvature");
-    internal::require_finite(s.arc_length, "arc length");
-    kmin = std::min(kmin, s.curvature);
-    kmax = std::max(kmax, s.curvature);
-  }
-  for (const Plot_mark& m : marks) {
-    internal::require_finite(m.s, "mark arc length");
-    internal::require_finite(m.kappa, "mark curvature");
-    kmin = std::min(kmin, m.kappa);
-    kmax = std::max(kmax, m.kappa);
-  }
-  double length = curve.length();
-  if (!(length > 0)) length = 1;
-  // Half-range arithmetic avoids overflow for |kappa| near DBL_MAX.
-  double khalf = 0.5 * kmax - 0.5 * kmin;
-  if (!(khalf > 0)) khalf = 1;  // straight curve: kappa = 0 everywhere
-  double kmid = 0.5 * kmax + 0.5 * kmin;
-  khalf *= 1.08;  // headroom
-  const double left = 64, right = 16, top = 26, bottom = 34;
-  const double pw = width - left - right, ph = height - top - bottom;
-  auto X = [&](double s) { return left + std::min(std::max(s / length, 0.0), 1.0) * pw; };
-  auto Y = [&](double k) {
-    const double u = (k - kmid) / khalf;  // in [-1, 1]
-    return top + (0.5 - 0.5 * std::min(std::max(u, -1.0), 1.0)) * ph;
-  };
-  std::string out;
-  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + px(width) + "\" height=\"" + px(height) +
-         "\" viewBox=\"0 0 " + px(width) + " " + px(height) + "\">\n";
-  out += "<rect x=\"0\" y=\"0\" width=\"" + px(width) + "\" height=\"" + px(height) + "\" fill=\"white\"/>\n";
-  out += "<text x=\"" + px(left) + "\" y=\"16\" font-family=\"sans-serif\" font-size=\"13\">" +
-         internal::xml_escape(title) + "</text>\n";
-  // Frame and ticks.
-  out += "<rect x=\"" + px(left) + "\" y=\"" + px(top) + "\" width=\"" + px(pw) + "\" height=\"" + px(ph) +
-         "\" fill=\"none\" stroke=\"#444\" stroke-width=\"0.8\"/>\n";
-  const double sstep = internal::nice_step(length, 6);
-  for (int i = 0; i <= 40; ++i) {
-    const double s = i * sstep;
-    if (s > length * (1 + 1e-9)) break;
-    out += "<line x1=\"" + px(X(s)) + "\" y1=\"" + px(top + ph) + "\" x2=\"" + px(X(s)) + "\" y2=\"" +
-           px(top + ph + 4) + "\" stroke=\"#444\" stroke-width=\"0.8\"/>\n";
-    out += "<text x=\"" + px(X(s)) + "\" y=\"" + px(top + ph + 16) +
-           "\" font-family=\"sans-serif\" font-size=\"10\" text-anchor=\"middle\">" +
-           internal::short_number(s) + "</text>\n";
-  }
-  out += "<text x=\"" + px(left + pw) + "\" y=\"" + px(height - 4) +
-         "\" font-family=\"sans-serif\" font-size=\"11\" text-anchor=\"end\">arc length s</text>\n";
-  const double klo = kmid - khalf, khi = kmid + khalf;
-  const double kstep = internal::nice_step(2 * khalf, 5);
-  if (std::isfinite(kstep) && kstep > 0) {
-    const double first = std::ceil(klo / kstep);
-    for (int i = 0; i <= 40; ++i) {
-      const double k = (first + i) * kstep;
-      if (k > khi) break;
-      out += "<line x1=\"" + px(left - 4) + "\" y1=\"" + px(Y(k)) + "\" x2=\"" + px(left) + "\" y2=\"" +
-             px(Y(k)) + "\" stroke=\"#444\" stroke-width=\"0.8\"/>\n";
-      out += "<text x=\"" + px(left - 6) + "\" y=\"" + px(Y(k) + 3) +
-             "\" font-family=\"sans-serif\" font-size=\"10\" text-anchor=\"end\">" +
-             internal::short_number(std::abs(k) < 1e-12 * kstep ? 0.0 : k) + "</text>\n";
-    }
-  }
-  out += "<text x=\"12\" y=\"" + px(top + 0.5 * ph) + "\" font-family=\"sans-serif\" font-size=\"11\" "
-         "transform=\"rotate(-90 12 " + px(top + 0.5 * ph) + ")\" text-anchor=\"middle\">curvature</text>\n";
-  // Zero line and joins.
-  if (klo <= 0 && 0 <= khi)
-    out += "<line x1=\"" + px(left) + "\" y1=\"" + px(Y(0)) + "\" x2=\"" + px(left + pw) + "\" y2=\"" +
-           px(Y(0)) + "\" stroke=\"#bbb\" stroke-width=\"0.8\"/>\n";
-  for (std::size_t j = 1; j + 1 < curve.piece_start.size(); ++j)
-    out += "<line x1=\"" + px(X(curve.piece_start[j])) + "\" y1=\"" + px(top) + "\" x2=\"" +
-           px(X(curve.piece_start[j])) + "\" y2=\"" + px(top + ph) +
-           "\" stroke=\"#7a7a7a\" stroke-width=\"0.8\" stroke-dasharray=\"3 3\"/>\n";
-  // One polyline per piece.
-  std::string points;
-  for (std::size_t i = 0; i < curve.samples.size(); ++i) {
-    const Curve_sample& s = curve.samples[i];
-    if (!points.empty()) points += ' ';
-    points += px(X(s.arc_length)) + "," + px(Y(s.curvature));
-    const bool last = i + 1 == curve.samples.size() || curve.samples[i + 1].piece != s.piece;
-    if (last) {
-      out += "<polyline fill=\"none\" stroke=\"#1f4e9c\" stroke-width=\"1.6\" points=\"" + points + "\"/>\n";
-      points.clear();
-    }
-  }
-  for (const Plot_mark& m : marks) {
-    out += "<circle cx=\"" + px(X(m.s)) + "\" cy=\"" + px(Y(m.kappa)) +
-           "\" r=\"4.5\" fill=\"none\" stroke=\"#c0392b\" stroke-width=\"2\"/>\n";
-    if (!m.label.empty()) {
-      const bool to_left = X(m.s) > left + 0.75 * pw;
-      // Above the ring, or below it when the ring is near the top of the frame.
-      const double label_y = Y(m.kappa) - 7 < top + 12 ? Y(m.kappa) + 16 : Y(m.kappa) - 7;
-      out += "<text x=\"" + px(to_left ? X(m.s) - 7 : X(m.s) + 7) + "\" y=\"" + px(label_y) +
-             "\" font-family=\"sans-serif\" font-size=\"10\" fill=\"#c0392b\"" +
-             (to_left ? " text-anchor=\"end\"" : "") + ">" + internal::xml_escape(m.label) + "</text>\n";
-    }
-  }
-  out += "</svg>\n";
-  return out;
-}
+                                      double width = 720, double height = 280);
 
 /// Arc length at parameter t of piece `piece` of a sampled curve, by linear interpolation of the
 /// samples (for placing marks on the curvature plot; error below the sampling resolution).
@@ -496,5 +304,8 @@ inline void write_text_file(const std::string& file, const std::string& text) {
 
 } // namespace io
 } // namespace fair
+
+// The definition of curvature_plot_svg.
+#include <fair/io/internal/curvature_plot.h>
 
 #endif // FAIR_IO_SVG_H

@@ -2,7 +2,7 @@
 //
 // The sums behind the curvature-variation-minimising Cardinal spline of
 // J. Li, "Curvature variation minimizing Cardinal spline curves" (equation numbers below refer
-// to /work/shared/papers/li-curvature-variation-cardinal-splines.md).
+// to it: [Li] in doc/references.md).
 //
 // For the segment built on the four points (q0, q1, q2, q3) the paper defines (eq. 8)
 //     d = -q0 - q1 + q2 + q3,   m = q1 - q2,

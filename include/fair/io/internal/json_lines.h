@@ -1,11 +1,12 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// A small strict JSON reader that remembers the 1-based line of every value, so that a point
-// file's errors (a pair with three entries, a string where a number belongs, ...) can be
-// reported at their line, which a general-purpose JSON library does not provide. Writing uses
-// nlohmann-json (fair/io/write_json.h).
+// Implementation of fair::io::parse_json (fair/io/parsing.h): a small strict JSON reader that
+// remembers the 1-based line of every value, so that a point file's errors (a pair with three
+// entries, a string where a number belongs, ...) can be reported at their line, which a
+// general-purpose JSON library does not provide. Writing uses nlohmann-json
+// (fair/io/write_json.h).
 //
-// Grammar: RFC 8259, with numbers checked by fair::io::internal::parse_decimal (so NaN,
+// Grammar: RFC 8259, with numbers checked by fair::io::parse_decimal (so NaN,
 // Infinity and out-of-range numbers get a precise message). Nesting is capped at 64 levels so
 // that hostile input cannot exhaust the stack.
 
@@ -14,6 +15,7 @@
 
 #include <fair/Errors.h>
 #include <fair/io/internal/number_parsing.h>
+#include <fair/io/parsing.h>
 
 #include <algorithm>
 #include <cctype>
@@ -26,33 +28,9 @@ namespace fair {
 namespace io {
 namespace internal {
 
-/// One JSON value and the line on which it starts.
-struct Json_value {
-  enum Kind { null_value, boolean, number, string, array, object };
-  Kind kind = null_value;
-  std::size_t line = 0;
-  bool flag = false;                                    ///< boolean
-  std::string text;                                     ///< number token or string contents
-  std::vector<Json_value> items;                        ///< array elements
-  std::vector<std::pair<std::string, Json_value>> members;  ///< object members, in order
-
-  const Json_value* find(const std::string& key) const {
-    for (const auto& m : members)
-      if (m.first == key) return &m.second;
-    return nullptr;
-  }
-  static const char* kind_name(Kind k) {
-    switch (k) {
-      case null_value: return "null";
-      case boolean: return "a boolean";
-      case number: return "a number";
-      case string: return "a string";
-      case array: return "an array";
-      case object: return "an object";
-    }
-    return "?";
-  }
-};
+// Deepest nesting accepted: far beyond any point or curve file, small enough that hostile
+// input cannot exhaust the stack of the recursive descent.
+constexpr int max_json_depth = 64;
 
 /// Recursive-descent parser over an in-memory text.
 class Json_line_parser {
@@ -94,14 +72,15 @@ private:
   }
 
   Json_value value(int depth) {
-    if (depth > 64) fail("JSON nested more than 64 levels deep");
+    if (depth > max_json_depth)
+      fail("JSON nested more than " + std::to_string(max_json_depth) + " levels deep");
     skip_space();
     if (i_ == s_.size()) fail("expected a JSON value");
     Json_value v;
     v.line = line_;
     const char c = s_[i_];
     if (c == '{') {
-      v.kind = Json_value::object;
+      v.kind = Json_value::OBJECT;
       ++i_;
       skip_space();
       if (i_ < s_.size() && s_[i_] == '}') { ++i_; return v; }
@@ -121,7 +100,7 @@ private:
       }
     }
     if (c == '[') {
-      v.kind = Json_value::array;
+      v.kind = Json_value::ARRAY;
       ++i_;
       skip_space();
       if (i_ < s_.size() && s_[i_] == ']') { ++i_; return v; }
@@ -134,7 +113,7 @@ private:
       }
     }
     if (c == '"') {
-      v.kind = Json_value::string;
+      v.kind = Json_value::STRING;
       v.text = string_contents();
       return v;
     }
@@ -147,14 +126,14 @@ private:
     if (token.empty()) fail("unexpected character " + quoted(std::string(1, c)));
     i_ = j;
     if (token == "true" || token == "false") {
-      v.kind = Json_value::boolean;
+      v.kind = Json_value::BOOLEAN;
       v.flag = token == "true";
       return v;
     }
     if (token == "null") return v;
     // parse_decimal throws with the precise reason (NaN, infinite, garbage, range).
     parse_decimal(token, file_, line_, "number");
-    v.kind = Json_value::number;
+    v.kind = Json_value::NUMBER;
     v.text = token;
     return v;
   }
@@ -215,6 +194,12 @@ private:
 };
 
 } // namespace internal
+
+// Declared, with its contract, in fair/io/parsing.h.
+inline Json_value parse_json(const std::string& text, const std::string& file) {
+  return internal::Json_line_parser(text, file).parse();
+}
+
 } // namespace io
 } // namespace fair
 

@@ -1,22 +1,34 @@
-# Runs one fair-curves command and checks its behaviour (cmake -P script, used by add_test).
+# Runs one case of test/cli/*.cases (format: test/cli/README.md) on the fair-curves program and
+# checks its behaviour (cmake -P script, used by add_test):
 #   PROGRAM          the fair-curves executable
-#   ARGS             its arguments (a CMake list)
-#   PRE_ARGS         arguments of a command to run first, which must succeed (optional)
-#   EXPECT_CODE      the expected exit code (0, 1 or 2; a crash never matches)
-#   EXPECT_STDOUT    text that must appear on stdout (optional)
-#   EXPECT_STDERR    texts that must all appear on stderr (optional; a CMake list)
-#   EXPECT_ONE_LINE  stderr must be exactly one line (optional)
-#   EXPECT_FILES     files that must exist afterwards and contain no NaN/inf (optional)
-#   EXPECT_NO_FILES  files that must not exist afterwards (optional)
-#   EXPECT_JSON_STDOUT  stdout must be one JSON object (optional; parsed with CMake >= 3.19)
-#   JSON_MEMBER      with EXPECT_JSON_STDOUT: a top-level member that must exist
-#   JSON_FILE        a JSON file written by the command, checked with JSON_CHECKS (optional)
+#   CASES, CASE      the .cases file and the name of the case in it
+#   IO_DATA, CLI_DATA, SCRATCH  what the placeholders @IO_DATA@, @CLI_DATA@, @SCRATCH@ stand for
+# The fields of the case set what is checked:
+#   ARGS             the program's arguments (second field)
+#   PRE_ARGS         arguments of a command to run first, which must succeed (pre)
+#   EXPECT_CODE      the expected exit code (code: 0, 1 or 2; a crash never matches)
+#   EXPECT_STDOUT    text that must appear on stdout (stdout)
+#   EXPECT_STDERR    texts that must all appear on stderr (one stderr field each)
+#   EXPECT_ONE_LINE  stderr must be exactly one line and stdout empty (one_line)
+#   EXPECT_FILES     files that must exist afterwards and contain no NaN/inf (files)
+#   EXPECT_NO_FILES  files that must not exist afterwards (no_files)
+#   EXPECT_JSON_STDOUT, JSON_MEMBER  stdout must be one JSON object with this top-level member
+#                    (json_stdout MEMBER)
+#   JSON_FILE        a JSON file written by the command, checked with JSON_CHECKS (json_file)
 #   JSON_CHECKS      entries "PATH=TYPE" (TYPE: NUMBER, BOOLEAN, STRING, ARRAY or OBJECT) or
-#                    "PATH==TEXT" (a string member equal to TEXT). PATH is dot-separated member
-#                    names and array indices; "*" stands for every element of a nonempty array,
-#                    e.g. "pieces.*.P0.0=NUMBER". A NaN or inf is never a JSON NUMBER (it is
-#                    written as null), so =NUMBER also checks that the value is finite.
+#                    "PATH==TEXT" (a string member equal to TEXT) (json_checks). PATH is
+#                    dot-separated member names and array indices; "*" stands for every element
+#                    of a nonempty array, e.g. "pieces.*.P0.0=NUMBER". A NaN or inf is never a
+#                    JSON NUMBER (it is written as null), so =NUMBER also checks that the value is
+#                    finite.
 cmake_minimum_required(VERSION 3.19) # string(JSON ...)
+
+include(${CMAKE_CURRENT_LIST_DIR}/cli_cases.cmake)
+fair_cli_read_cases("${CASES}")
+if(NOT CASE IN_LIST FAIR_CLI_CASE_NAMES)
+  message(FATAL_ERROR "${CASES} has no case '${CASE}'")
+endif()
+fair_cli_case_settings("${FAIR_CLI_CASE_${CASE}}")
 
 foreach(f IN LISTS EXPECT_FILES EXPECT_NO_FILES)
   file(REMOVE "${f}")

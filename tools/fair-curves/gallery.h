@@ -1,12 +1,12 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// fair::io::Gallery: an HTML page (index.html) of curve figures, in sections, one <figure>
+// fair_curves::Gallery (the page of `fair-curves demo`): an HTML page (index.html) of curve figures, in sections, one <figure>
 // per case with its SVG images, a caption and a table of measured figures (name / value).
 // The SVG images are written next to index.html (DIR/figures/<case>-<k>.svg) and linked, or
 // inlined into the page. The page is self-contained: no scripts, no external style sheets.
 
-#ifndef FAIR_IO_GALLERY_H
-#define FAIR_IO_GALLERY_H
+#ifndef FAIR_CURVES_GALLERY_H
+#define FAIR_CURVES_GALLERY_H
 
 #include <fair/Errors.h>
 #include <fair/io/svg.h>
@@ -18,8 +18,7 @@
 #include <utility>
 #include <vector>
 
-namespace fair {
-namespace io {
+namespace fair_curves {
 
 /// One case of the gallery.
 struct Gallery_case {
@@ -57,7 +56,7 @@ public:
   /// The HTML page. With inline_svg the images are embedded; otherwise they are referenced
   /// as figures/<id>.svg (see image_file_names()).
   std::string html(bool inline_svg) const {
-    using internal::xml_escape;
+    using fair::io::xml_escape;
     std::string out;
     out += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" +
            xml_escape(title_) + "</title>\n<style>\n"
@@ -136,16 +135,16 @@ public:
     namespace fs = std::filesystem;
     std::error_code ec;
     fs::create_directories(fs::path(directory) / "figures", ec);
-    if (ec) throw Error("fair::io::Gallery: cannot create " + directory + ": " + ec.message());
+    if (ec) throw fair::Error("fair_curves::Gallery: cannot create " + directory + ": " + ec.message());
     if (!inline_svg) {
       const std::vector<std::string> names = image_file_names();
       std::size_t image = 0;
       for (const Section& s : sections_)
         for (const Gallery_case& c : s.cases)
           for (const auto& img : c.images)
-            write_text_file((fs::path(directory) / "figures" / names[image++]).string(), img.second);
+            fair::io::write_text_file((fs::path(directory) / "figures" / names[image++]).string(), img.second);
     }
-    write_text_file((fs::path(directory) / "index.html").string(), html(inline_svg));
+    fair::io::write_text_file((fs::path(directory) / "index.html").string(), html(inline_svg));
   }
 
 private:
@@ -176,7 +175,6 @@ private:
   std::vector<Section> sections_;
 };
 
-} // namespace io
-} // namespace fair
+} // namespace fair_curves
 
-#endif // FAIR_IO_GALLERY_H
+#endif // FAIR_CURVES_GALLERY_H
