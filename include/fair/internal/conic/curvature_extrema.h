@@ -33,6 +33,7 @@
 #include <CGAL/Interval_nt.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -50,6 +51,20 @@ constexpr int short_dyadic_root_bits = 32;
 /// always suffices (an end that is itself a root is bisected away, or the root becomes a point);
 /// the cap only turns a bug into an Internal_error instead of a loop.
 constexpr int max_sign_search_bisections = 4000;
+
+/// The signs of n interval coefficients and their number of sign variations, or -1 when a
+/// coefficient enclosure contains 0 (the filter cannot decide; the caller goes exact). Shared by
+/// the eq.-4 filters of the conic piece and of the kappa certificate.
+inline int certain_sign_variations(const CGAL::Interval_nt<false>* c, int n, int* sign) {
+  int variations = 0;
+  for (int i = 0; i < n; ++i) {
+    if (c[i].inf() > 0) sign[i] = 1;
+    else if (c[i].sup() < 0) sign[i] = -1;
+    else return -1;
+    if (i > 0 && sign[i] != sign[i - 1]) ++variations;
+  }
+  return variations;
+}
 
 /// The Bernstein coefficients of the numerator of kappa'(t), eq. 4 of the paper, in any number
 /// type. The paper's polynomial E satisfies  W' |V|^2 - W V.V' = -4 E  (checked symbolically),
@@ -90,16 +105,9 @@ int eq4_unique_extremum(const Rq_interval& x0, const Rq_interval& y0, const Rq_i
   {
     CGAL::Protect_FPU_rounding<true> guard;
     const std::vector<Rq_interval> c = eq4_coefficients<Rq_interval>(x0, y0, x1, y1, x2, y2, w);
-    int last = 0, variations = 0;
-    for (int i = 0; i < 5; ++i) {
-      b[i] = c[static_cast<std::size_t>(i)];
-      if (b[i].inf() > 0) sign[i] = 1;
-      else if (b[i].sup() < 0) sign[i] = -1;
-      else return -1;
-      if (last != 0 && sign[i] != last) ++variations;
-      last = sign[i];
-    }
-    if (variations == 0) return 0;
+    std::copy(c.begin(), c.end(), b);
+    const int variations = certain_sign_variations(b, 5, sign);
+    if (variations <= 0) return variations;
     if (variations != 1) return -1;
     if (sign[0] > 0)
       for (int i = 0; i < 5; ++i) b[i] = -b[i]; // certified_unique_root_quartic wants f(0) < 0

@@ -57,15 +57,9 @@ inline int eq4_filtered_extremum(const CGAL::Interval_nt<false>* xy, const CGAL:
   typedef CGAL::Interval_nt<false> I;
   CGAL::Protect_FPU_rounding<true> guard;
   const std::vector<I> c = conic::eq4_coefficients<I>(xy[0], xy[1], xy[2], xy[3], xy[4], xy[5], w);
-  int sign[5], variations = 0;
-  for (int i = 0; i < 5; ++i) {
-    const I& v = c[static_cast<std::size_t>(i)];
-    if (v.inf() > 0) sign[i] = 1;
-    else if (v.sup() < 0) sign[i] = -1;
-    else return -1;
-    if (i > 0 && sign[i] != sign[i - 1]) ++variations;
-  }
-  if (variations == 0) return 0;
+  int sign[5];
+  const int variations = conic::certain_sign_variations(c.data(), 5, sign);
+  if (variations <= 0) return variations;
   if (variations != 1) return -1;
   kind = sign[0] < 0 ? Curvature_extremum_kind::MAXIMUM : Curvature_extremum_kind::MINIMUM;
   for (double delta = filter_bracket_first; delta <= filter_bracket_last; delta *= filter_bracket_growth) {
