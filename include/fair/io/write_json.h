@@ -11,6 +11,7 @@
 #ifndef FAIR_IO_WRITE_JSON_H
 #define FAIR_IO_WRITE_JSON_H
 
+#include <fair/Curve_traits.h>
 #include <fair/Errors.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
@@ -39,11 +40,7 @@ struct Has_exact_member : std::false_type {};
 template <class T>
 struct Has_exact_member<T, std::void_t<decltype(std::declval<const T&>().exact())>> : std::true_type {};
 
-template <class T, class = void>
-struct Has_weights_member : std::false_type {};
-template <class T>
-struct Has_weights_member<T, std::void_t<decltype(std::declval<const T&>().weights())>> : std::true_type {};
-
+/// A piece that states only its middle weight (a conic piece in standard form, weights (1, w, 1)).
 template <class T, class = void>
 struct Has_weight_member : std::false_type {};
 template <class T>
@@ -140,7 +137,7 @@ nlohmann::json piece_to_json(const Piece& piece, std::size_t index = 0) {
     cp.push_back(point_to_json(p, fair::internal::message("piece ", index, " control point ", k++)));
   out["degree"] = cp.empty() ? 0 : cp.size() - 1;
   out["control_points"] = std::move(cp);
-  if constexpr (internal::Has_weights_member<Piece>::value) {
+  if constexpr (Piece_traits<Piece>::kind == Piece_kind::RATIONAL_BEZIER) {
     nlohmann::json w = nlohmann::json::array();
     for (const auto& wi : piece.weights())
       w.push_back(number_to_json(wi, fair::internal::message("piece ", index, " weight")));
