@@ -82,6 +82,8 @@ public:
   }
 
   // ---------------------------------------------------------------- access
+  /// 2: the piece is a rational quadratic (BernsteinPiece_2, doc/concepts.md).
+  std::size_t degree() const { return 2; }
   const Point_2& source() const { return p_[0]; }
   const Point_2& target() const { return p_[2]; }
   const Point_2& control_point(std::size_t i) const {
