@@ -59,24 +59,12 @@ struct Cardinal_parameters {
 /// p_{n+1} = p_{n-2} - (1 - 2/alpha)(p_n - p_{n-1}). With them the two end segments have
 /// r''' = 0 (they are parabolic arcs) and contribute nothing to eq. 10.
 /// \throws Invalid_input_error for fewer than 3 points or bad points; Precondition_error if alpha == 0.
-namespace internal {
-template <class Point_2, class FT>
-std::pair<Point_2, Point_2> cardinal_auxiliary_points_unchecked(const std::vector<Point_2>& p, const FT& alpha) {
-  const std::size_t n = p.size() - 1;
-  const FT c = FT(1) - FT(2) / alpha;                                              // eq. 19
-  const Point_2 start(c * (p[1].x() - p[0].x()) + p[2].x(), c * (p[1].y() - p[0].y()) + p[2].y());
-  const Point_2 end(p[n - 2].x() - c * (p[n].x() - p[n - 1].x()),                 // eq. 20
-                    p[n - 2].y() - c * (p[n].y() - p[n - 1].y()));
-  return std::make_pair(start, end);
-}
-} // namespace internal
-
 template <class Point_2>
 std::pair<Point_2, Point_2> cardinal_auxiliary_points(const std::vector<Point_2>& p,
                                                       const typename CGAL::Kernel_traits<Point_2>::Kernel::FT& alpha) {
   internal::common::check_interpolation_input(p, 3, false, "cardinal_auxiliary_points");
   internal::require(!CGAL::is_zero(alpha), "cardinal_auxiliary_points: alpha = 0 has no optimal auxiliary points (eqs. 16-17 divide by alpha)");
-  return internal::cardinal_auxiliary_points_unchecked(p, alpha);
+  return internal::cardinal::auxiliary_points_unchecked(p, alpha);
 }
 
 /// The minimiser of the approximate curvature variation energy of eq. 10.
@@ -116,7 +104,7 @@ optimal_cardinal_parameters(const std::vector<Point_2>& p, bool closed = false) 
         "use a fixed alpha such as 1/2 (Catmull-Rom)"));
   Cardinal_parameters<K> out{alpha, p.front(), p.back(), s.energy(alpha), closed};
   if (!closed) {
-    const std::pair<Point_2, Point_2> aux = internal::cardinal_auxiliary_points_unchecked(p, alpha);
+    const std::pair<Point_2, Point_2> aux = internal::cardinal::auxiliary_points_unchecked(p, alpha);
     out.aux_start = aux.first;
     out.aux_end = aux.second;
     // With the optimal auxiliary points the two end segments contribute 0 (see the doc page):

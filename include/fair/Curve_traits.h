@@ -24,13 +24,9 @@
 #ifndef FAIR_CURVE_TRAITS_H
 #define FAIR_CURVE_TRAITS_H
 
-#include <type_traits>
-#include <utility>
+#include <fair/internal/common/piece_detection.h>
 
 namespace fair {
-
-template <class K>
-class Bezier_2;
 
 /// How the metrics and the sampler evaluate a piece (see the file comment).
 enum class Piece_kind {
@@ -39,41 +35,15 @@ enum class Piece_kind {
   RATIONAL_BEZIER    ///< control_points() and weights()
 };
 
-namespace internal {
-namespace traits {
-
-template <class P, class = void>
-struct Has_weights : std::false_type {};
-template <class P>
-struct Has_weights<P, std::void_t<decltype(std::declval<const P&>().weights()),
-                                  decltype(std::declval<const P&>().control_points())>> : std::true_type {};
-
-template <class P, class = void>
-struct Has_own_curvature_extrema : std::false_type {};
-template <class P>
-struct Has_own_curvature_extrema<
-    P, std::void_t<decltype(std::declval<const P&>().curvature_extrema().front().t_lower),
-                   decltype(std::declval<const P&>().curvature_extrema().front().t_upper),
-                   decltype(std::declval<const P&>().curvature_extrema().front().t),
-                   decltype(std::declval<const P&>().curvature_extrema().front().multiplicity)>> : std::true_type {};
-
-template <class P>
-struct Is_bezier : std::false_type {};
-template <class K>
-struct Is_bezier<Bezier_2<K>> : std::true_type {};
-
-} // namespace traits
-} // namespace internal
-
 /// The capabilities of the piece type Piece that the metrics and the sampler rely on.
 template <class Piece>
 struct Piece_traits {
   /// How the piece is evaluated (see Piece_kind).
-  static constexpr Piece_kind kind = internal::traits::Is_bezier<Piece>::value ? Piece_kind::POLYNOMIAL_BEZIER
-                                     : internal::traits::Has_weights<Piece>::value ? Piece_kind::RATIONAL_BEZIER
+  static constexpr Piece_kind kind = internal::common::Is_bezier<Piece>::value ? Piece_kind::POLYNOMIAL_BEZIER
+                                     : internal::common::Has_weights<Piece>::value ? Piece_kind::RATIONAL_BEZIER
                                                                                    : Piece_kind::GENERIC;
   /// True iff the piece certifies its own curvature extrema (curvature_extrema(), see above).
-  static constexpr bool has_own_curvature_extrema = internal::traits::Has_own_curvature_extrema<Piece>::value;
+  static constexpr bool has_own_curvature_extrema = internal::common::Has_own_curvature_extrema<Piece>::value;
 };
 
 /// True for the kinds in Bernstein form (certified features).

@@ -238,7 +238,7 @@ Point_file<Kernel> read_points_json(std::istream& in, const std::string& name) {
   return parse_points_json<Kernel>(buffer.str(), name);
 }
 
-/// The checks of fair::internal::check_interpolation_input, reported against the file: too
+/// The checks of fair::internal::common::check_interpolation_input, reported against the file: too
 /// few points names the file, coinciding consecutive points name the line of the second one
 /// (for a closed curve the last and the first point are neighbours too).
 template <class Kernel>

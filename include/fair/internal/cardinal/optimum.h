@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace fair {
@@ -167,6 +168,18 @@ Cardinal_sums<FT> cardinal_interior_sums(const std::vector<Point_2>& p, bool clo
       s.add_values(x[i], y[i], x[i + 1], y[i + 1], x[i + 2], y[i + 2], x[i + 3], y[i + 3]);
   }
   return s;
+}
+
+/// The optimal auxiliary points of eqs. 19-20 for alpha != 0, without input checks (the public
+/// fair::cardinal_auxiliary_points checks and calls this).
+template <class Point_2, class FT>
+std::pair<Point_2, Point_2> auxiliary_points_unchecked(const std::vector<Point_2>& p, const FT& alpha) {
+  const std::size_t n = p.size() - 1;
+  const FT c = FT(1) - FT(2) / alpha;                                              // eq. 19
+  const Point_2 start(c * (p[1].x() - p[0].x()) + p[2].x(), c * (p[1].y() - p[0].y()) + p[2].y());
+  const Point_2 end(p[n - 2].x() - c * (p[n].x() - p[n - 1].x()),                 // eq. 20
+                    p[n - 2].y() - c * (p[n].y() - p[n - 1].y()));
+  return std::make_pair(start, end);
 }
 
 } // namespace cardinal

@@ -52,14 +52,22 @@ inline double eq7_value(double A, double B, double C, double w, double t) {
 /// returned then.
 /// Degenerate case (A == 0 or C == 0: an end point coincides with Q; w <= 0; NaN): returns
 /// `fallback`.
+/// Safeguarded Newton steps of eq7_root: quadratic convergence from the clamped start needs < 10;
+/// the cap only bounds the work on a pathological quartic (then the bracket's midpoint is used).
+constexpr int eq7_root_max_steps = 100;
+/// The Newton start is the previous t clamped into [eq7_root_start_margin, 1 - margin]: away from
+/// the ends, where the quartic's derivative can vanish with the weight terms.
+constexpr double eq7_root_start_margin = 0.01;
+
 inline double eq7_root(double A, double B, double C, double w, double fallback) {
   if (!(A > 0.0) || !(C > 0.0) || !(w > 0.0)) return fallback;
   const double tol = 4 * std::numeric_limits<double>::epsilon();
   const double wA = w * A, wC = w * C, AB = A + B, BC = B + C;
   const double M2 = 12 * std::max({std::abs(0.5 * AB - wA), 0.25 * std::abs(C - A), std::abs(wC - 0.5 * BC)});
   double lo = 0.0, hi = 1.0;
-  double t = (fallback >= 0.01) ? std::min(fallback, 0.99) : (fallback < 0.01 ? 0.01 : 0.5);
-  for (int it = 0; it < 100; ++it) {
+  constexpr double margin = eq7_root_start_margin;
+  double t = (fallback >= margin) ? std::min(fallback, 1.0 - margin) : (fallback < margin ? margin : 0.5);
+  for (int it = 0; it < eq7_root_max_steps; ++it) {
     // f and f' with shared powers (the terms of eq7_value).
     const double u = 1.0 - t, u2 = u * u, t2 = t * t, u3 = u2 * u, t3 = t2 * t;
     const double f = -wA * (u3 * u) - AB * (u3 * t) + BC * (u * t3) + wC * (t3 * t);
