@@ -52,14 +52,9 @@ enum class Energy_measure {
   PARAMETER   ///< sum over pieces of int_0^1 (d kappa / dt)^2 dt (Li's eq. 5)
 };
 
-/// One sample of the curvature profile.
-struct Curvature_sample {
-  std::size_t piece = 0;
-  double t = 0;          ///< parameter in the piece
-  double arc_length = 0; ///< arc length from the start of the curve
-  double x = 0, y = 0;
-  double curvature = 0;  ///< signed
-};
+/// One sample of the curvature profile: the sample of the one sampler (Curve_sampling.h), with
+/// piece, t, arc_length, x, y, the signed curvature and the unit normal.
+typedef Curve_sample Curvature_sample;
 
 /// One curvature feature (inflection or curvature extremum).
 struct Curve_feature {
@@ -131,12 +126,9 @@ std::vector<Curvature_sample> curvature_profile(const std::vector<Piece>& curve,
   internal::metrics::check_curve(curve, "curvature_profile");
   Quadrature_options o = options;
   o.initial_subintervals = 1; // each sampling interval is already a small part of the piece
-  const Sampled_curve sampled = internal::metrics::sample_pieces(
-      curve, samples_per_piece, o, internal::metrics::At_singular_sample::THROW, "curvature_profile");
-  std::vector<Curvature_sample> out;
-  out.reserve(sampled.samples.size());
-  for (const Curve_sample& c : sampled.samples) out.push_back(Curvature_sample{c.piece, c.t, c.arc_length, c.x, c.y, c.curvature});
-  return out;
+  return internal::metrics::sample_pieces(curve, samples_per_piece, o, internal::metrics::At_singular_sample::THROW,
+                                         "curvature_profile")
+      .samples;
 }
 
 /// The inflections: the points where the signed curvature changes sign (odd-multiplicity roots of
