@@ -32,6 +32,7 @@
 #ifndef FAIR_INTERNAL_KAPPA_SOLVER_H
 #define FAIR_INTERNAL_KAPPA_SOLVER_H
 
+#include <fair/Kappa_curve_options.h>
 #include <fair/internal/kappa/banded.h>
 #include <fair/internal/kappa/block_lu.h>
 #include <fair/internal/kappa/dual.h>
@@ -109,9 +110,10 @@ constexpr std::size_t local_radius_last = 32;
 constexpr std::size_t closed_range_gap = 3;
 
 struct Solve_settings {
-  std::size_t refinement_passes = 60;  // alternating passes of Section 5.1 (paper: 60)
-  std::size_t max_iterations = 200;    // Jacobians of the whole solve (Newton and Levenberg-Marquardt)
-  double tolerance = 1e-12;            // on max |r|
+  // The defaults are the user's (Kappa_curve_options), so that they are stated once.
+  std::size_t refinement_passes = Kappa_curve_options().refinement_passes;  // passes of Section 5.1
+  std::size_t max_iterations = Kappa_curve_options().max_iterations;  // Jacobians of the whole solve (Newton and LM)
+  double tolerance = Kappa_curve_options().tolerance;                 // on max |r|
   bool warm = false;                   // skip the initial guess, start from the given state
   /// Warm start after a change of Q_moved only (block index; n or more: unknown): try local
   /// solves first, see solve().

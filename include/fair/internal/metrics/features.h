@@ -97,12 +97,6 @@ inline Bernstein_polynomial<CGAL::Gmpq> curvature_derivative_sign_polynomial(con
   return ET(2) * (D.derivative() * h.W + ET(3) * D * W1) * A2 - ET(6) * D * h.W * AA1;
 }
 
-inline bool is_zero_polynomial(const Bernstein_polynomial<CGAL::Gmpq>& p) {
-  for (const CGAL::Gmpq& c : p.coefficients())
-    if (!CGAL::is_zero(c)) return false;
-  return true;
-}
-
 template <class Piece>
 Curve_feature make_feature(const Piece& piece, std::size_t index, double t, const Isolating_interval& I, bool joint) {
   Curve_feature f;
@@ -161,7 +155,7 @@ Feature_report certified_features(const std::vector<Piece>& curve, Feature_kind 
       const Homogeneous_form h = homogeneous_exact(curve[i]);
       const Bernstein_polynomial<CGAL::Gmpq> p =
           which == Feature_kind::INFLECTION ? curvature_sign_polynomial(h) : curvature_derivative_sign_polynomial(h);
-      if (is_zero_polynomial(p)) {
+      if (p.is_zero()) {
         report.degenerate_pieces.push_back(i);
         continue;
       }
