@@ -184,7 +184,8 @@ public:
     return p_.back();
   }
 
-  /// Number of segments: n for an open curve on n+1 points, N for a closed one on N points.
+  /// Number of pieces (the paper's segments): n for an open curve on n+1 points, N for a closed
+  /// one on N points.
   std::size_t number_of_pieces() const { return closed_ ? p_.size() : p_.size() - 3; }
 
   /// The four points (q0, q1, q2, q3) that define segment i (eq. 1).
@@ -286,7 +287,7 @@ private:
                       " must be finite and > 0 (alpha = (1 - tension)/2; alpha <= 0 collapses or reverses the tangents)");
   }
   void check_segment(std::size_t i) const {
-    internal::require(i < number_of_pieces(), "Cardinal_spline_2: segment index ", i, " >= number of segments ",
+    internal::require(i < number_of_pieces(), "Cardinal_spline_2: piece index ", i, " >= number of pieces ",
                       number_of_pieces());
   }
   void basis(const FT& t, FT* b) const { // eq. 2
