@@ -1,6 +1,12 @@
 #include <fair/Errors.h>
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
 TEST(Errors, ParseErrorNamesFileAndLine) {
   fair::Parse_error e("points.csv", 7, "expected two numbers, got 'abc'");
   EXPECT_STREQ(e.what(), "points.csv:7: expected two numbers, got 'abc'");
@@ -43,4 +49,17 @@ TEST(Errors, AssertThrowsInternalErrorNamingExpressionFileAndLine) {
     EXPECT_EQ(e.line(), line);
   }
   EXPECT_THROW(FAIR_ASSERT(false), fair::Error);
+}
+
+// The test helpers' own contract (test_support.h): the ULP comparison counts units in the last
+// place of the larger magnitude, and the relative comparison is exact in an exact kernel.
+TEST(TestSupport, SameUlpsCountsUnitsInTheLastPlace) {
+  const double one = 1.0, next = std::nextafter(1.0, 2.0), next2 = std::nextafter(next, 2.0);
+  EXPECT_TRUE(fair_test::same_ulps(one, one, 0));
+  EXPECT_TRUE(fair_test::same_ulps(one, next, 1));
+  EXPECT_FALSE(fair_test::same_ulps(one, next2, 1));
+  EXPECT_TRUE(fair_test::same_ulps(one, next2, 2));
+  EXPECT_FALSE(fair_test::same_ulps(1.0, std::numeric_limits<double>::quiet_NaN(), 1e9));
+  EXPECT_TRUE(fair_test::same<fair_test::SC_double>(1.0, 1.0 + 1e-13, 1e-12));
+  EXPECT_FALSE(fair_test::same<fair_test::SC_gmpq>(1.0, 1.0 + 1e-13, 1e-3));  // exact kernel: equality only
 }
