@@ -125,6 +125,23 @@ TYPED_TEST(Parametric_spline_exact, HybridIsC2AtEveryJoin) {
   }
 }
 
+TEST(QuinticPieces, Eq7ReadLiterallyDoesNotReproduceCubics) {
+  // eq. 7 with the global f', f'' (no h_i) on pieces of length h != 1: the piece's tangent is
+  // f'/h times too long in the local parameter, so it leaves the cubic.
+  typedef fair_test::SC_double K;
+  const double a = 0.25, b = 1.0, h = b - a;
+  const fair::Curve_jet_2 j0 = test_cubic.jet(a), j1 = test_cubic.jet(b);
+  const std::vector<K::Point_2> literal{K::Point_2(j0.x, j0.y), K::Point_2(j0.x + j0.dx / 5, j0.y + j0.dy / 5),
+                                        K::Point_2(j0.x + 0.4 * j0.dx + j0.ddx / 20, j0.y + 0.4 * j0.dy + j0.ddy / 20),
+                                        K::Point_2(j1.x - 0.4 * j1.dx + j1.ddx / 20, j1.y - 0.4 * j1.dy + j1.ddy / 20),
+                                        K::Point_2(j1.x - j1.dx / 5, j1.y - j1.dy / 5), K::Point_2(j1.x, j1.y)};
+  const std::pair<double, double> mid = test_cubic.value(a + 0.5 * h);
+  const K::Point_2 p = fair::Bezier_2<K>(literal).point(0.5);
+  EXPECT_GT(std::hypot(p.x() - mid.first, p.y() - mid.second), 1e-2);
+  const K::Point_2 r = fair::quintic_pieces<K>(test_cubic, {a, b})[0].point(0.5);
+  EXPECT_NEAR(std::hypot(r.x() - mid.first, r.y() - mid.second), 0.0, 1e-15);
+}
+
 // Quintic Hermite basis on [0,1]: value, first and second derivative at 0 and at 1.
 double hermite(int k, double t) {
   const double t2 = t * t, t3 = t2 * t, t4 = t3 * t, t5 = t4 * t;
