@@ -13,6 +13,7 @@
 #include <fair/Errors.h>
 #include <fair/Parametric_curve_2.h>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -62,34 +63,33 @@ typename K::Point_2 combine(const typename K::FT& a, const typename K::Point_2& 
   return typename K::Point_2(a * p.x() + b * q.x() + c * r.x(), a * p.y() + b * q.y() + c * r.y());
 }
 
-/// Eq. 7 with local derivatives: the quintic on [u_i, u_i+1] reparametrised to [0,1] with the
-/// 2-jets (f, h f', h^2 f'') of f at both ends, h = u_i+1 - u_i (computed in FT).
+/// Eq. 7 with local derivatives at one end of a piece: (b0, b1, b2) = (f, f + s h/5 f',
+/// f + s 2h/5 f' + h^2/20 f'') with h = u1 - u0 in FT and s = +1 at the start of the piece
+/// (u = u_i), s = -1 at its end (u = u_{i+1}: b5, b4, b3).
 template <class K>
-Bezier_2<K> quintic_piece(double u0, const Curve_jet_2& j0, double u1, const Curve_jet_2& j1) {
+std::array<typename K::Point_2, 3> quintic_end(const Curve_jet_2& j, double u0, double u1, bool at_start) {
   typedef typename K::FT FT;
   typedef typename K::Point_2 P;
-  const FT h = FT(u1) - FT(u0), h5 = h / FT(5), h2 = FT(2) * h / FT(5), hh = h * h / FT(20);
-  const P b0(FT(j0.x), FT(j0.y)), b5(FT(j1.x), FT(j1.y));
-  const FT dx0(j0.dx), dy0(j0.dy), ax0(j0.ddx), ay0(j0.ddy), dx1(j1.dx), dy1(j1.dy), ax1(j1.ddx), ay1(j1.ddy);
-  std::vector<P> b{b0,
-                   P(b0.x() + h5 * dx0, b0.y() + h5 * dy0),
-                   P(b0.x() + h2 * dx0 + hh * ax0, b0.y() + h2 * dy0 + hh * ay0),
-                   P(b5.x() - h2 * dx1 + hh * ax1, b5.y() - h2 * dy1 + hh * ay1),
-                   P(b5.x() - h5 * dx1, b5.y() - h5 * dy1),
-                   b5};
-  return Bezier_2<K>(std::move(b));
+  const FT h = FT(u1) - FT(u0), h5 = (at_start ? h : -h) / FT(5), h2 = FT(2) * h5, hh = h * h / FT(20);
+  const FT x(j.x), y(j.y), dx(j.dx), dy(j.dy), ax(j.ddx), ay(j.ddy);
+  return {P(x, y), P(x + h5 * dx, y + h5 * dy), P(x + h2 * dx + hh * ax, y + h2 * dy + hh * ay)};
 }
 
-/// Eq. 8: the cubic with the quintic's 2-jet at u = 0, given by its first three control points
-/// (b0, b1, b2) -> (b0, -2/3 b0 + 5/3 b1, b0 - 10/3 b1 + 10/3 b2); returns the second and third
-/// cubic control points. at_start = false: the same at u = 1 from (b5, b4, b3), the mirror image.
+/// The quintic of eq. 7 on [u_i, u_i+1] reparametrised to [0,1]: the 2-jets (f, h f', h^2 f'')
+/// of f at both ends, h = u_i+1 - u_i.
 template <class K>
-void cubic_jet(const Bezier_2<K>& q, bool at_start, typename K::Point_2& bb1, typename K::Point_2& bb2) {
+Bezier_2<K> quintic_piece(double u0, const Curve_jet_2& j0, double u1, const Curve_jet_2& j1) {
+  const std::array<typename K::Point_2, 3> a = quintic_end<K>(j0, u0, u1, true), b = quintic_end<K>(j1, u0, u1, false);
+  return Bezier_2<K>(std::vector<typename K::Point_2>{a[0], a[1], a[2], b[2], b[1], b[0]});
+}
+
+/// Eq. 8: the cubic with the quintic's 2-jet (b0, b1, b2) at an end -> its control points
+/// (b0, -2/3 b0 + 5/3 b1, b0 - 10/3 b1 + 10/3 b2); returns the second and the third.
+template <class K>
+void cubic_jet(const std::array<typename K::Point_2, 3>& b, typename K::Point_2& bb1, typename K::Point_2& bb2) {
   typedef typename K::FT FT;
-  const auto& b = q.control_points();
-  const std::size_t i0 = at_start ? 0 : 5, i1 = at_start ? 1 : 4, i2 = at_start ? 2 : 3;
-  bb1 = combine<K>(FT(-2) / FT(3), b[i0], FT(5) / FT(3), b[i1], FT(0), b[i2]);
-  bb2 = combine<K>(FT(1), b[i0], FT(-10) / FT(3), b[i1], FT(10) / FT(3), b[i2]);
+  bb1 = combine<K>(FT(-2) / FT(3), b[0], FT(5) / FT(3), b[1], FT(0), b[2]);
+  bb2 = combine<K>(FT(1), b[0], FT(-10) / FT(3), b[1], FT(10) / FT(3), b[2]);
 }
 
 } // namespace parametric
