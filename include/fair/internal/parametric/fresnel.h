@@ -31,9 +31,9 @@ namespace internal {
 namespace parametric {
 
 /// Where the series hands over to the continued fraction: there the series' largest term is
-/// e^(pi 1.5^2 / 2) ~ 34 (1.5 digits lost) and the fraction needs fewer than ~60 steps.
+/// e^(pi 1.5^2 / 2) ~ 34 (1.5 digits lost) and the fraction needs about 120 steps (16 at x = 5).
 constexpr double fresnel_series_limit = 1.5;
-/// Caps of the two loops; the series needs < 40 terms and the fraction < 80 steps at the handover
+/// Caps of the two loops; the series needs 31 terms and the fraction 121 steps at the handover
 /// (fewer further out), so reaching a cap is a bug.
 constexpr std::size_t fresnel_series_cap = 200;
 constexpr std::size_t fresnel_fraction_cap = 2000;
