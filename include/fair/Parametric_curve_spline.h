@@ -67,7 +67,8 @@ Cubic_spline_2<K> parametric_curve_spline(const Curve& f, const std::vector<doub
   typedef typename K::Point_2 Point_2;
   namespace ip = internal::parametric;
   ip::check_marks(f, marks, 1, "fair::parametric_curve_spline");
-  const std::vector<Curve_jet_2> j = ip::jets_at(f, marks, options.require_regular, "fair::parametric_curve_spline");
+  const char* fn = "fair::parametric_curve_spline";
+  const bool regular = options.require_regular;
   const std::size_t m = marks.size() - 1;
   std::vector<FT> t;
   t.reserve(m + 1);
@@ -76,18 +77,18 @@ Cubic_spline_2<K> parametric_curve_spline(const Curve& f, const std::vector<doub
   d.reserve(m + 3);
   Point_2 bb1, bb2;
   // the quintic's 2-jet at the start of piece 0 (eq. 7) -> eq. 8
-  std::array<Point_2, 3> b = ip::quintic_end<K>(j[0], marks[0], marks[1], true);
+  std::array<Point_2, 3> b = ip::quintic_end<K>(ip::jet_at(f, marks[0], 0, regular, fn), marks[0], marks[1], true);
   ip::cubic_jet<K>(b, bb1, bb2);
   d.push_back(b[0]);
   d.push_back(bb1);
   for (std::size_t i = 1; i < m; ++i) {
     // eq. 3 on the cubic 2-jet at u_i of piece i: c_i = (1 + 1/beta_i) b_1^i - (1/beta_i) b_2^i
-    ip::cubic_jet<K>(ip::quintic_end<K>(j[i], marks[i], marks[i + 1], true), bb1, bb2);
+    ip::cubic_jet<K>(ip::quintic_end<K>(ip::jet_at(f, marks[i], i, regular, fn), marks[i], marks[i + 1], true), bb1, bb2);
     const FT inv_beta = (t[i] - t[i - 1]) / (t[i + 1] - t[i]);
     d.push_back(ip::combine<K>(FT(1) + inv_beta, bb1, -inv_beta, bb2, FT(0), bb2));
   }
   // the 2-jet at the end of piece m-1 (b5, b4, b3), mirrored
-  b = ip::quintic_end<K>(j[m], marks[m - 1], marks[m], false);
+  b = ip::quintic_end<K>(ip::jet_at(f, marks[m], m, regular, fn), marks[m - 1], marks[m], false);
   ip::cubic_jet<K>(b, bb1, bb2);
   d.push_back(bb1);
   d.push_back(b[0]);

@@ -38,21 +38,25 @@ void check_marks(const Curve& f, const std::vector<double>& u, std::size_t min_p
   }
 }
 
-/// The 2-jets of f at the marks; throws Invalid_input_error if one is not finite or (when
+/// The 2-jet of f at mark i (u = u_i); throws Invalid_input_error if it is not finite or (when
 /// require_regular) f'(u_i) = 0, where the curve has no tangent.
+template <class Curve>
+Curve_jet_2 jet_at(const Curve& f, double u, std::size_t i, bool require_regular, const char* fn) {
+  const Curve_jet_2 q = f.jet(u);
+  if (!(std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.dx) && std::isfinite(q.dy) && std::isfinite(q.ddx) &&
+        std::isfinite(q.ddy)))
+    throw Invalid_input_error(message(fn, ": the curve's 2-jet at mark ", i, " (u = ", u, ") is not finite"));
+  if (require_regular && q.dx == 0 && q.dy == 0)
+    throw Invalid_input_error(message(fn, ": the curve is singular at mark ", i, " (u = ", u, "): f' = 0"));
+  return q;
+}
+
+/// The 2-jets of f at all marks (jet_at each).
 template <class Curve>
 std::vector<Curve_jet_2> jets_at(const Curve& f, const std::vector<double>& u, bool require_regular, const char* fn) {
   std::vector<Curve_jet_2> j;
   j.reserve(u.size());
-  for (std::size_t i = 0; i < u.size(); ++i) {
-    const Curve_jet_2 q = f.jet(u[i]);
-    if (!(std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.dx) && std::isfinite(q.dy) && std::isfinite(q.ddx) &&
-          std::isfinite(q.ddy)))
-      throw Invalid_input_error(message(fn, ": the curve's 2-jet at mark ", i, " (u = ", u[i], ") is not finite"));
-    if (require_regular && q.dx == 0 && q.dy == 0)
-      throw Invalid_input_error(message(fn, ": the curve is singular at mark ", i, " (u = ", u[i], "): f' = 0"));
-    j.push_back(q);
-  }
+  for (std::size_t i = 0; i < u.size(); ++i) j.push_back(jet_at(f, u[i], i, require_regular, fn));
   return j;
 }
 
