@@ -269,6 +269,19 @@ TEST(NearestParameter, FindsTheNearestTurnOfASpiralAndTheEnds) {
   EXPECT_NEAR(((j.x - 0.9) * j.dx + (j.y - 0.35) * j.dy) / std::hypot(j.dx, j.dy), 0.0, 1e-14);
 }
 
+TEST(NearestParameter, RoundTripsSeededParametersOnInvoluteAndClothoid) {
+  std::mt19937 rng(31);
+  const fair::Circle_involute_2 inv(0.5, 0.2, 9.0);
+  const fair::Clothoid_2 clo(-1.0, 0.8, -3.0, 3.0, 1.5);
+  std::uniform_real_distribution<double> a(0.2, 9.0), b(-3.0, 3.0);
+  for (int k = 0; k < 30; ++k) {
+    const double t = a(rng), s = b(rng);
+    const fair::Curve_jet_2 p = inv.jet(t), q = clo.jet(s);
+    EXPECT_NEAR(fair::nearest_parameter(inv, p.x, p.y, 0.2, 9.0), t, 1e-11) << t;
+    EXPECT_NEAR(fair::nearest_parameter(clo, q.x, q.y, -3.0, 3.0), s, 1e-11) << s;
+  }
+}
+
 TEST(NearestParameter, RejectsPointsOffTheCurveAndBadIntervals) {
   const fair::Parametric_circle_arc_2 arc(0, 0, 2, 0, pi);
   try {

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,32 @@ TYPED_TEST(Parametric_spline_exact, CubicPrecisionOfQuinticsAndSpline) {
   const fair::Cubic_spline_2<K> r = fair::Cubic_spline_2<K>::from_bezier_pieces(s.breakpoints(), pieces);
   for (std::size_t i = 0; i < s.number_of_control_points(); ++i)
     EXPECT_TRUE(same<K>(r.control_points()[i], s.control_points()[i])) << "control point " << i;
+}
+
+TYPED_TEST(Parametric_spline_exact, CubicPrecisionOnSeededRandomCubicsAndMarks) {
+  // dyadic coefficients k/8 and marks k/64: the jets are exact doubles, so in an exact kernel
+  // the spline must be the cubic exactly, at every dyadic parameter
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  std::mt19937 rng(1201);
+  std::uniform_int_distribution<int> coefficient(-16, 16), gap(1, 48), count(1, 9);
+  for (int trial = 0; trial < 6; ++trial) {
+    Cubic_curve f{{}, {}, 0, 0};
+    for (int k = 0; k < 4; ++k) f.ax[k] = coefficient(rng) / 8.0, f.ay[k] = coefficient(rng) / 8.0;
+    f.ax[1] = 3; // a generic cubic; regularity at the marks is not needed for cubic precision
+    std::vector<double> u{-1.0};
+    const int m = count(rng);
+    for (int i = 0; i < m; ++i) u.push_back(u.back() + gap(rng) / 64.0);
+    f.u0 = u.front(), f.u1 = u.back();
+    fair::Parametric_spline_options o;
+    o.require_regular = false;
+    const fair::Cubic_spline_2<K> s = fair::parametric_curve_spline<K>(f, u, o);
+    for (int k = 0; k <= 16; ++k) {
+      const FT v = FT(u.front()) + (FT(u.back()) - FT(u.front())) * fair_test::q<K>(k, 16);
+      const std::pair<FT, FT> p = f.value(v);
+      EXPECT_TRUE(same<K>(s.point(v), typename K::Point_2(p.first, p.second), 1e-13)) << "trial " << trial << " k " << k;
+    }
+  }
 }
 
 TYPED_TEST(Parametric_spline_exact, ControlPointsAreTheBlossomOfTheTwoJet) {
