@@ -41,6 +41,9 @@ struct Quadratic_design_options {
   Knot_spacing spacing = Knot_spacing::CHORDAL;
   /// eq. 6's tolerance: mu = 1/2 where kappa_i + kappa_{i+1} <= epsilon (curvature units, 1/length).
   double epsilon = 1e-12;
+  /// quadratic_design_spline: the rounding area rho of rounding_marks (0 < rho < 1/2; a double,
+  /// converted exactly to FT).
+  double rounding = 0.25;
 };
 
 /// The quadratic shapes {q_i, m_i, q_{i+1}} (Bezier_2 of degree 2): n-1 of them for an open
@@ -122,6 +125,19 @@ Cubic_spline_2<K> bezier_chain_spline(const std::vector<Bezier_2<K>>& shapes, co
   r.reserve(shapes.size());
   for (const Bezier_2<K>& b : shapes) r.push_back(Rational_bezier_2<K>(b.control_points()));
   return bezier_chain_spline(r, marks, closed);
+}
+
+/// The whole Sec. 7 pipeline: quadratic_design_shapes, then bezier_chain_spline with
+/// rounding_marks(options.rounding) -- the C2 spline that retains every quadratic shape exactly
+/// on [rho, 1 - rho] of its parameter and rounds the joins (Fig. 19b, c).
+/// \throws as quadratic_design_shapes; Precondition_error for a rounding outside (0, 1/2).
+template <class K>
+Cubic_spline_2<K> quadratic_design_spline(const std::vector<typename K::Point_2>& q, bool closed = false,
+                                          const Quadratic_design_options& options = {}) {
+  typedef typename K::FT FT;
+  internal::require(options.rounding > 0 && options.rounding < 0.5, "quadratic_design_spline: rounding ",
+                    options.rounding, " must be in (0, 1/2)");
+  return bezier_chain_spline(quadratic_design_shapes<K>(q, closed, options), rounding_marks(FT(options.rounding)), closed);
 }
 
 } // namespace fair

@@ -365,4 +365,36 @@ TYPED_TEST(Design, ChainSplineReproducesItsShapes) {
   }
 }
 
+// The pipeline on the eight sparse points of a Fig. 16-like data set: a closed C2 spline whose
+// control polygon contains every data point and which retains every shape on [1/4, 3/4]. The
+// design is not convex although the data are: the quadratics meet at q_1 with a reflex corner
+// (m_0, q_1, m_1 turn right), which spline_convexity reports at control point 7 = q_1.
+TYPED_TEST(Design, PipelineOnSparseConvexData) {
+  typedef TypeParam K;
+  typedef typename K::Point_2 P;
+  typedef typename K::FT FT;
+  const std::vector<P> sparse{P(0, 0), P(4, -1), P(8, 0), P(10, 3), P(9, 7), P(6, 9), P(2, 8), P(-1, 4)};
+  fair::Quadratic_design_options o;
+  o.spacing = fair::Knot_spacing::UNIFORM;
+  const std::vector<fair::Bezier_2<K>> shapes = fair::quadratic_design_shapes<K>(sparse, true, o);
+  const fair::Cubic_spline_2<K> s = fair::quadratic_design_spline<K>(sparse, true, o);
+  ASSERT_EQ(shapes.size(), 8u);
+  EXPECT_EQ(s.number_of_control_points(), 8u * 7u);
+  const FT P_len = FT(2) + q<K>(1, 8) - q<K>(7, 8);
+  for (std::size_t j = 0; j < shapes.size(); ++j)
+    for (int k = 0; k <= 4; ++k) {
+      const FT x = q<K>(1, 4) + q<K>(k, 8);
+      EXPECT_TRUE(same<K>(s.point(q<K>(1, 8) + FT(int(j)) * P_len + x), shapes[j].point(x), 1e-12)) << j << " " << k;
+    }
+  for (std::size_t j = 0; j < sparse.size(); ++j) EXPECT_TRUE(same<K>(s.control_points()[7 * j], sparse[j])) << j;
+  const fair::Spline_convexity_report<K> r = fair::spline_convexity(s);
+  EXPECT_FALSE(r.polygon_convex);
+  EXPECT_EQ(r.polygon_violation, 7u);
+  EXPECT_FALSE(r.curve_locally_convex);
+  EXPECT_EQ(r.inflected_pieces, (std::vector<std::size_t>{6, 7}));
+  fair::Quadratic_design_options bad = o;
+  bad.rounding = 0.5;
+  EXPECT_THROW(fair::quadratic_design_spline<K>(sparse, true, bad), fair::Precondition_error);
+}
+
 } // namespace
