@@ -56,7 +56,8 @@ public:
   /// `control_points` (m + 3 open, m closed; layout above).
   /// \throws Precondition_error for too few breakpoints, a non-finite or non-increasing
   /// breakpoint, a wrong number of control points, or a non-finite coordinate (the message
-  /// names the index and the values).
+  /// names the index and the values); also for breakpoints or coordinates so large (beyond
+  /// ~1e307) that the sums of a few of them in eq. 2 would overflow double.
   Cubic_spline_2(std::vector<FT> breakpoints, std::vector<Point_2> control_points, bool closed = false)
     : t_(std::move(breakpoints)), d_(std::move(control_points)), w_(d_.size(), FT(1)), closed_(closed),
       rational_(false) {
@@ -64,7 +65,7 @@ public:
   }
 
   /// The rational spline with weights w_i > 0 (homogeneous control points (w_i d_i, w_i)).
-  /// All weights equal make it polynomial (is_rational() is then false).
+  /// All weights equal make it polynomial: is_rational() is then false and weights() are 1.
   /// \throws Precondition_error as above, or for a weight that is not finite and > 0.
   Cubic_spline_2(std::vector<FT> breakpoints, std::vector<Point_2> control_points, std::vector<FT> weights,
                  bool closed = false)
@@ -76,7 +77,7 @@ public:
   /// The spline whose pieces are `cubic_pieces` (piece i over [t_i, t_{i+1}]), by eq. 3.
   /// \throws Invalid_input_error if the pieces are not C2 for these breakpoints: the spline
   /// rebuilt from the control points must reproduce every Bezier point, exactly in an exact
-  /// kernel, in double within internal::spline::c2_relative_tolerance of the polygon's extent.
+  /// kernel, in double within 1e-9 of the extent of the pieces' control points.
   static Cubic_spline_2 from_bezier_pieces(std::vector<FT> breakpoints, const std::vector<Polynomial_piece>& cubic_pieces,
                                            bool closed = false) {
     std::vector<std::array<Homogeneous, 4>> b;
@@ -240,6 +241,7 @@ private:
   void validate() {
     internal::spline::check_spline_data<K>(t_, d_, w_, closed_);
     rational_ = !std::all_of(w_.begin(), w_.end(), [&](const FT& w) { return w == w_.front(); });
+    if (!rational_) w_.assign(w_.size(), FT(1)); // equal weights: the same curve, polynomial form
     hc_ = homogeneous_control();
   }
 
@@ -332,7 +334,7 @@ private:
   }
 
   std::size_t locate(const FT& t, const char* fn) const {
-    internal::require(!(t < t_.front()) && !(t_.back() < t), "fair::Cubic_spline_2::", fn, ": parameter ",
+    internal::require(t_.front() <= t && t <= t_.back(), "fair::Cubic_spline_2::", fn, ": parameter ",
                       CGAL::to_double(t), " outside [", CGAL::to_double(t_.front()), ", ", CGAL::to_double(t_.back()),
                       "]");
     const std::size_t i = static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin());
