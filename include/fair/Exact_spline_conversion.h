@@ -148,10 +148,11 @@ Rational_bezier_2<K> rational_circle_arc_cubic(const typename K::Point_2& center
 
 /// The splitting rule: an arc of opening alpha = end - start > 180 deg is split into
 /// k = ceil(alpha / 180 deg) equal sub-arcs (a full circle into 2), otherwise returned whole.
-/// Why 180 deg and not 240 deg: a sub-arc of at most 180 deg has cubic weights >= 1/3 (at most a
-/// factor 3 apart) and a CONVEX control polygon (it turns by alpha/2 at each of its two inner
-/// vertices), which Proposition 1 (Spline_convexity.h) needs; an arc of 180..240 deg is
-/// representable but its control polygon turns by more than 180 deg.
+/// Why 180 deg and not 240 deg: the inner Bezier points of the arc's cubic lie at distance
+/// 2 r sin(alpha/2) / (1 + 2 cos(alpha/2)) from the end points along the end tangents -- at most
+/// 2 r for alpha <= 180 deg, unbounded as alpha -> 240 deg -- and the inner weights
+/// (1 + 2 cos(alpha/2))/3 are >= 1/3 for alpha <= 180 deg but tend to 0: sub-arcs of at most
+/// 180 deg keep the control polygon a usable design handle and the weights well conditioned.
 /// \throws Precondition_error unless the angles are finite and 0 < alpha <= 2 pi.
 inline std::vector<std::pair<double, double>> circle_arc_split(double start_angle, double end_angle) {
   return internal::exact_conversion::split_arc(start_angle, end_angle);

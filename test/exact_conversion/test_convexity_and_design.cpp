@@ -185,9 +185,8 @@ TYPED_TEST(Convexity, CounterexamplesWithoutAConvexPolygon) {
   EXPECT_FALSE(r.curve_locally_convex);
   EXPECT_EQ(r.curve_orientation, CGAL::COLLINEAR);
   EXPECT_FALSE(r.inflected_pieces.empty());
-  // an arc of 300 degrees split in two conics: the polygon turns by 300 deg in all, a locally
-  // convex curve, yet closing the open polygon is fine, so use three turns beyond 360 degrees:
-  // a spiral-like polygon that winds more than once.
+  // The converse fails: a spiral-like polygon turning left at every vertex but winding more
+  // than once is not convex, and its curve is still locally convex.
   const std::vector<P> spiral{P(4, 0), P(4, 4), P(-4, 4), P(-4, -4), P(3, -4), P(3, 3), P(-3, 3), P(-3, -2)};
   std::vector<FT> t{0};
   for (std::size_t i = 0; i + 3 < spiral.size(); ++i) t.push_back(t.back() + FT(1));
