@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // Surfaces of revolution with reflection lines (zebra stripes): the test by which Karciauskas and
-// Peters judge a profile curve [KP], Figs. 13, 14. A planar profile -- any range of CurvePiece_2
+// Peters judge a profile curve [KP13], Figs. 13, 14. A planar profile -- any range of CurvePiece_2
 // pieces, e.g. Cubic_spline_2::pieces() -- is rotated about an axis in its plane and rendered in
 // software (no OpenGL) with the reflection lines of parallel light tubes [Kla80] and diffuse
 // shading. The surface normal comes from each piece's exact derivative (the profile normal,
@@ -135,6 +135,49 @@ Surface_of_revolution_render render_surface_of_revolution(const PieceRange& piec
   Surface_of_revolution_render r;
   internal::render::render(profile, options, r);
   return r;
+}
+
+/// The stripe kink across a parallel of the surface (the paper's test, Fig. 14): in the image
+/// columns of the central band (width/6 either side of the middle, every 4th column), the row
+/// where the profile parameter s crosses `join_s` (s = piece + u) between two refined pixels,
+/// and there the largest |second difference| of the stripe function along the column (rows
+/// -2..+2 about it, wrapped modulo the stripe period). The stripe function depends on the normal
+/// only: across a curvature jump its derivative along the meridian jumps, and the second
+/// difference is of the size of that jump whatever the resolution; across a curvature-continuous
+/// join it is of the size of f'' times a pixel squared. Meaningful away from the poles of the
+/// environment (where R is parallel to the tubes, f is singular and every difference is large).
+struct Stripe_kink {
+  double kink = 0;          ///< the largest |second difference| found (stripe periods per pixel^2)
+  std::size_t columns = 0;  ///< columns in which the join was found
+};
+
+inline Stripe_kink stripe_kink(const Surface_of_revolution_render& r, double join_s, int stripes) {
+  Stripe_kink out;
+  auto wrapped = [stripes](double a, double b) { return internal::render::phase_difference(a, b, stripes); };
+  const int band = std::max(1, r.width / 6);
+  for (int x = std::max(0, r.width / 2 - band); x <= std::min(r.width - 1, r.width / 2 + band); x += 4) {
+    int join = -1;
+    for (int y = 3; y + 3 < r.height && join < 0; ++y) {
+      const std::size_t a = static_cast<std::size_t>(y - 1) * r.width + x, b = a + r.width;
+      if (r.covered[a] && r.covered[b] && r.refined[a] && r.refined[b] &&
+          (r.parameter[2 * a] - join_s) * (r.parameter[2 * b] - join_s) <= 0 && r.parameter[2 * a] != r.parameter[2 * b])
+        join = y;
+    }
+    if (join < 0) continue;
+    bool seen = true;
+    double worst = 0;
+    for (int y = join - 2; y <= join + 2; ++y) {
+      const std::size_t p = static_cast<std::size_t>(y) * r.width + x;
+      if (!r.covered[p - r.width] || !r.covered[p] || !r.covered[p + r.width]) seen = false;
+      const double d1 = wrapped(r.stripe_phase[p + r.width], r.stripe_phase[p]);
+      const double d0 = wrapped(r.stripe_phase[p], r.stripe_phase[p - r.width]);
+      worst = std::max(worst, std::fabs(d1 - d0));
+    }
+    if (!seen) continue;
+    ++out.columns;
+    out.kink = std::max(out.kink, worst);
+  }
+  return out;
 }
 
 /// The PNG file content of `image`. \throws Precondition_error if the buffer does not match the size.
