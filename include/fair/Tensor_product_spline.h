@@ -50,23 +50,25 @@ struct Homogeneous_point_3 {
 template <class V>
 struct Tensor_coefficient_traits;
 
-template <class K>
-struct Tensor_coefficient_traits<CGAL::Point_3<K>> {
-  typedef CGAL::Point_3<K> Coefficient;
+namespace internal {
+namespace tensor {
+/// The coordinates of a CGAL Point_3 or Vector_3 of kernel K.
+template <class V, class K>
+struct Cartesian_3_traits {
+  typedef V Coefficient;
   typedef typename K::FT FT;
   static constexpr std::size_t dimension = 3;
   static FT coordinate(const Coefficient& p, std::size_t i) { return p[static_cast<int>(i)]; }
   static Coefficient make(const std::array<FT, 3>& x) { return Coefficient(x[0], x[1], x[2]); }
 };
+} // namespace tensor
+} // namespace internal
 
 template <class K>
-struct Tensor_coefficient_traits<CGAL::Vector_3<K>> {
-  typedef CGAL::Vector_3<K> Coefficient;
-  typedef typename K::FT FT;
-  static constexpr std::size_t dimension = 3;
-  static FT coordinate(const Coefficient& p, std::size_t i) { return p[static_cast<int>(i)]; }
-  static Coefficient make(const std::array<FT, 3>& x) { return Coefficient(x[0], x[1], x[2]); }
-};
+struct Tensor_coefficient_traits<CGAL::Point_3<K>> : internal::tensor::Cartesian_3_traits<CGAL::Point_3<K>, K> {};
+
+template <class K>
+struct Tensor_coefficient_traits<CGAL::Vector_3<K>> : internal::tensor::Cartesian_3_traits<CGAL::Vector_3<K>, K> {};
 
 template <class FT_>
 struct Tensor_coefficient_traits<Homogeneous_point_3<FT_>> {
