@@ -56,7 +56,8 @@ public:
   /// `control_points` (m + 3 open, m closed; layout above).
   /// \throws Precondition_error for too few breakpoints, a non-finite or non-increasing
   /// breakpoint, a wrong number of control points, or a non-finite coordinate (the message
-  /// names the index and the values).
+  /// names the index and the values); also for breakpoints or coordinates so large (beyond
+  /// ~1e307) that the sums of a few of them in eq. 2 would overflow double.
   Cubic_spline_2(std::vector<FT> breakpoints, std::vector<Point_2> control_points, bool closed = false)
     : t_(std::move(breakpoints)), d_(std::move(control_points)), w_(d_.size(), FT(1)), closed_(closed),
       rational_(false) {
@@ -64,7 +65,7 @@ public:
   }
 
   /// The rational spline with weights w_i > 0 (homogeneous control points (w_i d_i, w_i)).
-  /// All weights equal make it polynomial (is_rational() is then false).
+  /// All weights equal make it polynomial: is_rational() is then false and weights() are 1.
   /// \throws Precondition_error as above, or for a weight that is not finite and > 0.
   Cubic_spline_2(std::vector<FT> breakpoints, std::vector<Point_2> control_points, std::vector<FT> weights,
                  bool closed = false)
@@ -76,7 +77,7 @@ public:
   /// The spline whose pieces are `cubic_pieces` (piece i over [t_i, t_{i+1}]), by eq. 3.
   /// \throws Invalid_input_error if the pieces are not C2 for these breakpoints: the spline
   /// rebuilt from the control points must reproduce every Bezier point, exactly in an exact
-  /// kernel, in double within internal::spline::c2_relative_tolerance of the polygon's extent.
+  /// kernel, in double within 1e-9 of the extent of the pieces' control points.
   static Cubic_spline_2 from_bezier_pieces(std::vector<FT> breakpoints, const std::vector<Polynomial_piece>& cubic_pieces,
                                            bool closed = false) {
     std::vector<std::array<Homogeneous, 4>> b;
@@ -86,7 +87,7 @@ public:
                         p.degree(), ", expected 3");
       b.push_back(homogeneous_of(p.control_points(), std::vector<FT>(4, FT(1))));
     }
-    return from_homogeneous_bezier(std::move(breakpoints), b, closed, "from_bezier_pieces");
+    return from_homogeneous_bezier(std::move(breakpoints), b, closed, false, "from_bezier_pieces");
   }
 
   /// As from_bezier_pieces, for rational cubic pieces (eq. 3 in homogeneous coordinates). The
@@ -101,7 +102,7 @@ public:
                         " has degree ", p.degree(), ", expected 3");
       b.push_back(homogeneous_of(p.control_points(), p.weights()));
     }
-    return from_homogeneous_bezier(std::move(breakpoints), b, closed, "from_rational_bezier_pieces");
+    return from_homogeneous_bezier(std::move(breakpoints), b, closed, true, "from_rational_bezier_pieces");
   }
 
   const std::vector<FT>& breakpoints() const { return t_; }
@@ -200,7 +201,7 @@ public:
     std::vector<Homogeneous> c = internal::spline::insert_knot(t_, h, closed_, static_cast<long>(j), s);
     std::vector<FT> t = t_;
     t.insert(t.begin() + static_cast<std::ptrdiff_t>(j) + 1, s);
-    return from_homogeneous_control(std::move(t), c, closed_);
+    return from_homogeneous_control(std::move(t), c, closed_, rational_);
   }
 
   /// The same spline with control point i moved to p (the designer's edit): C2 by construction.
@@ -240,6 +241,7 @@ private:
   void validate() {
     internal::spline::check_spline_data<K>(t_, d_, w_, closed_);
     rational_ = !std::all_of(w_.begin(), w_.end(), [&](const FT& w) { return w == w_.front(); });
+    if (!rational_) w_.assign(w_.size(), FT(1)); // equal weights: the same curve, polynomial form
     hc_ = homogeneous_control();
   }
 
@@ -256,7 +258,16 @@ private:
     return b;
   }
 
-  static Cubic_spline_2 from_homogeneous_control(std::vector<FT> t, const std::vector<Homogeneous>& c, bool closed) {
+  // rational = false: the w of every point is 1 in exact arithmetic (affine combinations of
+  // weights 1), so it is set to 1 rather than divided by (in double it is 1 +- a few ulps).
+  static Cubic_spline_2 from_homogeneous_control(std::vector<FT> t, const std::vector<Homogeneous>& c, bool closed,
+                                                 bool rational = true) {
+    if (!rational) {
+      std::vector<Point_2> d;
+      d.reserve(c.size());
+      for (const Homogeneous& h : c) d.push_back(Point_2(h.x, h.y));
+      return Cubic_spline_2(std::move(t), std::move(d), closed);
+    }
     std::vector<Point_2> d;
     std::vector<FT> w;
     d.reserve(c.size());
@@ -271,7 +282,7 @@ private:
   }
 
   static Cubic_spline_2 from_homogeneous_bezier(std::vector<FT> t, const std::vector<std::array<Homogeneous, 4>>& b,
-                                                bool closed, const char* fn) {
+                                                bool closed, bool rational, const char* fn) {
     internal::spline::check_breakpoints(t, closed, fn);
     internal::require(b.size() + 1 == t.size(), "fair::Cubic_spline_2::", fn, ": ", b.size(), " pieces for ", t.size(),
                       " breakpoints (expected ", t.size() - 1, ")");
@@ -280,7 +291,7 @@ private:
       if (!(c[i].w > FT(0)))
         throw Invalid_input_error(internal::message("fair::Cubic_spline_2::", fn, ": control point ", i, " has weight ",
                                                     CGAL::to_double(c[i].w), " <= 0"));
-    Cubic_spline_2 s = from_homogeneous_control(std::move(t), c, closed);
+    Cubic_spline_2 s = from_homogeneous_control(std::move(t), c, closed, rational);
     internal::spline::check_reproduces<K>(s.form(), b, fn);
     return s;
   }
@@ -323,7 +334,7 @@ private:
   }
 
   std::size_t locate(const FT& t, const char* fn) const {
-    internal::require(!(t < t_.front()) && !(t_.back() < t), "fair::Cubic_spline_2::", fn, ": parameter ",
+    internal::require(t_.front() <= t && t <= t_.back(), "fair::Cubic_spline_2::", fn, ": parameter ",
                       CGAL::to_double(t), " outside [", CGAL::to_double(t_.front()), ", ", CGAL::to_double(t_.back()),
                       "]");
     const std::size_t i = static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin());

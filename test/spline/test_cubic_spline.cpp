@@ -7,6 +7,9 @@
 
 #include "test_support.h"
 
+#include <fair/Cubic_bspline_2.h>
+#include <fair/Cubic_interpolating_spline_2.h>
+#include <fair/Cubic_quasi_interpolant_2.h>
 #include <fair/Cubic_spline_2.h>
 #include <fair/io/write_json.h>
 
@@ -295,6 +298,91 @@ TYPED_TEST(Cubic_spline, ControlPointEditKeepsC2) {
   EXPECT_TRUE(same<K>(e.piece(5).control_point(2), s.piece(5).control_point(2)));
 }
 
+// The classic cubic methods produce the library's spline: its pieces are theirs (exactly in an
+// exact kernel), and the interpolating spline passes through the data at its knots.
+template <class K, class Method>
+void expect_spline_is_the_method(const Method& method, double rel) {
+  const auto& s = method.spline();
+  ASSERT_EQ(s.number_of_pieces(), method.number_of_pieces());
+  EXPECT_FALSE(s.is_rational());
+  const auto pieces = s.polynomial_pieces();
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    for (std::size_t k = 0; k < 4; ++k)
+      EXPECT_TRUE(same<K>(pieces[i].control_point(k), method.pieces()[i].control_point(k), rel)) << i << " " << k;
+}
+
+TYPED_TEST(Cubic_spline, ClassicCubicMethodsProduceIt) {
+  typedef TypeParam K;
+  std::mt19937 rng(37);
+  for (int closed = 0; closed < 2; ++closed) {
+    const auto p = fair_test::random_points<K>(rng, 9);
+    const auto end = closed ? fair::Spline_end_condition::PERIODIC : fair::Spline_end_condition::NATURAL;
+    const fair::Cubic_interpolating_spline_2<K> interpolant(p, end, fair::Knot_spacing::CHORDAL);
+    expect_spline_is_the_method<K>(interpolant, 1e-12);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      EXPECT_TRUE(same<K>(interpolant.spline().point(interpolant.knots()[i]), p[i], 1e-12));
+    EXPECT_EQ(interpolant.spline().is_closed(), closed == 1);
+    // the uniform methods' pieces come from their spline: compare them with the uniform
+    // B-spline segment formula instead (Bezier points (d0 + 4 d1 + d2)/6, (2 d1 + d2)/3, ...)
+    for (int method = 0; method < 3; ++method) {
+      if (method == 2 && closed) continue;
+      const fair::Cubic_bspline_2<K> bs(p, closed == 1, method == 2 ? fair::Cubic_bspline_ends::TRIMMED
+                                                                      : fair::Cubic_bspline_ends::INTERPOLATE_END_POINTS);
+      const fair::Cubic_quasi_interpolant_2<K> qi(p, closed == 1);
+      const auto& d = method == 1 ? qi.control_polygon() : bs.control_polygon();
+      const auto& s = method == 1 ? qi.spline() : bs.spline();
+      const std::size_t n = d.size(), pieces = closed ? n : n - 3;
+      ASSERT_EQ(s.number_of_pieces(), pieces);
+      for (std::size_t j = 0; j < pieces; ++j) {
+        const auto& d0 = d[closed ? (j + n - 1) % n : j];
+        const auto& d1 = d[closed ? j : j + 1];
+        const auto& d2 = d[closed ? (j + 1) % n : j + 2];
+        const auto& d3 = d[closed ? (j + 2) % n : j + 3];
+        typedef typename K::FT FT;
+        auto mix = [](const FT& a, const typename K::Point_2& x, const FT& b, const typename K::Point_2& y, const FT& c,
+                      const typename K::Point_2& z) {
+          return typename K::Point_2(a * x.x() + b * y.x() + c * z.x(), a * x.y() + b * y.y() + c * z.y());
+        };
+        const auto piece = s.polynomial_piece(j);
+        EXPECT_TRUE(same<K>(piece.control_point(0), mix(q<K>(1, 6), d0, q<K>(4, 6), d1, q<K>(1, 6), d2), 1e-12));
+        EXPECT_TRUE(same<K>(piece.control_point(1), mix(q<K>(2, 3), d1, q<K>(1, 3), d2, FT(0), d3), 1e-12));
+        EXPECT_TRUE(same<K>(piece.control_point(2), mix(q<K>(1, 3), d1, q<K>(2, 3), d2, FT(0), d3), 1e-12));
+        EXPECT_TRUE(same<K>(piece.control_point(3), mix(q<K>(1, 6), d1, q<K>(4, 6), d2, q<K>(1, 6), d3), 1e-12));
+      }
+      expect_spline_is_the_method<K>(bs, 0);
+    }
+  }
+  // closed uniform B-spline: the data are the periodic control points themselves
+  const auto p = fair_test::random_points<K>(rng, 5);
+  const fair::Cubic_bspline_2<K> b(p, true);
+  for (std::size_t i = 0; i < p.size(); ++i) EXPECT_TRUE(same<K>(b.spline().control_points()[i], p[i]));
+}
+
+// Equal weights other than 1: the same polynomial curve, also after knot insertion.
+TYPED_TEST(Cubic_spline, EqualWeightsAreThePolynomialSpline) {
+  typedef TypeParam K;
+  typedef typename K::Point_2 P;
+  typedef typename K::FT FT;
+  const std::vector<P> d{P(0, 0), P(1, 2), P(3, 2), P(4, 0)};
+  const fair::Cubic_spline_2<K> s({FT(0), FT(1)}, d, std::vector<FT>(4, FT(2)));
+  EXPECT_FALSE(s.is_rational());
+  EXPECT_TRUE(same<K>(s.weights()[2], FT(1)));
+  const auto r = s.with_knot_inserted(q<K>(1, 2));
+  for (int k = 0; k <= 8; ++k) EXPECT_TRUE(same<K>(r.point(q<K>(k, 8)), fair::Bezier_2<K>(d).point(q<K>(k, 8))));
+}
+
+// Strongly non-uniform chordal knots (intervals of 1e-8 next to 1): eq. 3 in its
+// better-conditioned form keeps the classic interpolant's spline within rounding of its pieces.
+TYPED_TEST(Cubic_spline, ClassicInterpolantOnVeryNonUniformKnots) {
+  typedef TypeParam K;
+  typedef typename K::Point_2 P;
+  for (double e : {1e-6, 1e-8, 1e-10}) {
+    const std::vector<P> p{P(0, 0), P(1, 0), P(1 + e, e), P(2, 1), P(3, 0), P(4, 1)};
+    const fair::Cubic_interpolating_spline_2<K> c(p, fair::Spline_end_condition::NATURAL, fair::Knot_spacing::CHORDAL);
+    for (std::size_t i = 0; i < p.size(); ++i) EXPECT_TRUE(same<K>(c.spline().point(c.knots()[i]), p[i], 1e-12)) << e;
+  }
+}
+
 TEST(Cubic_spline_json, TheBsplineMemberIsTheNurbsForm) {
   typedef fair_test::SC_gmpq K;
   std::mt19937 rng(31);
@@ -333,6 +421,12 @@ TEST(Cubic_spline_errors, BadDataIsRejectedWithAMessage) {
   EXPECT_THROW(s.piece(1), fair::Precondition_error);
   const fair::Cubic_spline_2<K> r({0.0, 1.0}, four, {1.0, 2.0, 1.0, 1.0});
   EXPECT_THROW(r.polynomial_pieces(), fair::Precondition_error);
+  // NaN parameters and sizes whose sums overflow double are refused, not turned into NaN
+  EXPECT_THROW(s.point(std::nan("")), fair::Precondition_error);
+  EXPECT_THROW(s.curvature(std::nan("")), fair::Precondition_error);
+  EXPECT_THROW(fair::Cubic_spline_2<K>({0.0, 1e308, 1.7e308}, std::vector<P>(5, P(0, 0))), fair::Precondition_error);
+  EXPECT_THROW(fair::Cubic_spline_2<K>({0.0, 1.0}, {P(0, 0), P(1e308, 0), P(-1e308, 1), P(3, 0)}),
+               fair::Precondition_error);
   try {
     fair::Cubic_spline_2<K>({0.0, 1.0, 0.5, 2.0}, std::vector<P>(6, P(0, 0)));
     FAIL();

@@ -77,7 +77,13 @@ public:
     return t_[static_cast<std::size_t>(k - q * m)] + FT(q) * period;
   }
 
-  FT interval(long i) const { return knot(i + 1) - knot(i); }
+  /// h_i = t_{i+1} - t_i. Closed: from the reduced index, so that h_{i+m} == h_i bit for bit
+  /// and the last piece of a closed spline ends exactly where the first begins.
+  FT interval(long i) const {
+    if (!closed_) return knot(i + 1) - knot(i);
+    const long m = pieces(), r = i - floor_div(i, m) * m;
+    return t_[static_cast<std::size_t>(r + 1)] - t_[static_cast<std::size_t>(r)];
+  }
 
   /// c_i (open: -1 <= i <= m+1; closed: any i).
   const Point& control(long i) const {
@@ -116,11 +122,14 @@ private:
   bool closed_;
 };
 
-/// The control points c from the homogeneous Bezier points of C2 pieces (eq. 3):
-/// c_i = ((h_{i-1} + h_i) b_1^i - h_{i-1} b_2^i) / h_i = (1 + 1/beta_i) b_1^i - (1/beta_i) b_2^i,
-/// and for an open spline also the end points c_{-1} = b_0^0, c_{m+1} = b_3^{m-1} and
-/// c_m = b_2^{m-1}. Only b_1^i and b_2^i (and the end points) are read; whether the pieces
-/// are C2 is for the caller to check (rebuild the pieces and compare).
+/// The control points c from the homogeneous Bezier points of C2 pieces (eq. 3), in the
+/// better-conditioned of its two forms: c_i extrapolates the line through b_1, b_2 of a piece
+/// by the ratio of the intervals, so rounding in b_1 - b_2 is amplified by that ratio. Hence
+///   h_i >= h_{i-1}:  c_i = ((h_{i-1} + h_i) b_1^i - h_{i-1} b_2^i) / h_i        (piece i)
+///   h_i <  h_{i-1}:  c_i = ((h_{i-1} + h_i) b_2^{i-1} - h_i b_1^{i-1}) / h_{i-1}  (piece i-1)
+/// both amplifying by at most 2 (exact arithmetic gives the same point for C2 pieces). For an
+/// open spline the ends are c_{-1} = b_0^0, c_0 = b_1^0, c_m = b_2^{m-1}, c_{m+1} = b_3^{m-1}.
+/// Whether the pieces are C2 is for the caller to check (rebuild the pieces and compare).
 template <class FT>
 std::vector<Homogeneous_point<FT>> control_from_bezier(const std::vector<FT>& breakpoints,
                                                        const std::vector<std::array<Homogeneous_point<FT>, 4>>& b,
@@ -136,8 +145,14 @@ std::vector<Homogeneous_point<FT>> control_from_bezier(const std::vector<FT>& br
   if (!closed) c.push_back(b.front()[0]);
   for (long i = 0; i < m; ++i) {
     const FT hm = form.interval(i - 1), h = form.interval(i);
-    const std::array<Point, 4>& bi = b[static_cast<std::size_t>(i)];
-    c.push_back(combine(hm + h, bi[1], -hm, bi[2], h));
+    const bool has_left = closed || i > 0; // open: c_0 = b_1^0 (hm = 0 makes the right form exact)
+    if (!has_left || !(h < hm)) {
+      const std::array<Point, 4>& bi = b[static_cast<std::size_t>(i)];
+      c.push_back(combine(hm + h, bi[1], -hm, bi[2], h));
+    } else {
+      const std::array<Point, 4>& bl = b[static_cast<std::size_t>((i - 1 + m) % m)];
+      c.push_back(combine(hm + h, bl[2], -h, bl[1], hm));
+    }
   }
   if (!closed) {
     c.push_back(b.back()[2]);

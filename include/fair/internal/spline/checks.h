@@ -33,6 +33,11 @@ bool is_exact_number() {
   return Is_exact::value && !std::is_floating_point<FT>::value;
 }
 
+/// eq. 2 adds up to three intervals (and a closed spline's extension adds a period), and
+/// combines up to four control points: values below double's maximum divided by this factor
+/// cannot overflow there.
+constexpr double overflow_headroom = 16;
+
 /// Breakpoints: enough of them (2 open, 4 closed), finite, strictly increasing.
 template <class FT>
 void check_breakpoints(const std::vector<FT>& t, bool closed, const char* fn) {
@@ -46,6 +51,9 @@ void check_breakpoints(const std::vector<FT>& t, bool closed, const char* fn) {
       require(t[i - 1] < t[i], "fair::Cubic_spline_2::", fn, ": breakpoints ", i - 1, " and ", i, " are not increasing (",
               CGAL::to_double(t[i - 1]), ", ", ti, ")");
   }
+  const double extent = std::max(std::abs(CGAL::to_double(t.front())), std::abs(CGAL::to_double(t.back())));
+  require(std::isfinite(overflow_headroom * extent), "fair::Cubic_spline_2::", fn, ": breakpoints up to ", extent,
+          " are too large (sums of intervals would overflow double)");
 }
 
 /// Breakpoints as above, m + 3 (open) or m (closed) finite control points, as many finite
@@ -64,6 +72,9 @@ void check_spline_data(const std::vector<typename K::FT>& t, const std::vector<t
             ") is not finite");
     require(std::isfinite(wi) && w[i] > typename K::FT(0), "fair::Cubic_spline_2: weight ", i, " = ", wi,
             " is not finite and > 0");
+    require(std::isfinite(overflow_headroom * std::max(std::abs(x), std::abs(y)) * std::max(1.0, wi)),
+            "fair::Cubic_spline_2: control point ", i, " = (", x, ", ", y, ") with weight ", wi,
+            " is too large (combinations of control points would overflow double)");
   }
 }
 
