@@ -12,7 +12,7 @@ cd "$here"
 jobs=${FAIR_JOBS:-$(nproc)}
 
 packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev libboost-dev
-          libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev)
+          libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libpng-dev)
 
 setup() {
   local missing=()
