@@ -94,37 +94,44 @@ Construction<K> construct(const std::vector<typename K::Point_2>& q, const std::
   }
   const std::size_t m = h.size();  // pieces: n - 1 open, n closed
 
-  // Chords and intervals in double for the curvatures; the extent for epsilon.
-  std::vector<double> hd(m), dx(m), dy(m);
+  // The extent for epsilon.
   double xmin = CGAL::to_double(q[0].x()), xmax = xmin, ymin = CGAL::to_double(q[0].y()), ymax = ymin;
-  for (std::size_t j = 0; j < m; ++j) {
-    const std::size_t k = (j + 1) % n;
-    hd[j] = CGAL::to_double(h[j]);
-    dx[j] = CGAL::to_double(q[k].x() - q[j].x());
-    dy[j] = CGAL::to_double(q[k].y() - q[j].y());
-    const double x = CGAL::to_double(q[k].x()), y = CGAL::to_double(q[k].y());
+  for (const Point_2& p : q) {
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
     xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y), ymax = std::max(ymax, y);
   }
   const double extent = std::hypot(xmax - xmin, ymax - ymin);
   out.epsilon = (extent > 0 && std::isfinite(extent)) ? relative_epsilon / extent : 0.0;
 
-  // kappa_i = |curvature of f_i at q_i| (open ends: of the one-sided quadratic).
+  // kappa_i = |curvature of f_i at q_i| (open ends: of the one-sided quadratic), from the chords
+  // and intervals in double (differences in FT first: exact in an exact kernel). No arrays of
+  // chords: memory traffic, not arithmetic, bounds this pass for large n.
+  // Index i + k (|k| <= 2 < size) modulo `size`, without an integer division (this runs ~10
+  // times per sample).
+  auto wrap = [](std::size_t i, int k, std::size_t size) {
+    if (k < 0) {
+      const std::size_t a = static_cast<std::size_t>(-k);
+      return i >= a ? i - a : i + size - a;
+    }
+    const std::size_t j = i + static_cast<std::size_t>(k);
+    return j >= size ? j - size : j;
+  };
   std::vector<double>& kappa = out.curvatures;
   kappa.resize(n);
+  auto curvature = [&](std::size_t j, Quadratic_node at) {  // the quadratic through q_j, q_{j+1}, q_{j+2}
+    const std::size_t j1 = wrap(j, 1, n), j2 = wrap(j, 2, n);
+    return quadratic_curvature(CGAL::to_double(q[j1].x() - q[j].x()), CGAL::to_double(q[j1].y() - q[j].y()),
+                               CGAL::to_double(h[j]), CGAL::to_double(q[j2].x() - q[j1].x()),
+                               CGAL::to_double(q[j2].y() - q[j1].y()), CGAL::to_double(h[wrap(j, 1, m)]), at);
+  };
   if (closed) {
-    for (std::size_t i = 0; i < m; ++i) {
-      const std::size_t im = (i + m - 1) % m;
-      kappa[i] = quadratic_curvature(dx[im], dy[im], hd[im], dx[i], dy[i], hd[i], Quadratic_node::MIDDLE);
-    }
+    for (std::size_t i = 0; i < m; ++i) kappa[i] = curvature(wrap(i, -1, m), Quadratic_node::MIDDLE);
   } else {
-    kappa[0] = quadratic_curvature(dx[0], dy[0], hd[0], dx[1], dy[1], hd[1], Quadratic_node::FIRST);
-    for (std::size_t i = 1; i < m; ++i)
-      kappa[i] = quadratic_curvature(dx[i - 1], dy[i - 1], hd[i - 1], dx[i], dy[i], hd[i], Quadratic_node::MIDDLE);
-    kappa[m] = quadratic_curvature(dx[m - 2], dy[m - 2], hd[m - 2], dx[m - 1], dy[m - 1], hd[m - 1], Quadratic_node::LAST);
+    kappa[0] = curvature(0, Quadratic_node::FIRST);
+    for (std::size_t i = 1; i < m; ++i) kappa[i] = curvature(i - 1, Quadratic_node::MIDDLE);
+    kappa[m] = curvature(m - 2, Quadratic_node::LAST);
   }
 
-  // Index i + k (|k| <= 2) modulo `size`; n >= 3, so no intermediate is negative.
-  auto wrap = [](std::size_t i, int k, std::size_t size) { return (i + size + static_cast<std::size_t>(k + 2) - 2) % size; };
   // q_i + sum_k w_k (q_{i+k} - q_i) for offsets k = -2..2 (w[2] unused), indices mod n.
   auto apply = [&](std::size_t i, const FT (&w)[5], bool left, bool right) {
     const Point_2& c = q[i];
@@ -140,28 +147,28 @@ Construction<K> construct(const std::vector<typename K::Point_2>& q, const std::
   auto kap = [&](std::size_t i, int k) { return kappa[wrap(i, k, n)]; };
   auto hh = [&](std::size_t i, int k) -> const FT& { return h[wrap(i, k, m)]; };
   const FT zero(0);
-  auto control_point = [&](std::size_t i) {
-    const bool left = closed || i >= 2, right = closed || i + 2 <= m;
+  const FT third = FT(1) / FT(3);
+  typedef Breakpoint_weights<FT> Weights;
+  auto weights_at = [&](std::size_t j) { return breakpoint_weights(hh(j, -1), hh(j, 0)); };
+  // c_i from the weights at t_{i-1} (null without f_{i-1}), t_i and t_{i+1} (null without f_{i+1}):
+  // a_{-2} = wm_{i-1}, a_{-1} = (1 + beta_{i-1} - beta_i)/3, a_1 = (1 + 1/beta_{i+1} - 1/beta_i)/3,
+  // a_2 = wp_{i+1} (stencils.h). Without f_{i-1} (f_{i+1}) the one-sided quadratic stands in:
+  // p^L = p (p^R = p), i.e. its weight goes to p.
+  auto control_point = [&](std::size_t i, const Weights* prev, const Weights& cur, const Weights* next) {
+    const bool left = prev != nullptr, right = next != nullptr;
     const double mu = curvature_ratio(kap(i, 0), kap(i, -1), out.epsilon, add_epsilon);
     const double nu = curvature_ratio(kap(i, -1), kap(i, 1), out.epsilon, add_epsilon);
     const double one_minus_mu_next = curvature_ratio(kap(i, 0), kap(i, 1), out.epsilon, add_epsilon);
-    // Without f_{i-1} (f_{i+1}) the one-sided quadratic stands in: p^L = p (p^R = p).
     const FT wl(left ? (1 - nu) * mu : 0.0), wr(right ? nu * one_minus_mu_next : 0.0);
     const FT wc = FT(1) - wl - wr;
-    FT pm, pp;
-    centre_stencil(hh(i, -1), hh(i, 0), pm, pp);
-    FT w[5] = {zero, wc * pm, zero, wc * pp, zero};
+    FT w[5] = {zero, wc * cur.wm, zero, wc * cur.wp, zero};
     if (left) {
-      FT am2, am1;
-      left_stencil(hh(i, -2), hh(i, -1), hh(i, 0), am2, am1);
-      w[0] = wl * am2;
-      w[1] += wl * am1;
+      w[0] = wl * prev->wm;
+      w[1] += wl * (FT(1) + prev->beta - cur.beta) * third;
     }
     if (right) {
-      FT a1, a2;
-      right_stencil(hh(i, -1), hh(i, 0), hh(i, 1), a1, a2);
-      w[3] += wr * a1;
-      w[4] = wr * a2;
+      w[3] += wr * (FT(1) + next->inv_beta - cur.inv_beta) * third;
+      w[4] = wr * next->wp;
     }
     return apply(i, w, left, right);
   };
@@ -169,7 +176,13 @@ Construction<K> construct(const std::vector<typename K::Point_2>& q, const std::
   std::vector<Point_2>& d = out.control_points;
   if (closed) {
     d.reserve(m);
-    for (std::size_t i = 0; i < m; ++i) d.push_back(control_point(i));
+    Weights prev = weights_at(m - 1), cur = weights_at(0);
+    for (std::size_t i = 0; i < m; ++i) {
+      const Weights next = weights_at(wrap(i, 1, m));
+      d.push_back(control_point(i, &prev, cur, &next));
+      prev = cur;
+      cur = next;
+    }
   } else {
     d.reserve(m + 3);
     FT w1, w2;
@@ -177,7 +190,14 @@ Construction<K> construct(const std::vector<typename K::Point_2>& q, const std::
     end_stencil(h[0], h[1], w1, w2);
     d.push_back(Point_2(q[0].x() + w1 * (q[1].x() - q[0].x()) + w2 * (q[2].x() - q[0].x()),
                         q[0].y() + w1 * (q[1].y() - q[0].y()) + w2 * (q[2].y() - q[0].y())));
-    for (std::size_t i = 1; i < m; ++i) d.push_back(control_point(i));
+    Weights prev, cur = weights_at(1), next;
+    for (std::size_t i = 1; i < m; ++i) {
+      const bool left = i >= 2, right = i + 2 <= m;
+      if (right) next = weights_at(i + 1);
+      d.push_back(control_point(i, left ? &prev : nullptr, cur, right ? &next : nullptr));
+      prev = cur;
+      cur = next;
+    }
     end_stencil(h[m - 1], h[m - 2], w1, w2);
     d.push_back(Point_2(q[m].x() + w1 * (q[m - 1].x() - q[m].x()) + w2 * (q[m - 2].x() - q[m].x()),
                         q[m].y() + w1 * (q[m - 1].y() - q[m].y()) + w2 * (q[m - 2].y() - q[m].y())));

@@ -23,35 +23,51 @@ namespace fair {
 namespace internal {
 namespace csr {
 
+/// What the stencils need at a breakpoint t_i with intervals hm = h_{i-1}, h0 = h_i: the weights
+/// wm, wp of q_{i-1}, q_{i+1} in p_i (below), beta_i = h_i / h_{i-1} and 1 / beta_i. Three
+/// divisions; each set serves c_{i-1}, c_i and c_{i+1} (construction.h keeps a rolling window).
+template <class FT>
+struct Breakpoint_weights {
+  FT wm, wp, beta, inv_beta;
+};
+
+template <class FT>
+Breakpoint_weights<FT> breakpoint_weights(const FT& hm, const FT& h0) {
+  const FT s = FT(1) / (FT(3) * (hm + h0)), rm = FT(1) / hm, r0 = FT(1) / h0;
+  return Breakpoint_weights<FT>{-(h0 * h0) * s * rm, -(hm * hm) * s * r0, h0 * rm, hm * r0};
+}
+
 /// p_i = F(t_{i-1}, t_i, t_{i+1}) for the quadratic f_i through q_{i-1}, q_i, q_{i+1} at
 /// t_{i-1}, t_i, t_{i+1} (F the cubic blossom), hm = h_{i-1}, h0 = h_i. Eq. 6 as printed:
 ///   w_{-1} = -beta_i^2 / (3 (beta_i + 1)) = -h_i^2 / (3 h_{i-1} (h_{i-1} + h_i)),
 ///   w_{+1} = -1 / (3 beta_i (beta_i + 1)) = -h_{i-1}^2 / (3 h_i (h_{i-1} + h_i)).
 template <class FT>
 void centre_stencil(const FT& hm, const FT& h0, FT& wm, FT& wp) {
-  const FT s = FT(3) * (hm + h0);
-  wm = -(h0 * h0) / (s * hm);
-  wp = -(hm * hm) / (s * h0);
+  const Breakpoint_weights<FT> w = breakpoint_weights(hm, h0);
+  wm = w.wm;
+  wp = w.wp;
 }
 
 /// p_i^L = F(t_{i-1}, t_i, t_{i+1}) for f_{i-1} (through q_{i-2}, q_{i-1}, q_i at t_{i-2},
 /// t_{i-1}, t_i); hmm = h_{i-2}, hm = h_{i-1}, h0 = h_i. Corrected eq. 6:
-///   a_{-2} = -beta_{i-1}^2 / (3 (beta_{i-1} + 1))  (as printed),
+///   a_{-2} = -beta_{i-1}^2 / (3 (beta_{i-1} + 1))  (as printed; = w_{-1} of p_{i-1}),
 ///   a_{-1} = (1 + beta_{i-1} - beta_i) / 3          (printed: beta_{i-1} / 3).
 template <class FT>
 void left_stencil(const FT& hmm, const FT& hm, const FT& h0, FT& am2, FT& am1) {
-  am2 = -(hm * hm) / (FT(3) * hmm * (hmm + hm));
-  am1 = (FT(1) + hm / hmm - h0 / hm) / FT(3);
+  const Breakpoint_weights<FT> l = breakpoint_weights(hmm, hm), c = breakpoint_weights(hm, h0);
+  am2 = l.wm;
+  am1 = (FT(1) + l.beta - c.beta) / FT(3);
 }
 
 /// p_i^R = F(t_{i-1}, t_i, t_{i+1}) for f_{i+1} (through q_i, q_{i+1}, q_{i+2} at t_i, t_{i+1},
 /// t_{i+2}); hm = h_{i-1}, h0 = h_i, hp = h_{i+1}. Corrected eq. 6:
 ///   a_1 = (1 + 1/beta_{i+1} - 1/beta_i) / 3       (printed: 1 / (3 beta_{i+1})),
-///   a_2 = -1 / (3 beta_{i+1} (beta_{i+1} + 1))      (printed: with the sign +).
+///   a_2 = -1 / (3 beta_{i+1} (beta_{i+1} + 1))      (printed: with the sign +; = w_{+1} of p_{i+1}).
 template <class FT>
 void right_stencil(const FT& hm, const FT& h0, const FT& hp, FT& a1, FT& a2) {
-  a1 = (FT(1) + h0 / hp - hm / h0) / FT(3);
-  a2 = -(h0 * h0) / (FT(3) * hp * (h0 + hp));
+  const Breakpoint_weights<FT> c = breakpoint_weights(hm, h0), r = breakpoint_weights(h0, hp);
+  a1 = (FT(1) + r.inv_beta - c.inv_beta) / FT(3);
+  a2 = r.wp;
 }
 
 /// The clamped start: b_1^0 = F(t_0, t_0, t_1) for f_1 (through q_0, q_1, q_2 at t_0, t_1, t_2),
@@ -86,7 +102,14 @@ inline double quadratic_curvature(double dx0, double dy0, double h0, double dx1,
   const double s = at == Quadratic_node::FIRST ? -h0 : (at == Quadratic_node::MIDDLE ? h0 : h0 + 2 * h1);
   const double fx = d1x + s * dx, fy = d1y + s * dy;
   if (fx == 0 && fy == 0) return infinite_curvature;
-  const double k = std::fabs(common::signed_curvature(fx, fy, 2 * dx, 2 * dy));
+  // Fast path: with |f'|^2 and |f''| well inside the double range the naive formula neither
+  // overflows nor underflows; otherwise the scaled evaluation of signed_curvature.
+  const double u2 = fx * fx + fy * fy, v = std::fabs(dx) + std::fabs(dy);
+  double k;
+  if (u2 > 1e-150 && u2 < 1e150 && v < 1e150 && v > 1e-150)
+    k = std::fabs(2 * (fx * dy - fy * dx)) / (u2 * std::sqrt(u2));
+  else
+    k = std::fabs(common::signed_curvature(fx, fy, 2 * dx, 2 * dy));
   return std::isfinite(k) && k < infinite_curvature ? k : infinite_curvature;
 }
 
