@@ -245,6 +245,29 @@ TYPED_TEST(Csr, ThreeSamplesGiveTheInterpolatingQuadratic) {
   }
 }
 
+// Given parameters are the knots: passing back the parameters a spacing produced gives the same
+// spline (exactly in an exact kernel; in double up to the rounding of t_{j+1} - t_j), open and
+// closed (where the last parameter closes the curve).
+TYPED_TEST(Csr, GivenParametersAreTheKnots) {
+  typedef TypeParam K;
+  typedef typename K::Point_2 P;
+  std::mt19937 rng(17);
+  const std::vector<P> q = random_points<K>(rng, 11);
+  for (bool closed : {false, true}) {
+    for (fair::Knot_spacing k : {fair::Knot_spacing::UNIFORM, fair::Knot_spacing::CHORDAL}) {
+      fair::Csr_spline_options o;
+      o.knot_spacing = k;
+      const fair::Csr_spline_2<K> a(q, closed, o), b(q, a.parameters(), closed);
+      EXPECT_FALSE(a.has_given_parameters());
+      EXPECT_TRUE(b.has_given_parameters());
+      ASSERT_EQ(a.parameters().size(), q.size() + (closed ? 1 : 0));
+      ASSERT_EQ(b.spline().control_points().size(), a.spline().control_points().size());
+      for (std::size_t i = 0; i < a.spline().control_points().size(); ++i)
+        EXPECT_TRUE(same<K>(b.spline().control_points()[i], a.spline().control_points()[i], 1e-9)) << i;
+    }
+  }
+}
+
 // The open curve starts at q_0 and ends at q_n, for every knot spacing.
 TYPED_TEST(Csr, OpenCurveIsClampedToTheEndSamples) {
   typedef TypeParam K;

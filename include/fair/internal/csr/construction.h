@@ -32,6 +32,7 @@
 #include <fair/internal/common/input_checks.h>
 #include <fair/internal/csr/stencils.h>
 
+#include <CGAL/Lazy_exact_nt.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -51,6 +52,19 @@ struct Construction {
   std::vector<double> curvatures;  ///< kappa_i, one per sample
   double epsilon = 0;              ///< the absolute epsilon used (relative epsilon / extent)
 };
+
+/// x in double, the same value however x was computed: CGAL::to_double of a lazy exact number
+/// (EPECK) returns its current interval approximation, which depends on the expression that
+/// produced it (t_{j+1} - t_j is not as tight as the double it came from), so the curvature
+/// weights would depend on how the knots were given. The exact value's double does not.
+template <class NT>
+double stable_double(const NT& x) {
+  return CGAL::to_double(x);
+}
+template <class ET>
+double stable_double(const CGAL::Lazy_exact_nt<ET>& x) {
+  return CGAL::to_double(x.exact());
+}
 
 /// Throws Invalid_input_error unless `t` has `expected` entries, all finite and strictly increasing.
 template <class FT>
@@ -95,9 +109,9 @@ Construction<K> construct(const std::vector<typename K::Point_2>& q, const std::
   const std::size_t m = h.size();  // pieces: n - 1 open, n closed
 
   // The extent for epsilon.
-  double xmin = CGAL::to_double(q[0].x()), xmax = xmin, ymin = CGAL::to_double(q[0].y()), ymax = ymin;
+  double xmin = stable_double(q[0].x()), xmax = xmin, ymin = stable_double(q[0].y()), ymax = ymin;
   for (const Point_2& p : q) {
-    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
+    const double x = stable_double(p.x()), y = stable_double(p.y());
     xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y), ymax = std::max(ymax, y);
   }
   const double extent = std::hypot(xmax - xmin, ymax - ymin);
@@ -120,9 +134,9 @@ Construction<K> construct(const std::vector<typename K::Point_2>& q, const std::
   kappa.resize(n);
   auto curvature = [&](std::size_t j, Quadratic_node at) {  // the quadratic through q_j, q_{j+1}, q_{j+2}
     const std::size_t j1 = wrap(j, 1, n), j2 = wrap(j, 2, n);
-    return quadratic_curvature(CGAL::to_double(q[j1].x() - q[j].x()), CGAL::to_double(q[j1].y() - q[j].y()),
-                               CGAL::to_double(h[j]), CGAL::to_double(q[j2].x() - q[j1].x()),
-                               CGAL::to_double(q[j2].y() - q[j1].y()), CGAL::to_double(h[wrap(j, 1, m)]), at);
+    return quadratic_curvature(stable_double(q[j1].x() - q[j].x()), stable_double(q[j1].y() - q[j].y()),
+                               stable_double(h[j]), stable_double(q[j2].x() - q[j1].x()),
+                               stable_double(q[j2].y() - q[j1].y()), stable_double(h[wrap(j, 1, m)]), at);
   };
   if (closed) {
     for (std::size_t i = 0; i < m; ++i) kappa[i] = curvature(wrap(i, -1, m), Quadratic_node::MIDDLE);
