@@ -117,9 +117,6 @@ Construction<K> construct(const std::vector<typename K::Point_2>& q, const std::
   const double extent = std::hypot(xmax - xmin, ymax - ymin);
   out.epsilon = (extent > 0 && std::isfinite(extent)) ? relative_epsilon / extent : 0.0;
 
-  // kappa_i = |curvature of f_i at q_i| (open ends: of the one-sided quadratic), from the chords
-  // and intervals in double (differences in FT first: exact in an exact kernel). No arrays of
-  // chords: memory traffic, not arithmetic, bounds this pass for large n.
   // Index i + k (|k| <= 2 < size) modulo `size`, without an integer division (this runs ~10
   // times per sample).
   auto wrap = [](std::size_t i, int k, std::size_t size) {
@@ -130,13 +127,18 @@ Construction<K> construct(const std::vector<typename K::Point_2>& q, const std::
     const std::size_t j = i + static_cast<std::size_t>(k);
     return j >= size ? j - size : j;
   };
+  // kappa_i = |curvature of f_i at q_i| (open ends: of the one-sided quadratic), from the samples
+  // and intervals in double (stable_double: the same doubles however the knots were computed;
+  // the coordinates are the inputs, so in EPECK this costs no exact evaluation, the intervals one
+  // each). No arrays of chords: memory traffic, not arithmetic, bounds this pass for large n.
   std::vector<double>& kappa = out.curvatures;
   kappa.resize(n);
   auto curvature = [&](std::size_t j, Quadratic_node at) {  // the quadratic through q_j, q_{j+1}, q_{j+2}
     const std::size_t j1 = wrap(j, 1, n), j2 = wrap(j, 2, n);
-    return quadratic_curvature(stable_double(q[j1].x() - q[j].x()), stable_double(q[j1].y() - q[j].y()),
-                               stable_double(h[j]), stable_double(q[j2].x() - q[j1].x()),
-                               stable_double(q[j2].y() - q[j1].y()), stable_double(h[wrap(j, 1, m)]), at);
+    const double x0 = stable_double(q[j].x()), y0 = stable_double(q[j].y()), x1 = stable_double(q[j1].x()),
+                 y1 = stable_double(q[j1].y()), x2 = stable_double(q[j2].x()), y2 = stable_double(q[j2].y());
+    return quadratic_curvature(x1 - x0, y1 - y0, stable_double(h[j]), x2 - x1, y2 - y1, stable_double(h[wrap(j, 1, m)]),
+                               at);
   };
   if (closed) {
     for (std::size_t i = 0; i < m; ++i) kappa[i] = curvature(wrap(i, -1, m), Quadratic_node::MIDDLE);
