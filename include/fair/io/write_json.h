@@ -11,6 +11,7 @@
 #ifndef FAIR_IO_WRITE_JSON_H
 #define FAIR_IO_WRITE_JSON_H
 
+#include <fair/Cubic_spline_2.h>
 #include <fair/Curve_traits.h>
 #include <fair/Errors.h>
 
@@ -168,6 +169,38 @@ nlohmann::json curve_to_json(const PieceRange& pieces,
                             it.key(), "\" would overwrite a member of the curve");
     out[it.key()] = it.value();
   }
+  return out;
+}
+
+/// The "bspline" member of the curve format: {"degree": 3, "closed": ..., "knots": [...],
+/// "control_points": [[x, y], ...], "weights": [...]} — the NURBS form of the spline
+/// (Cubic_spline_2::knot_vector() and its control points: clamped when open, the unclamped
+/// periodic form when closed, so that #knots = #control points + 4 either way), plus
+/// "breakpoints" (t_0 .. t_m). Exact kernels write "p/q" strings for non-double values.
+template <class K>
+nlohmann::json spline_to_json(const Cubic_spline_2<K>& spline) {
+  nlohmann::json knots = nlohmann::json::array(), breakpoints = nlohmann::json::array(),
+                 control = nlohmann::json::array(), weights = nlohmann::json::array();
+  for (const auto& u : spline.knot_vector()) knots.push_back(number_to_json(u, "knot"));
+  for (const auto& t : spline.breakpoints()) breakpoints.push_back(number_to_json(t, "breakpoint"));
+  const auto points = spline.knot_vector_control_points();
+  for (std::size_t i = 0; i < points.size(); ++i)
+    control.push_back(point_to_json(points[i], fair::internal::message("spline control point ", i)));
+  for (const auto& w : spline.knot_vector_weights()) weights.push_back(number_to_json(w, "spline weight"));
+  return nlohmann::json{{"degree", 3},           {"closed", spline.is_closed()}, {"knots", std::move(knots)},
+                        {"control_points", std::move(control)}, {"weights", std::move(weights)},
+                        {"breakpoints", std::move(breakpoints)}};
+}
+
+/// The curve format (curve_to_json) of the spline's pieces plus its "bspline" member
+/// (spline_to_json) and the members of `extra`.
+template <class K>
+nlohmann::json spline_curve_to_json(const Cubic_spline_2<K>& spline,
+                                    const nlohmann::json& extra = nlohmann::json::object()) {
+  nlohmann::json out = curve_to_json(spline.pieces(), extra);
+  fair::internal::require(!out.contains("bspline"), "fair::io::spline_curve_to_json: extra member \"bspline\" would ",
+                          "overwrite the spline");
+  out["bspline"] = spline_to_json(spline);
   return out;
 }
 

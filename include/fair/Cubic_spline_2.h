@@ -1,0 +1,354 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// fair::Cubic_spline_2<Kernel>: the one spline representation of the library — a planar
+// non-uniform cubic C2 B-spline with single breakpoints t_0 < t_1 < ... < t_m, open (clamped) or
+// closed (periodic), polynomial or rational (homogeneous control points (w d, w), w > 0).
+// It is the form CAD consumes (a NURBS curve of degree 3) and the form the methods of
+// Karciauskas & Peters [KP13] produce; its pieces are the library's Bezier pieces, so sampling,
+// metrics and SVG output work on it unchanged.
+//
+// Control points (the paper's c_i is the control point of breakpoint t_i, eqs. 2, 3):
+//  - open, clamped (knot vector t_0 x4, t_1, ..., t_{m-1}, t_m x4): m + 3 control points
+//    d_0 .. d_{m+2}; d_0 is the start of the curve (b_0^0), d_1 = b_1^0, d_{i+1} = c_i for
+//    0 <= i <= m, d_{m+1} = b_2^{m-1}, d_{m+2} the end of the curve (eq. 10, corrected).
+//  - closed, periodic with period t_m - t_0: m control points, d_i = c_i, whose basis
+//    function is supported on [t_{i-2}, t_{i+2}] (indices and breakpoints periodic).
+// Piece i spans [t_i, t_{i+1}] and is parametrised over [0, 1] by u = (t - t_i) / h_i, h_i =
+// t_{i+1} - t_i; consecutive pieces join with the G2 scalars beta_i = h_i / h_{i-1} of eq. 1.
+// The derivation of eqs. 1-3 and 10 in this form is in doc/cubic_splines.md.
+//
+// Exactness: construction, pieces, evaluation, knot insertion and from_bezier_pieces use
+// +, -, *, / only: exact in an exact kernel (EPECK, Simple_cartesian<Gmpq>), in double each
+// result is a few affine combinations (backward stable, relative error ~1e-15 of the control
+// polygon's extent). curvature() is computed in double. Complexity: O(1) per piece, O(m) for
+// all pieces, O(log m) per evaluation (binary search for the piece), O(m) per knot insertion
+// (the copy; 3 new control points).
+
+#ifndef FAIR_CUBIC_SPLINE_2_H
+#define FAIR_CUBIC_SPLINE_2_H
+
+#include <fair/Bezier_2.h>
+#include <fair/Errors.h>
+#include <fair/Rational_bezier_2.h>
+#include <fair/internal/spline/bspline_form.h>
+#include <fair/internal/spline/checks.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace fair {
+
+template <class K>
+class Cubic_spline_2 {
+public:
+  typedef K Kernel;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 Point_2;
+  typedef typename K::Vector_2 Vector_2;
+  typedef Rational_bezier_2<K> Piece;     ///< pieces(): always (weights 1 when polynomial)
+  typedef Bezier_2<K> Polynomial_piece;   ///< polynomial_pieces(): only when !is_rational()
+  static constexpr std::size_t degree = 3;
+
+  /// The polynomial spline on `breakpoints` (t_0 < ... < t_m, m >= 1 open, m >= 3 closed) with
+  /// `control_points` (m + 3 open, m closed; layout above).
+  /// \throws Precondition_error for too few breakpoints, a non-finite or non-increasing
+  /// breakpoint, a wrong number of control points, or a non-finite coordinate (the message
+  /// names the index and the values).
+  Cubic_spline_2(std::vector<FT> breakpoints, std::vector<Point_2> control_points, bool closed = false)
+    : t_(std::move(breakpoints)), d_(std::move(control_points)), w_(d_.size(), FT(1)), closed_(closed),
+      rational_(false) {
+    validate();
+  }
+
+  /// The rational spline with weights w_i > 0 (homogeneous control points (w_i d_i, w_i)).
+  /// All weights equal make it polynomial (is_rational() is then false).
+  /// \throws Precondition_error as above, or for a weight that is not finite and > 0.
+  Cubic_spline_2(std::vector<FT> breakpoints, std::vector<Point_2> control_points, std::vector<FT> weights,
+                 bool closed = false)
+    : t_(std::move(breakpoints)), d_(std::move(control_points)), w_(std::move(weights)), closed_(closed),
+      rational_(false) {
+    validate();
+  }
+
+  /// The spline whose pieces are `cubic_pieces` (piece i over [t_i, t_{i+1}]), by eq. 3.
+  /// \throws Invalid_input_error if the pieces are not C2 for these breakpoints: the spline
+  /// rebuilt from the control points must reproduce every Bezier point, exactly in an exact
+  /// kernel, in double within internal::spline::c2_relative_tolerance of the polygon's extent.
+  static Cubic_spline_2 from_bezier_pieces(std::vector<FT> breakpoints, const std::vector<Polynomial_piece>& cubic_pieces,
+                                           bool closed = false) {
+    std::vector<std::array<Homogeneous, 4>> b;
+    b.reserve(cubic_pieces.size());
+    for (const Polynomial_piece& p : cubic_pieces) {
+      internal::require(p.degree() == 3, "fair::Cubic_spline_2::from_bezier_pieces: piece ", b.size(), " has degree ",
+                        p.degree(), ", expected 3");
+      b.push_back(homogeneous_of(p.control_points(), std::vector<FT>(4, FT(1))));
+    }
+    return from_homogeneous_bezier(std::move(breakpoints), b, closed, "from_bezier_pieces");
+  }
+
+  /// As from_bezier_pieces, for rational cubic pieces (eq. 3 in homogeneous coordinates). The
+  /// homogeneous end points must agree: the end weight of piece i equals the start weight of
+  /// piece i+1 (scale a piece's weights to make them so).
+  static Cubic_spline_2 from_rational_bezier_pieces(std::vector<FT> breakpoints,
+                                                    const std::vector<Piece>& cubic_pieces, bool closed = false) {
+    std::vector<std::array<Homogeneous, 4>> b;
+    b.reserve(cubic_pieces.size());
+    for (const Piece& p : cubic_pieces) {
+      internal::require(p.degree() == 3, "fair::Cubic_spline_2::from_rational_bezier_pieces: piece ", b.size(),
+                        " has degree ", p.degree(), ", expected 3");
+      b.push_back(homogeneous_of(p.control_points(), p.weights()));
+    }
+    return from_homogeneous_bezier(std::move(breakpoints), b, closed, "from_rational_bezier_pieces");
+  }
+
+  const std::vector<FT>& breakpoints() const { return t_; }
+  const std::vector<Point_2>& control_points() const { return d_; }
+  /// The weights (all 1 for a polynomial spline).
+  const std::vector<FT>& weights() const { return w_; }
+  bool is_rational() const { return rational_; }
+  bool is_closed() const { return closed_; }
+  std::size_t number_of_pieces() const { return t_.size() - 1; }
+  std::size_t number_of_control_points() const { return d_.size(); }
+  /// The parameter interval [t_0, t_m].
+  std::pair<FT, FT> domain() const { return {t_.front(), t_.back()}; }
+
+  /// eq. 1: beta_i = h_i / h_{i-1} (1 <= i < m open; any 0 <= i < m closed, h_{-1} = h_{m-1}).
+  FT beta(std::size_t i) const {
+    internal::require(i < number_of_pieces() && (closed_ || i >= 1), "fair::Cubic_spline_2::beta: index ", i,
+                      " outside ", closed_ ? "[0, " : "[1, ", number_of_pieces(), ")");
+    const Form f = form();
+    return f.interval(static_cast<long>(i)) / f.interval(static_cast<long>(i) - 1);
+  }
+
+  /// Piece i (0 <= i < m) over [t_i, t_{i+1}], as a rational cubic Bezier piece (eq. 2).
+  Piece piece(std::size_t i) const {
+    check_piece_index(i, "piece");
+    return to_piece(form().bezier_points(static_cast<long>(i)));
+  }
+
+  /// All m pieces, computed on call (O(m)).
+  std::vector<Piece> pieces() const {
+    std::vector<Piece> out;
+    out.reserve(number_of_pieces());
+    const Form f = form();
+    for (std::size_t i = 0; i < number_of_pieces(); ++i) out.push_back(to_piece(f.bezier_points(static_cast<long>(i))));
+    return out;
+  }
+
+  /// Piece i as a polynomial cubic Bezier piece. \throws Precondition_error if is_rational().
+  Polynomial_piece polynomial_piece(std::size_t i) const {
+    check_piece_index(i, "polynomial_piece");
+    require_polynomial("polynomial_piece");
+    return to_polynomial_piece(form().bezier_points(static_cast<long>(i)));
+  }
+
+  /// All pieces as polynomial cubic Bezier pieces. \throws Precondition_error if is_rational().
+  std::vector<Polynomial_piece> polynomial_pieces() const {
+    require_polynomial("polynomial_pieces");
+    std::vector<Polynomial_piece> out;
+    out.reserve(number_of_pieces());
+    const Form f = form();
+    for (std::size_t i = 0; i < number_of_pieces(); ++i)
+      out.push_back(to_polynomial_piece(f.bezier_points(static_cast<long>(i))));
+    return out;
+  }
+
+  /// The point at the global parameter t in [t_0, t_m]. \throws Precondition_error outside.
+  Point_2 point(const FT& t) const {
+    const Jet j = jet(t, "point");
+    return Point_2(j[0].x / j[0].w, j[0].y / j[0].w);
+  }
+
+  /// d/dt at t (one-sided from the right at a breakpoint; C2 makes the sides agree).
+  Vector_2 derivative(const FT& t) const {
+    const Jet j = jet(t, "derivative");
+    const FT& W = j[0].w;
+    const FT cx = j[0].x / W, cy = j[0].y / W;
+    return Vector_2((j[1].x - cx * j[1].w) / W, (j[1].y - cy * j[1].w) / W);
+  }
+
+  /// d^2/dt^2 at t: c'' = (X'' - 2 W' c' - W'' c) / W.
+  Vector_2 second_derivative(const FT& t) const {
+    const Jet j = jet(t, "second_derivative");
+    const FT& W = j[0].w;
+    const FT cx = j[0].x / W, cy = j[0].y / W;
+    const FT dx = (j[1].x - cx * j[1].w) / W, dy = (j[1].y - cy * j[1].w) / W;
+    const FT two(2);
+    return Vector_2((j[2].x - two * j[1].w * dx - j[2].w * cx) / W, (j[2].y - two * j[1].w * dy - j[2].w * cy) / W);
+  }
+
+  /// The signed curvature at t, in double. \throws Precondition_error where the tangent vanishes.
+  double curvature(double t) const {
+    const std::size_t i = locate(FT(t), "curvature");
+    const double t0 = CGAL::to_double(t_[i]), h = CGAL::to_double(t_[i + 1]) - t0;
+    return piece(i).curvature(std::min(1.0, std::max(0.0, (t - t0) / h)));
+  }
+
+  /// The same curve with the breakpoint s inserted (Boehm), t_j < s < t_{j+1}.
+  /// \throws Precondition_error if s is not strictly inside an interval.
+  Cubic_spline_2 with_knot_inserted(const FT& s) const {
+    internal::require(t_.front() < s && s < t_.back(), "fair::Cubic_spline_2::with_knot_inserted: ",
+                      CGAL::to_double(s), " is not inside (", CGAL::to_double(t_.front()), ", ",
+                      CGAL::to_double(t_.back()), ")");
+    const std::size_t j = static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), s) - t_.begin()) - 1;
+    internal::require(!(t_[j] == s), "fair::Cubic_spline_2::with_knot_inserted: ", CGAL::to_double(s),
+                      " is already breakpoint ", j, " (single knots only)");
+    const std::vector<Homogeneous> h = homogeneous_control();
+    std::vector<Homogeneous> c = internal::spline::insert_knot(t_, h, closed_, static_cast<long>(j), s);
+    std::vector<FT> t = t_;
+    t.insert(t.begin() + static_cast<std::ptrdiff_t>(j) + 1, s);
+    return from_homogeneous_control(std::move(t), c, closed_);
+  }
+
+  /// The same spline with control point i moved to p (the designer's edit): C2 by construction.
+  Cubic_spline_2 with_control_point(std::size_t i, const Point_2& p) const {
+    internal::require(i < d_.size(), "fair::Cubic_spline_2::with_control_point: index ", i, " >= ", d_.size());
+    Cubic_spline_2 out = *this;
+    out.d_[i] = p;
+    out.validate();
+    return out;
+  }
+
+  /// The full knot vector of the NURBS form, size knot_vector_control_points().size() + 4.
+  /// Open: t_0 x4, t_1, ..., t_{m-1}, t_m x4 with control_points(). Closed (unclamped periodic
+  /// form): t_{-3}, ..., t_{m+3} (extended by the period) with the control points
+  /// c_{-1}, c_0, ..., c_{m+1}; a standard B-spline evaluator on [t_0, t_m] gives the curve.
+  std::vector<FT> knot_vector() const {
+    const Form f = form();
+    const long m = f.pieces();
+    std::vector<FT> u;
+    u.reserve(static_cast<std::size_t>(m + 7));
+    for (long k = -3; k <= m + 3; ++k) u.push_back(f.knot(k)); // clamped or periodic extension
+    return u;
+  }
+
+  /// The control points matching knot_vector(): open, control_points(); closed, c_{-1} .. c_{m+1}.
+  std::vector<Point_2> knot_vector_control_points() const { return wrapped(d_); }
+  /// The weights matching knot_vector_control_points().
+  std::vector<FT> knot_vector_weights() const { return wrapped(w_); }
+
+private:
+  typedef internal::spline::Homogeneous_point<FT> Homogeneous;
+  typedef internal::spline::Bspline_form<FT> Form;
+  typedef std::array<Homogeneous, 3> Jet;
+
+  Form form() const { return Form(t_, hc_, closed_); }
+
+  void validate() {
+    internal::spline::check_spline_data<K>(t_, d_, w_, closed_);
+    rational_ = !std::all_of(w_.begin(), w_.end(), [&](const FT& w) { return w == w_.front(); });
+    hc_ = homogeneous_control();
+  }
+
+  std::vector<Homogeneous> homogeneous_control() const {
+    std::vector<Homogeneous> h;
+    h.reserve(d_.size());
+    for (std::size_t i = 0; i < d_.size(); ++i) h.push_back(Homogeneous{w_[i] * d_[i].x(), w_[i] * d_[i].y(), w_[i]});
+    return h;
+  }
+
+  static std::array<Homogeneous, 4> homogeneous_of(const std::vector<Point_2>& p, const std::vector<FT>& w) {
+    std::array<Homogeneous, 4> b;
+    for (std::size_t k = 0; k < 4; ++k) b[k] = Homogeneous{w[k] * p[k].x(), w[k] * p[k].y(), w[k]};
+    return b;
+  }
+
+  static Cubic_spline_2 from_homogeneous_control(std::vector<FT> t, const std::vector<Homogeneous>& c, bool closed) {
+    std::vector<Point_2> d;
+    std::vector<FT> w;
+    d.reserve(c.size());
+    w.reserve(c.size());
+    for (const Homogeneous& h : c) {
+      internal::require(h.w > FT(0), "fair::Cubic_spline_2: a homogeneous control point has weight ",
+                        CGAL::to_double(h.w), " <= 0");
+      d.push_back(Point_2(h.x / h.w, h.y / h.w));
+      w.push_back(h.w);
+    }
+    return Cubic_spline_2(std::move(t), std::move(d), std::move(w), closed);
+  }
+
+  static Cubic_spline_2 from_homogeneous_bezier(std::vector<FT> t, const std::vector<std::array<Homogeneous, 4>>& b,
+                                                bool closed, const char* fn) {
+    internal::spline::check_breakpoints(t, closed, fn);
+    internal::require(b.size() + 1 == t.size(), "fair::Cubic_spline_2::", fn, ": ", b.size(), " pieces for ", t.size(),
+                      " breakpoints (expected ", t.size() - 1, ")");
+    const std::vector<Homogeneous> c = internal::spline::control_from_bezier(t, b, closed);
+    for (std::size_t i = 0; i < c.size(); ++i)
+      if (!(c[i].w > FT(0)))
+        throw Invalid_input_error(internal::message("fair::Cubic_spline_2::", fn, ": control point ", i, " has weight ",
+                                                    CGAL::to_double(c[i].w), " <= 0"));
+    Cubic_spline_2 s = from_homogeneous_control(std::move(t), c, closed);
+    internal::spline::check_reproduces<K>(s.form(), b, fn);
+    return s;
+  }
+
+  template <class T>
+  std::vector<T> wrapped(const std::vector<T>& v) const {
+    if (!closed_) return v;
+    const std::size_t m = v.size();
+    std::vector<T> out;
+    out.reserve(m + 3);
+    out.push_back(v[m - 1]);
+    out.insert(out.end(), v.begin(), v.end());
+    out.push_back(v[0]);
+    out.push_back(v[1 % m]);
+    return out;
+  }
+
+  Piece to_piece(const std::array<Homogeneous, 4>& b) const {
+    std::vector<Point_2> p;
+    std::vector<FT> w;
+    for (const Homogeneous& h : b) {
+      p.push_back(Point_2(h.x / h.w, h.y / h.w));
+      w.push_back(h.w);
+    }
+    return Piece(std::move(p), std::move(w));
+  }
+
+  Polynomial_piece to_polynomial_piece(const std::array<Homogeneous, 4>& b) const {
+    std::vector<Point_2> p;
+    for (const Homogeneous& h : b) p.push_back(Point_2(h.x / h.w, h.y / h.w));
+    return Polynomial_piece(std::move(p));
+  }
+
+  void check_piece_index(std::size_t i, const char* fn) const {
+    internal::require(i < number_of_pieces(), "fair::Cubic_spline_2::", fn, ": index ", i, " >= ", number_of_pieces());
+  }
+
+  void require_polynomial(const char* fn) const {
+    internal::require(!rational_, "fair::Cubic_spline_2::", fn, ": the spline is rational; use pieces()");
+  }
+
+  std::size_t locate(const FT& t, const char* fn) const {
+    internal::require(!(t < t_.front()) && !(t_.back() < t), "fair::Cubic_spline_2::", fn, ": parameter ",
+                      CGAL::to_double(t), " outside [", CGAL::to_double(t_.front()), ", ", CGAL::to_double(t_.back()),
+                      "]");
+    const std::size_t i = static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin());
+    return std::min(i == 0 ? 0 : i - 1, number_of_pieces() - 1);
+  }
+
+  // Value and first two derivatives d/dt in homogeneous coordinates.
+  Jet jet(const FT& t, const char* fn) const {
+    const std::size_t i = locate(t, fn);
+    const FT h = t_[i + 1] - t_[i];
+    Jet j = internal::spline::homogeneous_jet(form().bezier_points(static_cast<long>(i)), (t - t_[i]) / h);
+    const FT h2 = h * h;
+    j[1] = Homogeneous{j[1].x / h, j[1].y / h, j[1].w / h};
+    j[2] = Homogeneous{j[2].x / h2, j[2].y / h2, j[2].w / h2};
+    return j;
+  }
+
+  std::vector<FT> t_;
+  std::vector<Point_2> d_;
+  std::vector<FT> w_;
+  std::vector<Homogeneous> hc_; // (w d, w), kept in step with d_ and w_
+  bool closed_ = false;
+  bool rational_ = false;
+};
+
+} // namespace fair
+
+#endif // FAIR_CUBIC_SPLINE_2_H

@@ -1,0 +1,207 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// The non-uniform cubic C2 B-spline with single breakpoints t_0 < ... < t_m, open (clamped) or
+// closed (periodic), in homogeneous coordinates (w d, w): its Bezier pieces (Karciauskas & Peters
+// eq. 2), the control points from C2 Bezier pieces (eq. 3) and Boehm knot insertion.
+//
+// Indexing. The paper's c_i is the control point of breakpoint t_i: its basis function is
+// supported on [t_{i-2}, t_{i+2}]. Closed: i is periodic (mod m) and the breakpoints extend
+// periodically, t_{i+m} = t_i + (t_m - t_0). Open (clamped, the knot vector t_0 x4, t_1, ...,
+// t_{m-1}, t_m x4): i runs over -1..m+1, the breakpoints extend by repetition (t_k = t_0 for
+// k < 0, t_k = t_m for k > m), so h_{-1} = h_m = 0, and then c_{-1} = b_0^0, c_0 = b_1^0,
+// c_m = b_2^{m-1}, c_{m+1} = b_3^{m-1} follow from the same formulas (eq. 10 of the paper, with
+// its end points named c_{-1}, c_0 as corrected in doc/cubic_splines.md). One set of formulas
+// thus serves both kinds of spline.
+//
+// With h_i = t_{i+1} - t_i and S_i = h_{i-1} + h_i + h_{i+1}, piece i over [t_i, t_{i+1}] has
+//   b_1^i = ((h_i + h_{i+1}) c_i + h_{i-1} c_{i+1}) / S_i                 (eq. 2, e_i = h_{i-1}/S_i)
+//   b_2^i = (h_{i+1} c_i + (h_{i-1} + h_i) c_{i+1}) / S_i                 (ẽ_i = h_{i+1}/S_i)
+//   b_0^i = (h_i b_2^{i-1} + h_{i-1} b_1^i) / (h_{i-1} + h_i)              (x_i = h_{i-1}/(h_{i-1}+h_i))
+// which is eq. 2 with beta_i = h_i / h_{i-1} multiplied out, so that it stays defined at a
+// clamped end where h_{-1} = 0 (beta_0 = infinity). Every denominator is >= h_i > 0.
+// Exactness: only +, -, *, / on FT: exact in an exact kernel.
+
+#ifndef FAIR_INTERNAL_SPLINE_BSPLINE_FORM_H
+#define FAIR_INTERNAL_SPLINE_BSPLINE_FORM_H
+
+#include <fair/Errors.h>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace fair {
+namespace internal {
+namespace spline {
+
+/// A point in homogeneous coordinates (w x, w y, w).
+template <class FT>
+struct Homogeneous_point {
+  FT x, y, w;
+};
+
+/// a p + b q.
+template <class FT>
+Homogeneous_point<FT> combine(const FT& a, const Homogeneous_point<FT>& p, const FT& b, const Homogeneous_point<FT>& q) {
+  return Homogeneous_point<FT>{a * p.x + b * q.x, a * p.y + b * q.y, a * p.w + b * q.w};
+}
+
+/// (a p + b q) / s.
+template <class FT>
+Homogeneous_point<FT> combine(const FT& a, const Homogeneous_point<FT>& p, const FT& b, const Homogeneous_point<FT>& q,
+                              const FT& s) {
+  return Homogeneous_point<FT>{(a * p.x + b * q.x) / s, (a * p.y + b * q.y) / s, (a * p.w + b * q.w) / s};
+}
+
+/// The homogeneous control points and breakpoints of a spline, with the index extensions above.
+template <class FT>
+class Bspline_form {
+public:
+  typedef Homogeneous_point<FT> Point;
+
+  /// Open: control has m + 3 entries (d_0..d_{m+2}, d_{i+1} = c_i); closed: m entries.
+  Bspline_form(const std::vector<FT>& breakpoints, const std::vector<Point>& control, bool closed)
+    : t_(breakpoints), c_(control), closed_(closed) {
+    FAIR_ASSERT(t_.size() >= 2);
+    FAIR_ASSERT(static_cast<long>(c_.size()) == (closed_ ? pieces() : pieces() + 3));
+  }
+
+  long pieces() const { return static_cast<long>(t_.size()) - 1; }
+
+  /// t_k for any k (periodic or clamped extension).
+  FT knot(long k) const {
+    const long m = pieces();
+    if (!closed_) return t_[static_cast<std::size_t>(k < 0 ? 0 : (k > m ? m : k))];
+    const long q = floor_div(k, m);
+    const FT period = t_.back() - t_.front();
+    return t_[static_cast<std::size_t>(k - q * m)] + FT(q) * period;
+  }
+
+  FT interval(long i) const { return knot(i + 1) - knot(i); }
+
+  /// c_i (open: -1 <= i <= m+1; closed: any i).
+  const Point& control(long i) const {
+    if (closed_) {
+      const long m = pieces();
+      return c_[static_cast<std::size_t>(i - floor_div(i, m) * m)];
+    }
+    FAIR_ASSERT(i >= -1 && i <= pieces() + 1);
+    return c_[static_cast<std::size_t>(i + 1)];
+  }
+
+  /// b_1^i and b_2^i (eq. 2).
+  std::array<Point, 2> inner_bezier_points(long i) const {
+    const FT hm = interval(i - 1), h = interval(i), hp = interval(i + 1);
+    const FT s = hm + h + hp;
+    return {combine(h + hp, control(i), hm, control(i + 1), s), combine(hp, control(i), hm + h, control(i + 1), s)};
+  }
+
+  /// The four homogeneous Bezier points of piece i, 0 <= i < m.
+  std::array<Point, 4> bezier_points(long i) const {
+    const std::array<Point, 2> left = inner_bezier_points(i - 1), mid = inner_bezier_points(i),
+                               right = inner_bezier_points(i + 1);
+    const FT hm = interval(i - 1), h = interval(i), hp = interval(i + 1);
+    return {combine(h, left[1], hm, mid[0], hm + h), mid[0], mid[1], combine(hp, mid[1], h, right[0], h + hp)};
+  }
+
+private:
+  static long floor_div(long a, long b) {
+    long q = a / b;
+    if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
+    return q;
+  }
+
+  const std::vector<FT>& t_;
+  const std::vector<Point>& c_;
+  bool closed_;
+};
+
+/// The control points c from the homogeneous Bezier points of C2 pieces (eq. 3):
+/// c_i = ((h_{i-1} + h_i) b_1^i - h_{i-1} b_2^i) / h_i = (1 + 1/beta_i) b_1^i - (1/beta_i) b_2^i,
+/// and for an open spline also the end points c_{-1} = b_0^0, c_{m+1} = b_3^{m-1} and
+/// c_m = b_2^{m-1}. Only b_1^i and b_2^i (and the end points) are read; whether the pieces
+/// are C2 is for the caller to check (rebuild the pieces and compare).
+template <class FT>
+std::vector<Homogeneous_point<FT>> control_from_bezier(const std::vector<FT>& breakpoints,
+                                                       const std::vector<std::array<Homogeneous_point<FT>, 4>>& b,
+                                                       bool closed) {
+  typedef Homogeneous_point<FT> Point;
+  const long m = static_cast<long>(breakpoints.size()) - 1;
+  FAIR_ASSERT(static_cast<long>(b.size()) == m);
+  // The extended knots do not depend on the control points: a Bspline_form over dummies.
+  const std::vector<Point> dummy(static_cast<std::size_t>(closed ? m : m + 3), Point{FT(0), FT(0), FT(1)});
+  const Bspline_form<FT> form(breakpoints, dummy, closed);
+  std::vector<Point> c;
+  c.reserve(dummy.size());
+  if (!closed) c.push_back(b.front()[0]);
+  for (long i = 0; i < m; ++i) {
+    const FT hm = form.interval(i - 1), h = form.interval(i);
+    const std::array<Point, 4>& bi = b[static_cast<std::size_t>(i)];
+    c.push_back(combine(hm + h, bi[1], -hm, bi[2], h));
+  }
+  if (!closed) {
+    c.push_back(b.back()[2]);
+    c.push_back(b.back()[3]);
+  }
+  return c;
+}
+
+/// Boehm's insertion of the knot s, t_j < s < t_{j+1}: the new control points (same layout).
+/// q_i = alpha_i c_i + (1 - alpha_i) c_{i-1}, alpha_i = (s - t_{i-2}) / (t_{i+1} - t_{i-2}) for
+/// i = j, j+1, j+2 replace c_j, c_{j+1} and are followed by the old c_{j+2}, c_{j+3}, ...
+/// (the basis function of c_i has the knots t_{i-2} .. t_{i+2}).
+template <class FT>
+std::vector<Homogeneous_point<FT>> insert_knot(const std::vector<FT>& breakpoints,
+                                               const std::vector<Homogeneous_point<FT>>& control, bool closed, long j,
+                                               const FT& s) {
+  typedef Homogeneous_point<FT> Point;
+  const Bspline_form<FT> form(breakpoints, control, closed);
+  const long m = form.pieces();
+  std::array<Point, 3> q;
+  for (long r = 0; r < 3; ++r) {
+    const long i = j + r;
+    const FT lo = form.knot(i - 2), hi = form.knot(i + 1);
+    const FT alpha = (s - lo) / (hi - lo);
+    q[static_cast<std::size_t>(r)] = combine(alpha, form.control(i), FT(1) - alpha, form.control(i - 1));
+  }
+  std::vector<Point> out;
+  if (closed) {
+    const long n = m + 1; // new number of control points; new c'_k for k in [j, j+2] (mod n) is q
+    out.resize(static_cast<std::size_t>(n));
+    for (long k = 0; k < n; ++k) {
+      const long r = ((k - j) % n + n) % n;
+      out[static_cast<std::size_t>(k)] = r <= 2 ? q[static_cast<std::size_t>(r)] : form.control(j + r - 1);
+    }
+  } else {
+    out.reserve(control.size() + 1);
+    for (long k = -1; k <= m + 2; ++k) {
+      if (k < j) out.push_back(form.control(k));
+      else if (k <= j + 2) out.push_back(q[static_cast<std::size_t>(k - j)]);
+      else out.push_back(form.control(k - 1));
+    }
+  }
+  return out;
+}
+
+/// De Casteljau in homogeneous coordinates: the value and the first two derivatives (d/du) of
+/// the homogeneous cubic with Bezier points b at u.
+template <class FT>
+std::array<Homogeneous_point<FT>, 3> homogeneous_jet(const std::array<Homogeneous_point<FT>, 4>& b, const FT& u) {
+  typedef Homogeneous_point<FT> Point;
+  const FT v = FT(1) - u;
+  const Point a0 = combine(v, b[0], u, b[1]), a1 = combine(v, b[1], u, b[2]), a2 = combine(v, b[2], u, b[3]);
+  const Point p0 = combine(v, a0, u, a1), p1 = combine(v, a1, u, a2);
+  const Point value = combine(v, p0, u, p1);
+  const FT three(3), six(6);
+  const Point d1 = combine(three, p1, -three, p0);
+  // second derivative: 6 (b0 - 2 b1 + b2) at level 1 of the de Casteljau triangle
+  const Point second{six * (a0.x - FT(2) * a1.x + a2.x), six * (a0.y - FT(2) * a1.y + a2.y),
+                     six * (a0.w - FT(2) * a1.w + a2.w)};
+  return {value, d1, second};
+}
+
+} // namespace spline
+} // namespace internal
+} // namespace fair
+
+#endif // FAIR_INTERNAL_SPLINE_BSPLINE_FORM_H
