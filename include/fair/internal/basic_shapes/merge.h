@@ -190,10 +190,8 @@ Basic_shape_design_2<K> basic_shape_design(const std::vector<Basic_shape_2<K>>& 
   if (closed)
     internal::require(points.size() >= 3, fn, ": a closed design needs at least 3 control points, the shapes give ",
                       points.size());
-  bool polynomial = true;
-  for (const FT& w : weights) polynomial = polynomial && w == FT(1);
-  Cubic_spline_2<K> spline = polynomial ? Cubic_spline_2<K>(std::move(knots), std::move(points), closed)
-                                        : Cubic_spline_2<K>(std::move(knots), std::move(points), std::move(weights), closed);
+  // All weights equal (polynomial shapes only): the constructor makes it a polynomial spline.
+  Cubic_spline_2<K> spline(std::move(knots), std::move(points), std::move(weights), closed);
   Basic_shape_design_2<K> out{std::move(spline), std::move(joins), std::move(spans), 0.0};
   out.merge_distance = options.merge_tolerance * std::sqrt(CGAL::to_double(size2));
   return out;
