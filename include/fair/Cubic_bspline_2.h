@@ -29,12 +29,14 @@
 #define FAIR_CUBIC_BSPLINE_2_H
 
 #include <fair/Bezier_2.h>
+#include <fair/Cubic_spline_2.h>
 #include <fair/Errors.h>
 #include <fair/internal/classic/bspline.h>
 #include <fair/internal/classic/common.h>
 #include <fair/internal/common/input_checks.h>
 
 #include <cstddef>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -74,13 +76,16 @@ public:
       control_.push_back(internal::classic::classic_combine<K>(two, points_[n - 1], minus_one, points_[n - 2], zero,
                                                       points_[0], zero, points_[0]));
     }
-    pieces_ = internal::classic::classic_uniform_bspline_pieces<K>(control_, closed);
-    internal::classic::classic_check_finite_pieces(pieces_, method);
+    spline_ = internal::classic::classic_uniform_spline<K>(control_, closed, method);
+    pieces_ = spline_->polynomial_pieces();
   }
 
   /// The cubic Bezier pieces (piece i spans the knot interval [i, i+1] of the uniform knots,
   /// starting at the knot of p_i; for `trimmed`, at the knot of p_{i+1}).
   const std::vector<Piece>& pieces() const { return pieces_; }
+  /// The result as the library's spline (uniform integer breakpoints; clamped form when open,
+  /// periodic when closed), whose pieces are pieces().
+  const Cubic_spline_2<K>& spline() const { return *spline_; }
   std::size_t number_of_pieces() const { return pieces_.size(); }
   const std::vector<Point_2>& points() const { return points_; }
   /// The control polygon actually used (the data, plus the two phantom points for
@@ -94,6 +99,7 @@ private:
   bool closed_;
   Cubic_bspline_ends ends_;
   std::vector<Point_2> control_;
+  std::optional<Cubic_spline_2<K>> spline_; // set in the constructor's body, after the data checks
   std::vector<Piece> pieces_;
 };
 

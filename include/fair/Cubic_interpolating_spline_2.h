@@ -1,7 +1,9 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // fair::Cubic_interpolating_spline_2<Kernel>: the classic C2 cubic interpolating spline
-// through points p_0..p_n, as a std::vector of cubic fair::Bezier_2 pieces (one per interval).
+// through points p_0..p_n. Its result is a fair::Cubic_spline_2 (spline(): the knots u_i as
+// breakpoints, open or periodic), whose cubic fair::Bezier_2 pieces (one per interval) are
+// pieces().
 // It is the baseline of Fig. 2c and Fig. 18d of Karciauskas & Peters, "Curvature-sensitive
 // splines" (the "classic C^2 cubic spline interpolant" that oscillates where the curvature
 // of the data changes abruptly).
@@ -35,6 +37,7 @@
 #define FAIR_CUBIC_INTERPOLATING_SPLINE_2_H
 
 #include <fair/Bezier_2.h>
+#include <fair/Cubic_spline_2.h>
 #include <fair/Errors.h>
 #include <fair/Knot_spacing.h>
 #include <fair/internal/classic/common.h>
@@ -69,12 +72,8 @@ public:
   explicit Cubic_interpolating_spline_2(std::vector<Point_2> points,
                                         Spline_end_condition end = Spline_end_condition::NATURAL,
                                         Knot_spacing spacing = Knot_spacing::UNIFORM)
-    : points_(std::move(points)), end_(end), spacing_(spacing) {
-    internal::require(end != Spline_end_condition::CLAMPED,
-                      "Cubic_interpolating_spline_2: a clamped spline needs its two end derivatives; "
-                      "use the constructor taking start_derivative and end_derivative");
-    build(Vector_2(FT(0), FT(0)), Vector_2(FT(0), FT(0)));
-  }
+    : points_(std::move(points)), end_(not_clamped(end)), spacing_(spacing),
+      pieces_(build(Vector_2(FT(0), FT(0)), Vector_2(FT(0), FT(0)))), spline_(make_spline()) {}
 
   /// The clamped spline (>= 2 points) with c'(u_0) = start_derivative and c'(u_n) =
   /// end_derivative, derivatives with respect to the knot parameter u of `spacing`.
@@ -82,14 +81,17 @@ public:
   Cubic_interpolating_spline_2(std::vector<Point_2> points, const Vector_2& start_derivative,
                                const Vector_2& end_derivative,
                                Knot_spacing spacing = Knot_spacing::UNIFORM)
-    : points_(std::move(points)), end_(Spline_end_condition::CLAMPED), spacing_(spacing) {
-    check_vector(start_derivative, "start_derivative");
-    check_vector(end_derivative, "end_derivative");
-    build(start_derivative, end_derivative);
-  }
+    : points_(std::move(points)), end_(Spline_end_condition::CLAMPED), spacing_(spacing),
+      pieces_(build(checked(start_derivative, "start_derivative"), checked(end_derivative, "end_derivative"))),
+      spline_(make_spline()) {}
 
-  /// The cubic Bezier pieces; piece i runs from point i to point i+1 (mod the point count when
-  /// periodic), with local parameter t = (u - u_i) / h_i.
+  /// The spline: breakpoints knots(), clamped (natural, clamped) or periodic; its B-spline
+  /// control points follow from the Hermite pieces by eq. 3 of Karciauskas & Peters. Its pieces
+  /// are pieces(): exactly in an exact kernel, to rounding (~1e-15 relative) in double.
+  const Cubic_spline_2<K>& spline() const { return spline_; }
+  /// The cubic Bezier (Hermite) pieces; piece i runs from point i to point i+1 (mod the point
+  /// count when periodic), with local parameter t = (u - u_i) / h_i. Their end points are the
+  /// data points themselves, so the curve interpolates exactly in every kernel.
   const std::vector<Piece>& pieces() const { return pieces_; }
   std::size_t number_of_pieces() const { return pieces_.size(); }
   /// The interpolated points.
@@ -103,14 +105,25 @@ public:
   bool is_closed() const { return end_ == Spline_end_condition::PERIODIC; }
 
 private:
-  static void check_vector(const Vector_2& v, const char* name) {
+  static Spline_end_condition not_clamped(Spline_end_condition end) {
+    internal::require(end != Spline_end_condition::CLAMPED,
+                      "Cubic_interpolating_spline_2: a clamped spline needs its two end derivatives; "
+                      "use the constructor taking start_derivative and end_derivative");
+    return end;
+  }
+
+  static const Vector_2& checked(const Vector_2& v, const char* name) {
     const double x = CGAL::to_double(v.x()), y = CGAL::to_double(v.y());
     if (!std::isfinite(x) || !std::isfinite(y))
       throw Invalid_input_error(internal::message("Cubic_interpolating_spline_2: ", name, " = (", x, ", ", y,
                                                   ") is not finite"));
+    return v;
   }
 
-  void build(const Vector_2& start_derivative, const Vector_2& end_derivative) {
+  Cubic_spline_2<K> make_spline() const { return Cubic_spline_2<K>::from_bezier_pieces(knots_, pieces_, is_closed()); }
+
+  // Sets knots_ and derivatives_ (declared before pieces_) and returns the Hermite pieces.
+  std::vector<Piece> build(const Vector_2& start_derivative, const Vector_2& end_derivative) {
     const char* method = "Cubic_interpolating_spline_2";
     const bool closed = is_closed();
     internal::common::check_interpolation_input(points_, closed ? 3 : 2, closed, method);
@@ -167,7 +180,7 @@ private:
     derivatives_.clear();
     derivatives_.reserve(n);
     for (std::size_t i = 0; i < n; ++i) derivatives_.push_back(Vector_2(mx[i], my[i]));
-    pieces_ = internal::classic::classic_hermite_pieces<K>(p, derivatives_, h, method);
+    return internal::classic::classic_hermite_pieces<K>(p, derivatives_, h, method);
   }
 
   std::vector<Point_2> points_;
@@ -176,6 +189,7 @@ private:
   std::vector<FT> knots_;
   std::vector<Vector_2> derivatives_;
   std::vector<Piece> pieces_;
+  Cubic_spline_2<K> spline_;
 };
 
 } // namespace fair

@@ -28,12 +28,14 @@
 #define FAIR_CUBIC_QUASI_INTERPOLANT_2_H
 
 #include <fair/Bezier_2.h>
+#include <fair/Cubic_spline_2.h>
 #include <fair/Errors.h>
 #include <fair/internal/classic/bspline.h>
 #include <fair/internal/classic/common.h>
 #include <fair/internal/common/input_checks.h>
 
 #include <cstddef>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -82,13 +84,16 @@ public:
       for (std::size_t i = 1; i + 1 < m; ++i)
         control_.push_back(internal::classic::classic_combine<K>(w, data[i - 1], c, data[i], w, data[i + 1], zero, data[i]));
     }
-    pieces_ = internal::classic::classic_uniform_bspline_pieces<K>(control_, closed);
-    internal::classic::classic_check_finite_pieces(pieces_, "Cubic_quasi_interpolant_2");
+    spline_ = internal::classic::classic_uniform_spline<K>(control_, closed, "Cubic_quasi_interpolant_2");
+    pieces_ = spline_->polynomial_pieces();
   }
 
   /// The cubic Bezier pieces; piece i spans the knot interval [i, i+1], from near p_i to near
   /// p_{i+1} (exactly, where the fourth difference vanishes).
   const std::vector<Piece>& pieces() const { return pieces_; }
+  /// The result as the library's spline (uniform integer breakpoints; clamped form when open,
+  /// periodic when closed), whose pieces are pieces().
+  const Cubic_spline_2<K>& spline() const { return *spline_; }
   std::size_t number_of_pieces() const { return pieces_.size(); }
   const std::vector<Point_2>& points() const { return points_; }
   /// The B-spline control points c_i (for an open curve c_{-1}..c_{n+1}, from the extended data).
@@ -99,6 +104,7 @@ private:
   std::vector<Point_2> points_;
   bool closed_;
   std::vector<Point_2> control_;
+  std::optional<Cubic_spline_2<K>> spline_; // set in the constructor's body, after the data checks
   std::vector<Piece> pieces_;
 };
 

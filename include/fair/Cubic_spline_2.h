@@ -86,7 +86,7 @@ public:
                         p.degree(), ", expected 3");
       b.push_back(homogeneous_of(p.control_points(), std::vector<FT>(4, FT(1))));
     }
-    return from_homogeneous_bezier(std::move(breakpoints), b, closed, "from_bezier_pieces");
+    return from_homogeneous_bezier(std::move(breakpoints), b, closed, false, "from_bezier_pieces");
   }
 
   /// As from_bezier_pieces, for rational cubic pieces (eq. 3 in homogeneous coordinates). The
@@ -101,7 +101,7 @@ public:
                         " has degree ", p.degree(), ", expected 3");
       b.push_back(homogeneous_of(p.control_points(), p.weights()));
     }
-    return from_homogeneous_bezier(std::move(breakpoints), b, closed, "from_rational_bezier_pieces");
+    return from_homogeneous_bezier(std::move(breakpoints), b, closed, true, "from_rational_bezier_pieces");
   }
 
   const std::vector<FT>& breakpoints() const { return t_; }
@@ -200,7 +200,7 @@ public:
     std::vector<Homogeneous> c = internal::spline::insert_knot(t_, h, closed_, static_cast<long>(j), s);
     std::vector<FT> t = t_;
     t.insert(t.begin() + static_cast<std::ptrdiff_t>(j) + 1, s);
-    return from_homogeneous_control(std::move(t), c, closed_);
+    return from_homogeneous_control(std::move(t), c, closed_, rational_);
   }
 
   /// The same spline with control point i moved to p (the designer's edit): C2 by construction.
@@ -256,7 +256,16 @@ private:
     return b;
   }
 
-  static Cubic_spline_2 from_homogeneous_control(std::vector<FT> t, const std::vector<Homogeneous>& c, bool closed) {
+  // rational = false: the w of every point is 1 in exact arithmetic (affine combinations of
+  // weights 1), so it is set to 1 rather than divided by (in double it is 1 +- a few ulps).
+  static Cubic_spline_2 from_homogeneous_control(std::vector<FT> t, const std::vector<Homogeneous>& c, bool closed,
+                                                 bool rational = true) {
+    if (!rational) {
+      std::vector<Point_2> d;
+      d.reserve(c.size());
+      for (const Homogeneous& h : c) d.push_back(Point_2(h.x, h.y));
+      return Cubic_spline_2(std::move(t), std::move(d), closed);
+    }
     std::vector<Point_2> d;
     std::vector<FT> w;
     d.reserve(c.size());
@@ -271,7 +280,7 @@ private:
   }
 
   static Cubic_spline_2 from_homogeneous_bezier(std::vector<FT> t, const std::vector<std::array<Homogeneous, 4>>& b,
-                                                bool closed, const char* fn) {
+                                                bool closed, bool rational, const char* fn) {
     internal::spline::check_breakpoints(t, closed, fn);
     internal::require(b.size() + 1 == t.size(), "fair::Cubic_spline_2::", fn, ": ", b.size(), " pieces for ", t.size(),
                       " breakpoints (expected ", t.size() - 1, ")");
@@ -280,7 +289,7 @@ private:
       if (!(c[i].w > FT(0)))
         throw Invalid_input_error(internal::message("fair::Cubic_spline_2::", fn, ": control point ", i, " has weight ",
                                                     CGAL::to_double(c[i].w), " <= 0"));
-    Cubic_spline_2 s = from_homogeneous_control(std::move(t), c, closed);
+    Cubic_spline_2 s = from_homogeneous_control(std::move(t), c, closed, rational);
     internal::spline::check_reproduces<K>(s.form(), b, fn);
     return s;
   }

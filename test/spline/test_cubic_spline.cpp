@@ -7,6 +7,9 @@
 
 #include "test_support.h"
 
+#include <fair/Cubic_bspline_2.h>
+#include <fair/Cubic_interpolating_spline_2.h>
+#include <fair/Cubic_quasi_interpolant_2.h>
 #include <fair/Cubic_spline_2.h>
 #include <fair/io/write_json.h>
 
@@ -293,6 +296,41 @@ TYPED_TEST(Cubic_spline, ControlPointEditKeepsC2) {
   }
   // local support: pieces 0 and 5 do not depend on control point 3 (basis on [t_0, t_4])
   EXPECT_TRUE(same<K>(e.piece(5).control_point(2), s.piece(5).control_point(2)));
+}
+
+// The classic cubic methods produce the library's spline: its pieces are theirs (exactly in an
+// exact kernel), and the interpolating spline passes through the data at its knots.
+template <class K, class Method>
+void expect_spline_is_the_method(const Method& method, double rel) {
+  const auto& s = method.spline();
+  ASSERT_EQ(s.number_of_pieces(), method.number_of_pieces());
+  EXPECT_FALSE(s.is_rational());
+  const auto pieces = s.polynomial_pieces();
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    for (std::size_t k = 0; k < 4; ++k)
+      EXPECT_TRUE(same<K>(pieces[i].control_point(k), method.pieces()[i].control_point(k), rel)) << i << " " << k;
+}
+
+TYPED_TEST(Cubic_spline, ClassicCubicMethodsProduceIt) {
+  typedef TypeParam K;
+  std::mt19937 rng(37);
+  for (int closed = 0; closed < 2; ++closed) {
+    const auto p = fair_test::random_points<K>(rng, 9);
+    const auto end = closed ? fair::Spline_end_condition::PERIODIC : fair::Spline_end_condition::NATURAL;
+    const fair::Cubic_interpolating_spline_2<K> interpolant(p, end, fair::Knot_spacing::CHORDAL);
+    expect_spline_is_the_method<K>(interpolant, 1e-12);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      EXPECT_TRUE(same<K>(interpolant.spline().point(interpolant.knots()[i]), p[i], 1e-12));
+    EXPECT_EQ(interpolant.spline().is_closed(), closed == 1);
+    expect_spline_is_the_method<K>(fair::Cubic_bspline_2<K>(p, closed == 1), 1e-12);
+    expect_spline_is_the_method<K>(fair::Cubic_quasi_interpolant_2<K>(p, closed == 1), 1e-12);
+    if (!closed)
+      expect_spline_is_the_method<K>(fair::Cubic_bspline_2<K>(p, false, fair::Cubic_bspline_ends::TRIMMED), 1e-12);
+  }
+  // closed uniform B-spline: the data are the periodic control points themselves
+  const auto p = fair_test::random_points<K>(rng, 5);
+  const fair::Cubic_bspline_2<K> b(p, true);
+  for (std::size_t i = 0; i < p.size(); ++i) EXPECT_TRUE(same<K>(b.spline().control_points()[i], p[i]));
 }
 
 TEST(Cubic_spline_json, TheBsplineMemberIsTheNurbsForm) {

@@ -7,6 +7,7 @@
 #define FAIR_INTERNAL_CLASSIC_BSPLINE_H
 
 #include <fair/Bezier_2.h>
+#include <fair/Cubic_spline_2.h>
 #include <fair/internal/classic/common.h>
 
 #include <cstddef>
@@ -35,6 +36,23 @@ std::vector<Bezier_2<K>> classic_uniform_bspline_pieces(const std::vector<typena
       pieces.push_back(classic_bspline_segment<K>(d[j], d[j + 1], d[j + 2], d[j + 3]));
   }
   return pieces;
+}
+
+/// The uniform cubic B-spline of d_0..d_{m-1} as a Cubic_spline_2 on the integer breakpoints
+/// 0, 1, ...: closed, d itself is the periodic control polygon (d_j is the control point of
+/// breakpoint j); open, the m - 3 pieces (which start at the knot of d_1, not at d_0) are
+/// re-expressed in the clamped form by eq. 3 (exact). `method` names the caller in errors.
+template <class K>
+Cubic_spline_2<K> classic_uniform_spline(const std::vector<typename K::Point_2>& d, bool closed, const char* method) {
+  typedef typename K::FT FT;
+  const std::size_t pieces = closed ? d.size() : d.size() - 3;
+  std::vector<FT> breakpoints;
+  breakpoints.reserve(pieces + 1);
+  for (std::size_t i = 0; i <= pieces; ++i) breakpoints.push_back(FT(static_cast<int>(i)));
+  const std::vector<Bezier_2<K>> bezier = classic_uniform_bspline_pieces<K>(d, closed);
+  classic_check_finite_pieces(bezier, method);
+  if (closed) return Cubic_spline_2<K>(std::move(breakpoints), d, true);
+  return Cubic_spline_2<K>::from_bezier_pieces(std::move(breakpoints), bezier, false);
 }
 
 } // namespace classic

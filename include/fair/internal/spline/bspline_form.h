@@ -77,7 +77,13 @@ public:
     return t_[static_cast<std::size_t>(k - q * m)] + FT(q) * period;
   }
 
-  FT interval(long i) const { return knot(i + 1) - knot(i); }
+  /// h_i = t_{i+1} - t_i. Closed: from the reduced index, so that h_{i+m} == h_i bit for bit
+  /// and the last piece of a closed spline ends exactly where the first begins.
+  FT interval(long i) const {
+    if (!closed_) return knot(i + 1) - knot(i);
+    const long m = pieces(), r = i - floor_div(i, m) * m;
+    return t_[static_cast<std::size_t>(r + 1)] - t_[static_cast<std::size_t>(r)];
+  }
 
   /// c_i (open: -1 <= i <= m+1; closed: any i).
   const Point& control(long i) const {
