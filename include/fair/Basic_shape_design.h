@@ -22,6 +22,7 @@
 
 #include <fair/Cubic_spline_2.h>
 #include <fair/Errors.h>
+#include <fair/Parametric_curve_spline.h>
 #include <fair/Rational_bezier_2.h>
 #include <fair/Rational_quadratic_bezier_2.h>
 
@@ -107,17 +108,27 @@ public:
   static Basic_shape_2 conic(const Rational_quadratic_bezier_2<K>& arc, const std::vector<FT>& marks = {});
 
   /// The rational Bezier curve of degree <= 3 (elevated to 3), knots at the marks in (0,1). Exact.
-  /// \throws Invalid_input_error for a degree above 3 or bad marks.
+  /// \throws Precondition_error for a degree above 3, Invalid_input_error for bad marks.
   static Basic_shape_2 cubic(const Rational_bezier_2<K>& curve, const std::vector<FT>& marks = {});
 
   /// The circle arc from start_angle to end_angle > start_angle (radians, counter-clockwise,
-  /// opening <= 2 pi), split into sub-arcs of positive weights (circle_arc_split), each a rational
-  /// cubic (circle_arc_cubic); the marked angles (strictly increasing, inside the arc) become
+  /// opening <= 2 pi), split into sub-arcs of at most 180 degrees (circle_arc_split), each a
+  /// rational cubic (circle_arc_cubic); the marked angles (strictly increasing, inside the arc) become
   /// knots through the parameter of eq. 4 (circle_arc_parameter). A mark on a split angle is the
   /// join of two sub-arcs already. Accurate to the double angles (cos/sin in double).
   /// \throws Invalid_input_error for radius <= 0, a zero, negative or > 2 pi opening, bad marks.
   static Basic_shape_2 circle_arc(const Point_2& center, const FT& radius, double start_angle, double end_angle,
                                   const std::vector<double>& mark_angles = {});
+
+  /// A parametric curve f (a ParametricCurve_2 of fair/Parametric_curve_2.h: Archimedean_spiral_2,
+  /// Circle_involute_2, Clothoid_2, ...) from marks.front() to marks.back(), approximated by
+  /// parametric_curve_spline (Sec. 5: breakpoints at the marks, ends included, O(h^4)); the shape
+  /// is that spline, which the design keeps exactly on its interior.
+  /// \throws Invalid_input_error as parametric_curve_spline (fewer than 2 marks, not increasing, ...).
+  template <class Curve>
+  static Basic_shape_2 parametric(const Curve& f, const std::vector<double>& marks, std::string kind = "parametric") {
+    return Basic_shape_2(parametric_curve_spline<K>(f, marks), std::move(kind));
+  }
 
   const std::vector<Spline>& parts() const { return parts_; }
   const std::string& kind() const { return kind_; }

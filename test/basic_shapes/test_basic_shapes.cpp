@@ -6,6 +6,8 @@
 #include "test_support.h"
 
 #include <fair/Basic_shape_design.h>
+#include <fair/Parametric_curve_2.h>
+#include <fair/Spline_convexity.h>
 #include <fair/io/read_design.h>
 
 #include <gtest/gtest.h>
@@ -233,6 +235,15 @@ TYPED_TEST(Shapes, ClosedDesignIsPeriodicAndReproducesTheShapes) {
   }
   expect_reproduced(d, shapes, 1e-12);
   expect_c2(d.spline, 1e-10);
+  // Proposition 1: the joint control polygon is convex, so the curve is locally convex -- decided
+  // exactly in an exact kernel (in double the segment's collinear control points are rounded off
+  // their line, and the verdict is about the rounded points).
+  if (fair_test::is_exact<K>()) {
+    const auto convexity = fair::spline_convexity(d.spline);
+    EXPECT_TRUE(convexity.polygon_convex);
+    EXPECT_TRUE(convexity.curve_locally_convex);
+    EXPECT_EQ(convexity.curve_orientation, CGAL::LEFT_TURN);
+  }
   // Points of the merged curve on the arcs' exact pieces are on the unit circle.
   typedef typename K::FT FT;
   for (std::size_t k = d.spans[0].first_exact; k < d.spans[1].end_exact; ++k) {
@@ -284,7 +295,7 @@ TYPED_TEST(Shapes, BadShapesAndOptionsAreTypedErrors) {
   EXPECT_THROW(S::circle_arc(P(0, 0), typename K::FT(1), 0.0, 7.0), fair::Invalid_input_error);
   EXPECT_THROW(S::circle_arc(P(0, 0), typename K::FT(1), 0.0, 1.0, {0.5, 1.5}), fair::Invalid_input_error);
   const fair::Rational_bezier_2<K> quartic({P(0, 0), P(1, 1), P(2, 0), P(3, 1), P(4, 0)});
-  EXPECT_THROW(S::cubic(quartic), fair::Invalid_input_error);
+  EXPECT_THROW(S::cubic(quartic), fair::Precondition_error);
   const std::vector<S> none;
   EXPECT_THROW(fair::basic_shape_design(none), fair::Precondition_error);
   const std::vector<S> one = {S::segment(P(0, 0), P(1, 0))};
@@ -297,17 +308,17 @@ TYPED_TEST(Shapes, BadShapesAndOptionsAreTypedErrors) {
   EXPECT_TRUE(d.joins.empty());
 }
 
-// Circle arcs from angles: split into quarter circles at most, on the circle to rounding, the
-// marked angles at the knots.
+// Circle arcs from angles: split into sub-arcs of at most 180 degrees (circle_arc_split), on the
+// circle to rounding, the marked angles at the knots.
 TYPED_TEST(Shapes_float, CircleArcIsSplitAndOnTheCircle) {
   typedef TypeParam K;
   typedef typename K::Point_2 P;
   typedef fair::Basic_shape_2<K> S;
   const P c(2, -1);
-  const double r = 3, a0 = 0.25, a1 = a0 + 5 * M_PI / 3;  // 300 degrees: 4 sub-arcs
-  const std::vector<double> m = {0.5, 1.0, 2.0, a0 + M_PI / 2 * 1.25, 4.0, 5.0};
+  const double r = 3, a0 = 0.25, a1 = a0 + 5 * M_PI / 3;  // 300 degrees: 2 sub-arcs of 150
+  const std::vector<double> m = {0.5, 1.0, 2.0, a0 + M_PI / 2 * 1.25, 3.0, 4.0, 5.0};
   const S arc = S::circle_arc(c, r, a0, a1, m);
-  ASSERT_EQ(arc.parts().size(), 4u);
+  ASSERT_EQ(arc.parts().size(), 2u);
   std::size_t knots = 0;
   for (const auto& part : arc.parts()) {
     knots += part.number_of_pieces() - 1;
@@ -332,7 +343,7 @@ TYPED_TEST(Shapes_float, CircleArcIsSplitAndOnTheCircle) {
   // Its sub-arcs are merged as agreeing, inside the shape, even with tolerance 0.
   const std::vector<S> shapes = {arc};
   const auto d = fair::basic_shape_design(shapes, fair::Basic_shape_design_options{false, 0.0});
-  ASSERT_EQ(d.joins.size(), 3u);
+  ASSERT_EQ(d.joins.size(), 1u);
   for (const auto& j : d.joins) {
     EXPECT_TRUE(j.inside);
     EXPECT_EQ(j.kind, fair::Shape_join_kind::AGREE);
@@ -343,9 +354,40 @@ TYPED_TEST(Shapes_float, CircleArcIsSplitAndOnTheCircle) {
   const std::vector<S> circle = {S::circle_arc(c, r, 0.0, 2 * M_PI, {1.0, 2.0, 3.0, 4.0, 5.0, 6.0})};
   const auto dc = fair::basic_shape_design(circle, fair::Basic_shape_design_options{true, 1e-9});
   EXPECT_TRUE(dc.spline.is_closed());
-  EXPECT_EQ(dc.joins.size(), 4u);
+  EXPECT_EQ(dc.joins.size(), 2u);
+  EXPECT_EQ(circle[0].parts().size(), 2u);
+  // A semicircle is one part (its cubic weights are 1, 1/3, 1/3, 1).
+  EXPECT_EQ(S::circle_arc(c, r, 0.0, M_PI).parts().size(), 1u);
   EXPECT_NE(dc.joins.back().kind, fair::Shape_join_kind::EDGE);
   expect_c2(dc.spline, 1e-12);
+}
+
+// A parametric shape (Sec. 5): the spiral's spline is kept exactly on its interior when it is
+// joined to a segment at its end (averaged: the end point is computed in double) and a conic.
+TYPED_TEST(Shapes_float, ParametricShapeIsKeptInside) {
+  typedef TypeParam K;
+  typedef typename K::Point_2 P;
+  typedef fair::Basic_shape_2<K> S;
+  const fair::Archimedean_spiral_2 spiral(0.2, 0.15, 0.5, 2 * M_PI);
+  std::vector<double> marks;
+  for (int k = 0; k <= 12; ++k) marks.push_back(0.5 + (2 * M_PI - 0.5) * k / 12);
+  const S shape = S::parametric(spiral, marks, "spiral");
+  EXPECT_EQ(shape.kind(), "spiral");
+  EXPECT_EQ(shape.parts()[0].number_of_pieces(), 12u);
+  const fair::Curve_jet_2 e = spiral.jet(2 * M_PI);
+  EXPECT_NEAR(shape.target().x(), e.x, 1e-15);
+  EXPECT_NEAR(shape.target().y(), e.y, 1e-15);
+  std::vector<S> shapes = {shape, S::segment(P(e.x, e.y), P(e.x + 0.5, e.y - 1), {0.25, 0.5, 0.75})};
+  const auto d = fair::basic_shape_design(shapes);
+  EXPECT_EQ(d.joins[0].kind, fair::Shape_join_kind::AGREE);
+  expect_reproduced(d, shapes, 1e-14);
+  expect_c2(d.spline, 1e-12);
+  // On its interior the spline is within the O(h^4) error of the spiral (about 1e-4 here).
+  for (std::size_t k = d.spans[0].first_exact; k < d.spans[0].end_exact; ++k) {
+    const double u = marks[k] + 0.5 * (marks[k + 1] - marks[k]);
+    const P p = d.spline.piece(k).point(0.5);
+    EXPECT_LT(std::hypot(p.x() - spiral.jet(u).x, p.y() - spiral.jet(u).y), 1e-3) << k;
+  }
 }
 
 // ------------------------------------------------------------------ the design file
@@ -392,6 +434,27 @@ TYPED_TEST(Shapes, DesignFileReadsEveryShapeExactly) {
   expect_reproduced(d, f.shapes, 1e-12);
 }
 
+TYPED_TEST(Shapes_float, DesignFileReadsParametricShapesAndCubicPointMarks) {
+  typedef TypeParam K;
+  const std::string text = R"({"closed": false, "shapes": [
+      {"type": "spiral", "a": 0.2, "b": 0.15, "theta0": 0.5, "theta1": 6, "marks": [1, 2, 3, 4, 5]},
+      {"type": "involute", "radius": 0.3, "t0": 0.5, "t1": 2, "center": [3, 0], "marks": [1, 1.5]},
+      {"type": "clothoid", "kappa0": 0, "c": 1, "s0": 0, "s1": 1.5, "origin": [4, 1], "theta0": 1, "marks": [0.5, 1]},
+      {"type": "cubic", "control_points": [[5, 2], [6, 3], [7, 1], [8, 2]], "marks": [0.25, [6.5, 2], 0.75]}]})";
+  const auto f = parse<K>(text);
+  ASSERT_EQ(f.shapes.size(), 4u);
+  EXPECT_EQ(f.types[2], "clothoid");
+  EXPECT_EQ(f.shapes[0].parts()[0].number_of_pieces(), 6u);
+  EXPECT_EQ(f.shapes[1].parts()[0].number_of_pieces(), 3u);
+  EXPECT_EQ(f.marked_points[0].size(), 5u);
+  // (6.5, 2) is the polynomial cubic's point at u = 1/2: eq. 5 finds it.
+  EXPECT_NEAR(CGAL::to_double(f.shapes[3].parts()[0].breakpoints()[2]), 0.5, 1e-12);
+  const auto d = fair::basic_shape_design(f.shapes, f.options());
+  EXPECT_EQ(d.joins.size(), 3u);
+  for (const auto& j : d.joins) EXPECT_EQ(j.kind, fair::Shape_join_kind::EDGE);
+  expect_c2(d.spline, 1e-12);
+}
+
 // Each error of the design file: a Parse_error naming the file, the line and the JSON path.
 TYPED_TEST(Shapes_float, DesignFileErrorsNameFileLineAndPath) {
   typedef TypeParam K;
@@ -414,7 +477,7 @@ TYPED_TEST(Shapes_float, DesignFileErrorsNameFileLineAndPath) {
       {R"({"type": "segment", "from": [0, 0], "to": [1, 0], "marks": [1.5]})", "shapes[1].marks[0]: the mark's parameter 1.5"},
       {R"({"type": "segment", "from": [0, 0], "to": [1, 0], "marks": [[0.5, 0.1]]})", "shapes[1].marks[0]: the marked point (0.5, 0.1"},
       {R"({"type": "conic", "control_points": [[1, 0], [1, 1], [0, 1]], "weight": 0.7, "marks": [[0.5, 0.5]]})",
-       "is off its conic"},
+       "shapes[1].marks[0]: conic_parameter: the point (0.5, 0.5) is at distance"},
       {R"({"type": "conic", "control_points": [[1, 0], [1, 1], [0, 1]], "weight": -1})", "shapes[1].weight: the weight -1 must be > 0"},
       {R"({"type": "cubic", "control_points": [[0, 0], [1, 1], [2, 1], [3, 0]], "weights": [1, 0, 1, 1]})",
        "shapes[1].weights[1]: the weight 0 must be > 0"},
@@ -434,6 +497,16 @@ TYPED_TEST(Shapes_float, DesignFileErrorsNameFileLineAndPath) {
     }
   }
   EXPECT_THROW(parse<K>("[1, 2]"), fair::Parse_error);
+  // The parametric built-ins: their own checks (a cusp inside the involute's domain) and marks.
+  const std::string involute = R"({"shapes": [{"type": "involute", "radius": 1, "t0": -1, "t1": 2}]})";
+  EXPECT_THROW(parse<K>(involute), fair::Parse_error);
+  const std::string spiral = R"({"shapes": [{"type": "spiral", "a": 0, "b": 1, "theta0": 1, "theta1": 2, "marks": [1.5, 2.5]}]})";
+  try {
+    parse<K>(spiral);
+    ADD_FAILURE();
+  } catch (const fair::Parse_error& e) {
+    EXPECT_NE(std::string(e.what()).find("shapes[0].marks[1]: the mark 2.5 is not inside"), std::string::npos) << e.what();
+  }
   EXPECT_THROW(parse<K>("{\"shapes\": []}"), fair::Parse_error);
   EXPECT_THROW(parse<K>("{\"closed\": 1, \"shapes\": [{\"type\": \"segment\", \"from\": [0, 0], \"to\": [1, 0]}]}"),
                fair::Parse_error);

@@ -11,6 +11,7 @@
 #include <fair/Basic_shape_design.h>
 #include <fair/Errors.h>
 #include <fair/internal/basic_shapes/marked_points.h>
+#include <fair/Parametric_curve_2.h>
 #include <fair/io/parsing.h>
 
 #include <CGAL/number_utils.h>
@@ -218,19 +219,69 @@ public:
         for (std::size_t k = 0; k < 4; ++k) w[k] = positive(wv->items[k], item(path + ".weights", k), "weight");
       }
       const Rational_bezier_2<K> cubic(p, w);
-      const std::vector<FT> marks = parameter_marks(s, path, [&](const Point_2&) -> FT {
-        throw Invalid_input_error("marks on a cubic are parameters u in (0, 1), not points");
-      });
+      const std::vector<FT> marks = parameter_marks(s, path, [&](const Point_2& q) { return cubic_parameter<K>(cubic, q, tol); });
       for (const FT& u : marks) marked.push_back(cubic.point(u));
       out.shapes.push_back(Basic_shape_2<K>::cubic(cubic, marks));
+    } else if (t == "spiral") {
+      const double a = real(member(s, path, "a"), path + ".a"), b = real(member(s, path, "b"), path + ".b");
+      const double t0 = real(member(s, path, "theta0"), path + ".theta0"), t1 = real(member(s, path, "theta1"), path + ".theta1");
+      const Xy c = optional_xy(s, path, "center", Xy{0, 0});
+      parametric(s, path, Archimedean_spiral_2(a, b, t0, t1, c.x, c.y), t0, t1, "spiral", out, marked);
+    } else if (t == "involute") {
+      const double r = real(member(s, path, "radius"), path + ".radius");
+      const double t0 = real(member(s, path, "t0"), path + ".t0"), t1 = real(member(s, path, "t1"), path + ".t1");
+      const Xy c = optional_xy(s, path, "center", Xy{0, 0});
+      parametric(s, path, Circle_involute_2(r, t0, t1, c.x, c.y), t0, t1, "involute", out, marked);
+    } else if (t == "clothoid") {
+      const double k0 = real(member(s, path, "kappa0"), path + ".kappa0"), c = real(member(s, path, "c"), path + ".c");
+      const double s0 = real(member(s, path, "s0"), path + ".s0"), s1 = real(member(s, path, "s1"), path + ".s1");
+      const double scale = s.find("scale") ? real(*s.find("scale"), path + ".scale") : 1.0;
+      const double th0 = s.find("theta0") ? real(*s.find("theta0"), path + ".theta0") : 0.0;
+      const Xy o = optional_xy(s, path, "origin", Xy{0, 0});
+      parametric(s, path, Clothoid_2(k0, c, s0, s1, scale, o.x, o.y, th0), s0, s1, "clothoid", out, marked);
     } else {
       fail(s, path + ".type", "unknown shape type \"" + t +
-                                  "\" (known: segment, arc, conic, cubic)");
+                                  "\" (known: segment, arc, conic, cubic, spiral, involute, clothoid)");
     }
     out.marked_points.push_back(std::move(marked));
   }
 
 private:
+  struct Xy {
+    double x, y;
+  };
+
+  Xy optional_xy(const Json_value& s, const std::string& path, const char* key, Xy fallback) const {
+    const Json_value* v = s.find(key);
+    if (!v) return fallback;
+    const std::string p = path + "." + key;
+    array(*v, p, 2);
+    return Xy{real(v->items[0], p + "[0]"), real(v->items[1], p + "[1]")};
+  }
+
+  /// A parametric built-in on [u0, u1] with its interior marks (numbers in (u0, u1), increasing).
+  template <class Curve>
+  void parametric(const Json_value& s, const std::string& path, const Curve& f, double u0, double u1, const char* kind,
+                  Design_file<K>& out, std::vector<Point_2>& marked) const {
+    std::vector<double> marks = {u0};
+    if (const Json_value* m = s.find("marks")) {
+      array(*m, path + ".marks");
+      for (std::size_t k = 0; k < m->items.size(); ++k) {
+        const std::string p = item(path + ".marks", k);
+        const double u = real(m->items[k], p);
+        if (!(u > u0 && u < u1))
+          fail(m->items[k], p, fair::internal::message("the mark ", u, " is not inside the curve's domain (", u0, ", ", u1, ")"));
+        if (!(marks.back() < u))
+          fail(m->items[k], p, fair::internal::message("marks must be strictly increasing: ", u, " follows ", marks.back()));
+        marks.push_back(u);
+        const Curve_jet_2 j = f.jet(u);
+        marked.push_back(Point_2(FT(j.x), FT(j.y)));
+      }
+    }
+    marks.push_back(u1);
+    out.shapes.push_back(Basic_shape_2<K>::parametric(f, marks, kind));
+  }
+
   std::string file_;
 };
 
