@@ -10,7 +10,10 @@
 #include "tool_common.h"
 
 #include <fair/Cubic_spline_2.h>
+#include <fair/Spline_convexity.h>
 #include <fair/io/svg.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <sstream>
 #include <string>
@@ -27,6 +30,21 @@ fair::Cubic_spline_2<Kernel> to_double_spline(const fair::Cubic_spline_2<K>& s) 
   for (const auto& x : s.weights()) w.push_back(CGAL::to_double(x));
   for (const auto& x : s.control_points()) p.push_back(Point_2(CGAL::to_double(x.x()), CGAL::to_double(x.y())));
   return fair::Cubic_spline_2<Kernel>(t, p, w, s.is_closed());
+}
+
+/// Proposition 1 (fair::spline_convexity) certified for the spline's own data: its breakpoints,
+/// control points and weights taken exactly into EPECK, so that rounding in the pieces of a double
+/// spline cannot decide the verdict (the double kernel's predicates are not exact).
+template <class K>
+fair::Spline_convexity_report<CGAL::Exact_predicates_exact_constructions_kernel> certified_convexity(
+    const fair::Cubic_spline_2<K>& s) {
+  typedef CGAL::Exact_predicates_exact_constructions_kernel E;
+  std::vector<E::FT> t, w;
+  std::vector<E::Point_2> p;
+  for (const auto& x : s.breakpoints()) t.push_back(E::FT(x));
+  for (const auto& x : s.weights()) w.push_back(E::FT(x));
+  for (const auto& x : s.control_points()) p.push_back(E::Point_2(E::FT(x.x()), E::FT(x.y())));
+  return fair::spline_convexity(fair::Cubic_spline_2<E>(t, p, w, s.is_closed()));
 }
 
 /// The curve figure (title, spline control polygon, comb, curve, marks) and the curvature plot.

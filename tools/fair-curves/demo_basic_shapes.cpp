@@ -11,6 +11,8 @@
 
 #include <fair/Basic_shape_design.h>
 #include <fair/Fairness_metrics.h>
+#include <fair/Parametric_curve_2.h>
+#include <fair/Spline_convexity.h>
 
 #include <algorithm>
 #include <cmath>
@@ -85,13 +87,19 @@ void add_design_case(fair_curves::Gallery& gallery, const std::string& title, co
                     {std::string("inflections") + (inflections.certified ? " (certified)" : " (sampled)"),
                      std::to_string(inflections.count())},
                     {"arc length", fair_curves::format_number(f.sampled.length(), 10)}};
+  // Proposition 1, certified for the drawn spline's data (exact copy, basic_shapes_figures.h).
+  const auto c = fair_curves::certified_convexity(spline);
+  g.measurements.emplace_back("Proposition 1: polygon convex / curve locally convex",
+                              std::string(c.polygon_convex ? "yes" : "no") + " / " +
+                                  (c.curve_locally_convex ? "yes" : "no"));
   gallery.add_case(std::move(g));
 }
 
 void add_design(fair_curves::Gallery& gallery, const std::string& title, const std::string& caption,
-                const std::vector<Shape>& shapes, bool closed = false) {
+                const std::vector<Shape>& shapes, bool closed = false, double merge_tolerance = 1e-9) {
   fair::Basic_shape_design_options o;
   o.closed = closed;
+  o.merge_tolerance = merge_tolerance;
   const auto d = fair::basic_shape_design(shapes, o);
   add_design_case(gallery, title, caption, shapes, d.spline, d);
 }
@@ -117,8 +125,7 @@ void add_basic_shape_cases(fair_curves::Gallery& gallery) {
     add_design(gallery, "Fig. 10: semi-circle and semi-ellipse",
                "The upper unit semi-circle (11 marks; the one at 90 degrees is the join of its two quarter sub-arcs) and "
                "the lower half of an ellipse with semi-axes 1 and 1.2, 0.4 below (two quarter conics, 5 marks each), "
-               "closed: the ends are apart, so each join is an edge of the control polygon, collinear with the "
-               "tangents; the polygon is convex, so is the curve.",
+               "closed: the ends are apart, so each join is an edge of the control polygon, along the tangents.",
                s, true);
     // The designer's variant: the four join points pulled outwards; C2 is kept by construction.
     const auto d = fair::basic_shape_design(s, fair::Basic_shape_design_options{true, 1e-9});
@@ -159,8 +166,8 @@ void add_basic_shape_cases(fair_curves::Gallery& gallery) {
     add_design(gallery, ellipse ? "Fig. 12d: circle and ellipse" : "Fig. 12a: circle and hyperbola",
                std::string("Three quarters of the unit circle (17 marks) and, for the fourth quarter, ") +
                    (ellipse ? "an elliptic arc (w = 1/2)" : "a hyperbolic arc (w = 1.6)") +
-                   " with unequally spaced marks. The joint control polygon is convex, so the curve is locally "
-                   "convex (Proposition 1): no inflection.",
+                   " with unequally spaced marks. Proposition 1: a convex joint control polygon gives a locally convex "
+                   "curve.",
                s, true);
   }
   // Fig. 14's profile: a quarter circle touching a line segment.
@@ -172,6 +179,45 @@ void add_basic_shape_cases(fair_curves::Gallery& gallery) {
                "A line segment touching a quarter circle (curvature 0 to 1): the points agree up to rounding "
                "and are averaged. The curvature rises through the transition instead of jumping.",
                s);
+  }
+  // Figs. 5-7 and 1: an Archimedean spiral (Sec. 5: parametric_curve_spline through 13 marks)
+  // joined to an involute, a circle, a line and a polynomial cubic.
+  const double a = 0.05, b = 0.1, t0 = pi, t1 = 4 * pi, r1 = a + b * t1;  // the spiral ends at (r1, 0)
+  const fair::Archimedean_spiral_2 spiral(a, b, t0, t1);
+  std::vector<double> spiral_marks;
+  for (int k = 0; k <= 12; ++k) spiral_marks.push_back(t0 + (t1 - t0) * k / 12);
+  const Shape spiral_shape = Shape::parametric(spiral, spiral_marks, "spiral");
+  {
+    const double R = 0.12, u0 = 0.6, u1 = 3.0;
+    const Point_2 start(r1 + 0.08, 0.15);  // the involute starts here: apart from the spiral's end
+    const double cx = start.x() - R * (std::cos(u0) + u0 * std::sin(u0)), cy = start.y() - R * (std::sin(u0) - u0 * std::cos(u0));
+    const fair::Circle_involute_2 involute(R, u0, u1, cx, cy);
+    std::vector<double> m;
+    for (int k = 0; k <= 8; ++k) m.push_back(u0 + (u1 - u0) * k / 8);
+    add_design(gallery, "Fig. 5: spiral and circle involute",
+               "An Archimedean spiral r = 0.05 + 0.1 theta (theta from pi to 4 pi, 13 marks) and the involute of a "
+               "circle of radius 0.12 (9 marks), both by Sec. 5's spline of their 2-jets; their ends are apart, so "
+               "an edge joins them.",
+               {spiral_shape, Shape::parametric(involute, m, "involute")});
+  }
+  {
+    const double c = 0.4, r = r1 - c + 2e-4;  // the circle starts 2e-4 from the spiral's end
+    add_design(gallery, "Fig. 6: spiral and circle",
+               "The spiral joined to a half circle whose start is 2e-4 from the spiral's end: with merge "
+               "tolerance 1e-3 the two end points are averaged into one control point.",
+               {spiral_shape, Shape::circle_arc(Point_2(c, 0), r, 0, pi, even(0, pi, 9))}, false, 1e-3);
+  }
+  add_design(gallery, "Fig. 7: spiral and line segment",
+             "The spiral and a line segment starting near its end (an edge joins them); the segment is kept "
+             "straight away from the join.",
+             {spiral_shape, Shape::segment(Point_2(r1 + 0.1, 0.25), Point_2(r1 + 0.25, 2.0), {0.2, 0.4, 0.6, 0.8})});
+  {
+    const fair::Rational_bezier_2<Kernel> cubic(
+        {Point_2(r1 + 0.1, 0.2), Point_2(r1 + 0.3, 1.2), Point_2(0.6, 2.1), Point_2(-0.6, 1.7)});
+    add_design(gallery, "Fig. 1: spiral and polynomial cubic",
+               "The unifying spline of Fig. 1: the spiral's spline and a polynomial cubic (5 marks) that the merged "
+               "spline replicates exactly away from the join.",
+               {spiral_shape, Shape::cubic(cubic, {1.0 / 6, 2.0 / 6, 3.0 / 6, 4.0 / 6, 5.0 / 6})});
   }
 }
 FAIR_CURVES_DEMO(64, add_basic_shape_cases)

@@ -3,14 +3,16 @@
 // fair-curves shapes: design with basic shapes (Karciauskas-Peters Sec. 6, Fig. 9). Reads a
 // design file (doc/basic_shapes.md), merges the shapes into one C2 cubic spline and writes the
 // join report, the spline as the library's curve JSON with its "bspline" member, and an SVG of
-// the curve, its control polygon, the marked points and the curvature plot. --exact computes in
-// EPECK and writes exact rationals as "p/q" strings.
+// the curve, its control polygon, the marked points and the curvature plot, with the
+// Proposition 1 report (fair::spline_convexity: convex polygon, locally convex curve). --exact
+// computes in EPECK and writes exact rationals as "p/q" strings.
 
 #include "basic_shapes_figures.h"
 #include "registry.h"
 #include "tool_common.h"
 
 #include <fair/Basic_shape_design.h>
+#include <fair/Spline_convexity.h>
 #include <fair/io/read_design.h>
 #include <fair/io/svg.h>
 #include <fair/io/write_json.h>
@@ -28,6 +30,37 @@ struct Shapes_options {
   std::string input, json_out, svg_out;
   bool exact = false;
 };
+
+const char* orientation_name(CGAL::Orientation o) {
+  return o == CGAL::LEFT_TURN ? "left" : (o == CGAL::RIGHT_TURN ? "right" : "collinear");
+}
+
+// Proposition 1 (fair::spline_convexity): the polygon's convexity and the curve's local convexity.
+template <class E>
+nlohmann::json convexity_json(const fair::Spline_convexity_report<E>& c) {
+  nlohmann::json j{{"polygon_convex", c.polygon_convex},
+                   {"polygon_orientation", orientation_name(c.polygon_orientation)},
+                   {"curve_locally_convex", c.curve_locally_convex},
+                   {"curve_orientation", orientation_name(c.curve_orientation)},
+                   {"inflected_pieces", c.inflected_pieces},
+                   {"pieces_by_filter", c.pieces_by_filter},
+                   {"pieces_exact", c.pieces_exact},
+                   {"proposition_holds", c.proposition_holds()}};
+  if (c.polygon_violation != c.npos) j["polygon_violation"] = c.polygon_violation;
+  return j;
+}
+
+template <class E>
+std::string convexity_text(const fair::Spline_convexity_report<E>& c) {
+  std::ostringstream out;
+  out << "Proposition 1: control polygon " << (c.polygon_convex ? "convex" : "not convex");
+  if (c.polygon_violation != c.npos) out << " (first violation at control point " << c.polygon_violation << ")";
+  out << ", curve " << (c.curve_locally_convex ? "locally convex" : "not locally convex");
+  if (!c.inflected_pieces.empty()) out << " (" << c.inflected_pieces.size() << " inflected pieces)";
+  out << "; certified by the interval filter on " << c.pieces_by_filter << " pieces, exactly on " << c.pieces_exact
+      << "\n";
+  return out.str();
+}
 
 template <class K>
 nlohmann::json report_json(const fair::io::Design_file<K>& f, const fair::Basic_shape_design_2<K>& d, bool exact) {
@@ -83,10 +116,14 @@ void run(const Shapes_options& o) {
   using namespace fair_curves;
   const fair::io::Design_file<K> f = fair::io::read_design<K>(o.input);
   const fair::Basic_shape_design_2<K> d = fair::basic_shape_design(f.shapes, f.options());
+  // Certified for the written spline's data also without --exact (an exact copy of the doubles).
+  const auto convexity = certified_convexity(d.spline);
   std::string json_text, svg_text;
   if (!o.json_out.empty()) {
     std::ostringstream out;
-    fair::io::write_json(out, fair::io::spline_curve_to_json(d.spline, report_json(f, d, o.exact)));
+    nlohmann::json extra = report_json(f, d, o.exact);
+    extra["convexity"] = convexity_json(convexity);
+    fair::io::write_json(out, fair::io::spline_curve_to_json(d.spline, extra));
     json_text = out.str();
   }
   if (!o.svg_out.empty()) {
@@ -98,7 +135,7 @@ void run(const Shapes_options& o) {
                                                      " basic shapes, C2 cubic spline");
     svg_text = stack_svg(figures.curve_svg, figures.curvature_svg);
   }
-  write_outputs(report_text(f, d, o.exact), o.json_out, json_text, {{o.svg_out, svg_text}});
+  write_outputs(report_text(f, d, o.exact) + convexity_text(convexity), o.json_out, json_text, {{o.svg_out, svg_text}});
 }
 
 } // namespace
@@ -107,7 +144,8 @@ void register_shapes_command(CLI::App& app) {
   auto options = std::make_shared<Shapes_options>();
   CLI::App* sub = app.add_subcommand(
       "shapes", "Design with basic shapes (Karciauskas-Peters Sec. 6): the shapes of a design file (segments, "
-                "circle arcs, conics, rational cubics with marked points) merged into one C2 cubic spline");
+                "circle arcs, conics, rational cubics, spirals, involutes, clothoids with marked points) merged into one "
+                "C2 cubic spline, with the Proposition 1 convexity report");
   sub->add_option("design", options->input, "the design file (JSON, see doc/basic_shapes.md)")->required();
   sub->add_flag("--exact", options->exact, "compute in EPECK and write exact rationals as \"p/q\" strings");
   sub->add_option("-o,--output", options->json_out,

@@ -122,7 +122,8 @@ public:
         const Point_2 q = point(v, p);
         try {
           u = locate(q);
-        } catch (const Invalid_input_error& e) {
+        } catch (const Error& e) {
+          // Off the curve, or no point of the arc at all (the conic's P1): at this mark.
           fail(v, p, e.what());
         }
       } else {
