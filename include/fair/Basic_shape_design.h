@@ -90,7 +90,7 @@ public:
   typedef typename K::Point_2 Point_2;
   typedef Cubic_spline_2<K> Spline;
 
-  /// Any open clamped spline as a shape (e.g. B's parametric_curve_spline or C's exact_spline).
+  /// Any open clamped spline as a shape (e.g. from parametric_curve_spline or exact_spline).
   /// \throws Precondition_error if `part` is closed.
   explicit Basic_shape_2(Spline part, std::string kind = "spline");
   /// Several parts joined end to start (their joins are always merged).

@@ -14,6 +14,8 @@
 #include <fair/Parametric_curve_2.h>
 #include <fair/Spline_convexity.h>
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -25,6 +27,7 @@ using fair_curves::Kernel;
 using fair_curves::Point_2;
 typedef fair::Basic_shape_2<Kernel> Shape;
 typedef fair::Rational_quadratic_bezier_2<Kernel> Conic;
+typedef CGAL::Exact_predicates_exact_constructions_kernel EPECK;
 
 const double pi = std::acos(-1.0);
 
@@ -56,9 +59,21 @@ void marked_points(const Shape& s, std::vector<fair::io::Xy>& out) {
     }
 }
 
+// Fig. 12's design (three quarters of the unit circle and a conic quarter) in any kernel.
+template <class K>
+std::vector<fair::Basic_shape_2<K>> fig12_shapes(bool ellipse) {
+  typedef typename K::Point_2 P;
+  std::vector<fair::Basic_shape_2<K>> s;
+  s.push_back(fair::Basic_shape_2<K>::circle_arc(P(0, 0), typename K::FT(1), 0, 1.5 * pi, even(0, 1.5 * pi, 17)));
+  const fair::Rational_quadratic_bezier_2<K> q(P(0, -1), P(ellipse ? 0.9 : 0.6, ellipse ? -0.9 : -0.6), P(1, 0),
+                                               typename K::FT(ellipse ? 0.5 : 1.6));
+  s.push_back(fair::Basic_shape_2<K>::conic(q, {0.2, 0.4, 0.5, 0.6, 0.8}));
+  return s;
+}
+
 void add_design_case(fair_curves::Gallery& gallery, const std::string& title, const std::string& caption,
                      const std::vector<Shape>& shapes, const fair::Cubic_spline_2<Kernel>& spline,
-                     const fair::Basic_shape_design_2<Kernel>& design) {
+                     const fair::Basic_shape_design_2<Kernel>& design, const fair::Cubic_spline_2<EPECK>* exact_design = nullptr) {
   std::vector<fair::io::Xy> marks;
   for (const Shape& s : shapes) marked_points(s, marks);
   const fair_curves::Curve_figures f = fair_curves::design_figures(spline, marks, title);
@@ -87,9 +102,12 @@ void add_design_case(fair_curves::Gallery& gallery, const std::string& title, co
                     {std::string("inflections") + (inflections.certified ? " (certified)" : " (sampled)"),
                      std::to_string(inflections.count())},
                     {"arc length", fair_curves::format_number(f.sampled.length(), 10)}};
-  // Proposition 1, certified for the drawn spline's data (exact copy, basic_shapes_figures.h).
-  const auto c = fair_curves::certified_convexity(spline);
-  g.measurements.emplace_back("Proposition 1: polygon convex / curve locally convex",
+  // Proposition 1, certified for the drawn spline's data (exact copy, basic_shapes_figures.h), or
+  // for the design computed in EPECK when given (in double, rounding turns collinear control points
+  // and nearly straight Bezier polygons by an ulp either way).
+  const auto c = exact_design ? fair::spline_convexity(*exact_design) : fair_curves::certified_convexity(spline);
+  g.measurements.emplace_back(std::string("Proposition 1: polygon convex / curve locally convex") +
+                                  (exact_design ? " (design in EPECK)" : ""),
                               std::string(c.polygon_convex ? "yes" : "no") + " / " +
                                   (c.curve_locally_convex ? "yes" : "no"));
   gallery.add_case(std::move(g));
@@ -158,17 +176,16 @@ void add_basic_shape_cases(fair_curves::Gallery& gallery) {
   }
   // Fig. 12: a circle with one quarter replaced by a hyperbola, and by an ellipse.
   for (int ellipse = 0; ellipse < 2; ++ellipse) {
-    std::vector<Shape> s;
-    s.push_back(Shape::circle_arc(o, 1, 0, 1.5 * pi, even(0, 1.5 * pi, 17)));
-    const Conic q(Point_2(0, -1), Point_2(ellipse ? 0.9 : 0.6, ellipse ? -0.9 : -0.6), Point_2(1, 0),
-                  ellipse ? 0.5 : 1.6);
-    s.push_back(Shape::conic(q, {0.2, 0.4, 0.5, 0.6, 0.8}));
-    add_design(gallery, ellipse ? "Fig. 12d: circle and ellipse" : "Fig. 12a: circle and hyperbola",
-               std::string("Three quarters of the unit circle (17 marks) and, for the fourth quarter, ") +
-                   (ellipse ? "an elliptic arc (w = 1/2)" : "a hyperbolic arc (w = 1.6)") +
-                   " with unequally spaced marks. Proposition 1: a convex joint control polygon gives a locally convex "
-                   "curve.",
-               s, true);
+    const std::vector<Shape> s = fig12_shapes<Kernel>(ellipse);
+    const fair::Basic_shape_design_options closed{true, 1e-9};
+    const auto d = fair::basic_shape_design(s, closed);
+    const auto exact = fair::basic_shape_design(fig12_shapes<EPECK>(ellipse), closed);
+    add_design_case(gallery, ellipse ? "Fig. 12d: circle and ellipse" : "Fig. 12a: circle and hyperbola",
+                    std::string("Three quarters of the unit circle (17 marks) and, for the fourth quarter, ") +
+                        (ellipse ? "an elliptic arc (w = 1/2)" : "a hyperbolic arc (w = 1.6)") +
+                        " with unequally spaced marks. Proposition 1, decided on the same design computed in EPECK: "
+                        "the joint control polygon is convex, so the curve is locally convex.",
+                    s, d.spline, d, &exact.spline);
   }
   // Fig. 14's profile: a quarter circle touching a line segment.
   {
