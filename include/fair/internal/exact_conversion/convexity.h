@@ -26,6 +26,8 @@
 #include <CGAL/Interval_nt.h>
 #include <CGAL/enum.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -120,6 +122,7 @@ enum class Piece_decision { FILTER, EXACT, UNDECIDED };
 struct Piece_sign {
   int sign = 0;              // +1 / -1: curvature >= 0 / <= 0 on the piece (zeros allowed); 0: straight
   bool inflection = false;   // the curvature changes sign inside (0,1) (exact certificate)
+  bool singular = false;     // c' = 0 somewhere on [0,1] (exact certificate): sign means nothing
   Piece_decision decision = Piece_decision::UNDECIDED;
 };
 
@@ -135,17 +138,89 @@ CGAL::Interval_nt<false> interval_of(const FT& x) { return common::to_interval_n
 template <class FT>
 CGAL::Gmpq gmpq_of(const FT& x) { return common::to_gmpq(x, "spline_convexity"); }
 
-/// (b) The sign of the curvature of one piece on [0,1].
+/// The numerators (A_x, A_y) of the hodograph c' = (X'W - XW', Y'W - YW')/W^2 (polynomial: X', Y').
+/// W > 0, so c'(t) = 0 iff A_x(t) = A_y(t) = 0.
+template <class NT>
+void hodograph_numerators(const Bernstein_polynomial<NT>& X, const Bernstein_polynomial<NT>& Y,
+                          const Bernstein_polynomial<NT>& W, bool polynomial, Bernstein_polynomial<NT>& Ax,
+                          Bernstein_polynomial<NT>& Ay) {
+  if (polynomial) {
+    Ax = X.derivative();
+    Ay = Y.derivative();
+    return;
+  }
+  const Bernstein_polynomial<NT> W1 = W.derivative();
+  Ax = X.derivative() * W - X * W1;
+  Ay = Y.derivative() * W - Y * W1;
+}
+
+/// Regularity filter: the hodograph's Bernstein coefficients a_0..a_k (interval enclosures) have a
+/// direction d with d.a_i >= 0 for all i and d.a_0 > 0, d.a_k > 0, all certain. Then
+/// d.c'(t) = sum B_i(t) d.a_i / W^2 > 0 on [0,1] (at t = 0, 1 only a_0, a_k count; inside, every
+/// B_i > 0), so c' != 0. d is the middle of the smallest arc holding the coefficients' (double)
+/// directions when that arc is shorter than a half turn; d is a double vector, exact in the
+/// interval arithmetic, so the test is certified whatever rounding chose it.
+inline bool certainly_regular(const Bernstein_polynomial<CGAL::Interval_nt<false>>& Ax,
+                              const Bernstein_polynomial<CGAL::Interval_nt<false>>& Ay) {
+  typedef CGAL::Interval_nt<false> I;
+  const std::vector<I>& ax = Ax.coefficients();
+  const std::vector<I>& ay = Ay.coefficients();
+  if (ax.size() != ay.size() || ax.empty()) return false;
+  std::vector<double> angle;
+  for (std::size_t i = 0; i < ax.size(); ++i) {
+    const double x = 0.5 * (ax[i].inf() + ax[i].sup()), y = 0.5 * (ay[i].inf() + ay[i].sup());
+    if (!std::isfinite(x) || !std::isfinite(y)) return false;
+    if (x != 0 || y != 0) angle.push_back(std::atan2(y, x));
+  }
+  if (angle.empty()) return false;
+  std::sort(angle.begin(), angle.end());
+  const double pi = 3.14159265358979323846;
+  // The largest gap between circularly consecutive directions; the arc holding them all is its complement.
+  std::size_t at = angle.size() - 1;
+  double gap = angle.front() + 2 * pi - angle.back();
+  for (std::size_t i = 0; i + 1 < angle.size(); ++i)
+    if (angle[i + 1] - angle[i] > gap) { gap = angle[i + 1] - angle[i]; at = i; }
+  if (gap <= pi) return false;
+  const double first = angle[(at + 1) % angle.size()];
+  const double mid = first + (2 * pi - gap) / 2;
+  const I dx(std::cos(mid)), dy(std::sin(mid));
+  for (std::size_t i = 0; i < ax.size(); ++i) {
+    const I dot = dx * ax[i] + dy * ay[i];
+    const bool end = i == 0 || i + 1 == ax.size();
+    if (end ? !(dot.inf() > 0) : !(dot.inf() >= 0)) return false;
+  }
+  return true;
+}
+
+/// Exact regularity: c' = 0 at t iff S = A_x^2 + A_y^2 (>= 0) vanishes at t, so the piece is
+/// singular iff S is zero or has a root in [0,1] (certified root isolation; the roots of S are
+/// common roots of A_x and A_y, of even multiplicity, handled by its square-free factorisation).
+/// This includes the ends: at t = 0, A = n w_0 w_1 (b_1 - b_0), so a join with b_1 = b_0 is singular.
+inline bool exactly_singular(const Bernstein_polynomial<CGAL::Gmpq>& Ax, const Bernstein_polynomial<CGAL::Gmpq>& Ay) {
+  const Bernstein_polynomial<CGAL::Gmpq> S = Ax * Ax + Ay * Ay;
+  if (S.is_zero()) return true;
+  bool positive = true;
+  for (const CGAL::Gmpq& c : S.coefficients()) positive = positive && c > 0;
+  if (positive) return false;
+  return Bernstein_root_isolation(S).number_of_roots() > 0;
+}
+
+/// (b) The sign of the curvature of one piece on [0,1], and whether the piece is regular.
 template <class K>
 Piece_sign piece_sign(const Rational_bezier_2<K>& c, bool polynomial, bool exact_fallback) {
   typedef typename K::FT FT;
   Piece_sign out;
+  bool regular = false;
   {
     CGAL::Protect_FPU_rounding<true> guard;
     typedef CGAL::Interval_nt<false> I;
-    const Bernstein_polynomial<I> D = curvature_numerator(converted<I, FT>(c.homogeneous_x(), &interval_of<FT>),
-                                                          converted<I, FT>(c.homogeneous_y(), &interval_of<FT>),
-                                                          converted<I, FT>(c.homogeneous_w(), &interval_of<FT>), polynomial);
+    const Bernstein_polynomial<I> X = converted<I, FT>(c.homogeneous_x(), &interval_of<FT>),
+                                  Y = converted<I, FT>(c.homogeneous_y(), &interval_of<FT>),
+                                  W = converted<I, FT>(c.homogeneous_w(), &interval_of<FT>);
+    Bernstein_polynomial<I> Ax, Ay;
+    hodograph_numerators(X, Y, W, polynomial, Ax, Ay);
+    regular = certainly_regular(Ax, Ay);
+    const Bernstein_polynomial<I> D = curvature_numerator(X, Y, W, polynomial);
     int lo = 1, hi = -1;
     bool certain = true;
     for (const I& x : D.coefficients()) {
@@ -156,7 +231,7 @@ Piece_sign piece_sign(const Rational_bezier_2<K>& c, bool polynomial, bool exact
       lo = std::min(lo, v);
       hi = std::max(hi, v);
     }
-    if (certain && !(lo < 0 && hi > 0)) {
+    if (regular && certain && !(lo < 0 && hi > 0)) {
       out.sign = hi > 0 ? 1 : (lo < 0 ? -1 : 0);
       out.decision = Piece_decision::FILTER;
       return out;
@@ -164,9 +239,18 @@ Piece_sign piece_sign(const Rational_bezier_2<K>& c, bool polynomial, bool exact
   }
   if (!exact_fallback) return out;
   out.decision = Piece_decision::EXACT;
-  const Bernstein_polynomial<CGAL::Gmpq> D = curvature_numerator(converted<CGAL::Gmpq, FT>(c.homogeneous_x(), &gmpq_of<FT>),
-                                                                  converted<CGAL::Gmpq, FT>(c.homogeneous_y(), &gmpq_of<FT>),
-                                                                  converted<CGAL::Gmpq, FT>(c.homogeneous_w(), &gmpq_of<FT>), polynomial);
+  const Bernstein_polynomial<CGAL::Gmpq> X = converted<CGAL::Gmpq, FT>(c.homogeneous_x(), &gmpq_of<FT>),
+                                         Y = converted<CGAL::Gmpq, FT>(c.homogeneous_y(), &gmpq_of<FT>),
+                                         W = converted<CGAL::Gmpq, FT>(c.homogeneous_w(), &gmpq_of<FT>);
+  if (!regular) {
+    Bernstein_polynomial<CGAL::Gmpq> Ax, Ay;
+    hodograph_numerators(X, Y, W, polynomial, Ax, Ay);
+    if (exactly_singular(Ax, Ay)) {
+      out.singular = true;
+      return out;
+    }
+  }
+  const Bernstein_polynomial<CGAL::Gmpq> D = curvature_numerator(X, Y, W, polynomial);
   if (D.is_zero()) return out; // straight piece
   if (sign_variations(D) == 0) {
     for (const CGAL::Gmpq& x : D.coefficients())
