@@ -4,9 +4,11 @@
 // spline_convexity(s) reports (a) whether the control polygon of a Cubic_spline_2 is convex
 // (exact predicates of the kernel: exact in EPICK and EPECK and Simple_cartesian<Gmpq>; in
 // Simple_cartesian<double> the predicates are floating point and NOT certified) and (b) whether
-// the curve is regular (c' != 0, exact) and locally convex, from the sign of the curvature numerator of every Bezier piece
-// in Bernstein form, interval filter first and exact (Gmpq) root isolation as fallback --
-// certified in EVERY kernel for the pieces' exact FT coefficients (doc/exact_conversion.md).
+// the curve is regular (c' != 0, exact) and locally convex, from the sign of the curvature
+// numerator of every Bezier piece in Bernstein form, interval filter first and exact (Gmpq) root
+// isolation as fallback -- certified in every kernel for the pieces' FT coefficients as stored (in
+// a double kernel: the rounded Bezier points and products w x, w y of the pieces, not the spline's
+// control points and weights themselves; doc/exact_conversion.md).
 // Prop. 1: a convex polygon (with positive weights and increasing knots) gives a locally
 // convex curve; the converse fails (a locally convex curve can have a non-convex polygon).
 // O(number of pieces).

@@ -3,14 +3,23 @@
 // The two tests of Proposition 1 (Karciauskas-Peters Sec. 6):
 //  (a) convexity of a control polygon with exact predicates (Kernel::Orientation_2,
 //      Compare_x_2, Collinear_are_strictly_ordered_along_line_2);
-//  (b) the sign of the curvature numerator of a rational Bezier piece c = (X, Y)/W,
-//        det(c', c'') = det[[X, Y, W], [X', Y', W'], [X'', Y'', W'']] / W^3,
-//      a Bernstein polynomial of degree 3n (n = 3: degree 9 written as products of degree
-//      3 + 2 + 1 = 6; we keep the product degree 6) -- for a polynomial piece (W = 1) it is
-//      x'y'' - y'x'' of degree 2n - 3 = 3. Since W > 0 its sign is the sign of the curvature.
-//      Decided by an interval filter (CGAL::Interval_nt on the coefficients: certainly no sign
-//      variation => the sign is certain), then exactly (Gmpq coefficients: no variation, or
-//      certified root isolation: a root of odd multiplicity inside (0,1) is an inflection).
+//  (b) regularity and the sign of the curvature numerator of a rational Bezier piece
+//      c = (X, Y)/W of degree n,
+//        det(c', c'') = det[[X, Y, W], [X', Y', W'], [X'', Y'', W'']] / W^3.
+//      The determinant is computed as products of Bernstein polynomials of degrees n, n-1, n-2:
+//      product degree 3n - 3 (6 for a cubic); its true degree is 3n - 6 (3 for a cubic, a
+//      constant for a conic: the leading terms cancel). For a polynomial piece (W = 1) it is
+//      x'y'' - y'x'' of product degree 2n - 3 and true degree 2n - 4 (2 for a cubic). Since
+//      W > 0 its sign is the sign of the curvature -- but only where c' != 0, so the piece must
+//      first be certified regular: the hodograph numerators (X'W - XW', Y'W - YW') (product
+//      degree 2n - 1, true degree 2n - 2; polynomial: (x', y')) have no common root in [0,1].
+//      Both decided by an interval filter (CGAL::Interval_nt on the coefficients: certainly no
+//      sign variation of D => its sign is certain; the hodograph coefficients in an open
+//      half-plane => regular), then exactly (Gmpq coefficients: no variation, or certified root
+//      isolation: a root of odd multiplicity inside (0,1) is an inflection; a root in [0,1] of
+//      |hodograph numerator|^2 is a singular point).
+//      Exact for the FT coefficients of the pieces: in a double kernel these are the stored,
+//      rounded Bezier points and products w x, w y, not the spline's control points and weights.
 
 #ifndef FAIR_INTERNAL_EXACT_CONVERSION_CONVEXITY_H
 #define FAIR_INTERNAL_EXACT_CONVERSION_CONVEXITY_H
