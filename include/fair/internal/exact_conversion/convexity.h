@@ -26,6 +26,9 @@
 
 #include <fair/Bernstein_polynomial.h>
 #include <fair/Bernstein_root_isolation.h>
+#include <fair/internal/bernstein/curvature.h>
+#include <fair/internal/bernstein/sign.h>
+#include <fair/internal/bernstein/signed_roots.h>
 #include <fair/Errors.h>
 #include <fair/Rational_bezier_2.h>
 #include <fair/internal/common/exact_conversion.h>
@@ -39,6 +42,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace fair {
@@ -116,14 +120,11 @@ Polygon_convexity polygon_convexity(const std::vector<typename K::Point_2>& p, b
   return out;
 }
 
-/// det[[X,Y,W],[X',Y',W'],[X'',Y'',W'']] (rational) or X'Y'' - Y'X'' (polynomial, W = 1).
+/// D (internal/bernstein/curvature.h), with the polynomial shortcut x'y'' - y'x'' when W = 1.
 template <class NT>
 Bernstein_polynomial<NT> curvature_numerator(const Bernstein_polynomial<NT>& X, const Bernstein_polynomial<NT>& Y,
                                              const Bernstein_polynomial<NT>& W, bool polynomial) {
-  const Bernstein_polynomial<NT> X1 = X.derivative(), Y1 = Y.derivative(), X2 = X1.derivative(), Y2 = Y1.derivative();
-  if (polynomial) return X1 * Y2 - Y1 * X2;
-  const Bernstein_polynomial<NT> W1 = W.derivative(), W2 = W1.derivative();
-  return X * (Y1 * W2 - W1 * Y2) - Y * (X1 * W2 - W1 * X2) + W * (X1 * Y2 - Y1 * X2);
+  return polynomial ? bernstein::polynomial_curvature_determinant(X, Y) : bernstein::curvature_determinant(X, Y, W);
 }
 
 enum class Piece_decision { FILTER, EXACT, UNDECIDED };
@@ -153,14 +154,27 @@ template <class NT>
 void hodograph_numerators(const Bernstein_polynomial<NT>& X, const Bernstein_polynomial<NT>& Y,
                           const Bernstein_polynomial<NT>& W, bool polynomial, Bernstein_polynomial<NT>& Ax,
                           Bernstein_polynomial<NT>& Ay) {
-  if (polynomial) {
-    Ax = X.derivative();
-    Ay = Y.derivative();
+  if (!polynomial) {
+    bernstein::hodograph_numerators(X, Y, W, Ax, Ay);
     return;
   }
-  const Bernstein_polynomial<NT> W1 = W.derivative();
-  Ax = X.derivative() * W - X * W1;
-  Ay = Y.derivative() * W - Y * W1;
+  Ax = X.derivative();
+  Ay = Y.derivative();
+}
+
+/// The sign of D on [0,1] when its interval coefficients certainly have no sign variation
+/// (sign_variation_bounds().upper == 0, so every coefficient is >= 0 or every one <= 0): +1 / -1
+/// if one is certainly nonzero, 0 if all are exactly zero (straight); false if undecided.
+inline bool certain_constant_sign(const Bernstein_polynomial<CGAL::Interval_nt<false>>& D, int& sign) {
+  if (sign_variation_bounds(D).upper != 0) return false;
+  sign = 0;
+  bool zero = true;
+  for (const CGAL::Interval_nt<false>& c : D.coefficients()) {
+    const std::pair<int, int> r = bernstein::sign_range_of(c);
+    if (r.first == r.second && r.first != 0) sign = r.first;
+    if (r.first != 0 || r.second != 0) zero = false;
+  }
+  return sign != 0 || zero;
 }
 
 /// Regularity filter: the hodograph's Bernstein coefficients a_0..a_k (interval enclosures) have a
@@ -230,18 +244,9 @@ Piece_sign piece_sign(const Rational_bezier_2<K>& c, bool polynomial, bool exact
     hodograph_numerators(X, Y, W, polynomial, Ax, Ay);
     regular = certainly_regular(Ax, Ay);
     const Bernstein_polynomial<I> D = curvature_numerator(X, Y, W, polynomial);
-    int lo = 1, hi = -1;
-    bool certain = true;
-    for (const I& x : D.coefficients()) {
-      const CGAL::Uncertain<CGAL::Sign> sg = CGAL::sign(x);
-      if (!CGAL::is_certain(sg)) { certain = false; break; }
-      const int v = int(CGAL::get_certain(sg));
-      if (v == 0) continue;
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
-    }
-    if (regular && certain && !(lo < 0 && hi > 0)) {
-      out.sign = hi > 0 ? 1 : (lo < 0 ? -1 : 0);
+    int sign = 0;
+    if (regular && certain_constant_sign(D, sign)) {
+      out.sign = sign;
       out.decision = Piece_decision::FILTER;
       return out;
     }
@@ -266,19 +271,13 @@ Piece_sign piece_sign(const Rational_bezier_2<K>& c, bool polynomial, bool exact
       if (!CGAL::is_zero(x)) { out.sign = int(CGAL::sign(x)); break; }
     return out;
   }
-  const std::vector<Isolating_interval> roots = isolate_roots(D);
-  std::vector<CGAL::Gmpq> probes; // points of [0,1] that are certainly not roots
-  CGAL::Gmpq left(0);
-  for (const Isolating_interval& r : roots) {
-    const bool at_end = r.is_point() && (r.lower == CGAL::Gmpq(0) || r.lower == CGAL::Gmpq(1));
-    if (!at_end && (r.multiplicity % 2 == 1)) out.inflection = true;
-    if (left < r.lower) probes.push_back((left + r.lower) / 2);
-    left = r.upper;
-  }
-  if (left < CGAL::Gmpq(1)) probes.push_back((left + CGAL::Gmpq(1)) / 2);
-  for (const CGAL::Gmpq& t : probes) {
-    const CGAL::Gmpq v = D.evaluate(t);
-    if (!CGAL::is_zero(v)) { out.sign = int(CGAL::sign(v)); break; }
+  // A sign change across an interior root (odd multiplicity) is an inflection; an empty gap
+  // (a root at 0 or 1) has sign 0 and changes nothing.
+  const bernstein::Signed_roots r = bernstein::signed_roots(D);
+  for (std::size_t g = 0; g < r.gaps.size(); ++g) {
+    if (r.gaps[g] == 0) continue;
+    if (out.sign != 0 && out.sign != r.gaps[g]) out.inflection = true;
+    out.sign = r.gaps[g];
   }
   FAIR_ASSERT_MSG(out.inflection || out.sign != 0, "spline_convexity: a nonzero polynomial is nonzero between its roots");
   return out;
