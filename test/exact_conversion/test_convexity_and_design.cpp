@@ -256,6 +256,15 @@ TYPED_TEST(Convexity, SingularCurvesAreNotLocallyConvex) {
   fair::Spline_convexity_options no_fallback;
   no_fallback.exact_fallback = false;
   EXPECT_FALSE(fair::spline_convexity(cusp, no_fallback).curve_locally_convex);
+  // A control point repeated three times: the polygon is convex once repeats are skipped, but
+  // b_1^0 = b_2^0 = b_3^0 = b_0^1 = b_1^1 = (4,0), so c' = 0 at t_1. Outside the certificate.
+  const fair::Cubic_spline_2<K> triple(std::vector<FT>{0, 1, 2, 3},
+                                       std::vector<P>{P(0, 0), P(4, 0), P(4, 0), P(4, 0), P(4, 4), P(0, 4)});
+  const fair::Spline_convexity_report<K> e = fair::spline_convexity(triple);
+  EXPECT_TRUE(e.polygon_convex);
+  EXPECT_FALSE(e.curve_locally_convex);
+  EXPECT_EQ(e.singular_pieces, (std::vector<std::size_t>{0, 1}));
+  EXPECT_FALSE(e.proposition_holds());
 }
 
 // ----------------------------------------------------------------- quadratic design (eq. 12)
