@@ -34,9 +34,12 @@ struct Spline_convexity_options {
   bool exact_fallback = true;
 };
 
-/// The result of spline_convexity.
+/// The result of spline_convexity on a Cubic_spline_2<K>. No member depends on K yet; the
+/// parameter is kept so that the report names the kernel it was computed in (like the library's
+/// other result types) and callers' `Spline_convexity_report<K>` stays valid.
 template <class K>
 struct Spline_convexity_report {
+  typedef K Kernel;
   static constexpr std::size_t npos = std::numeric_limits<std::size_t>::max();
   /// (a) The control polygon (closed by its closing edge if the spline is open) is convex.
   bool polygon_convex = true;
