@@ -70,10 +70,10 @@ public:
       const std::size_t n = points_.size();
       const FT two(2), minus_one(-1), zero(0);
       control_.reserve(n + 2);
-      control_.push_back(internal::classic::classic_combine<K>(two, points_[0], minus_one, points_[1], zero, points_[0],
+      control_.push_back(internal::common::combine<K>(two, points_[0], minus_one, points_[1], zero, points_[0],
                                                       zero, points_[0]));
       control_.insert(control_.end(), points_.begin(), points_.end());
-      control_.push_back(internal::classic::classic_combine<K>(two, points_[n - 1], minus_one, points_[n - 2], zero,
+      control_.push_back(internal::common::combine<K>(two, points_[n - 1], minus_one, points_[n - 2], zero,
                                                       points_[0], zero, points_[0]));
     }
     spline_ = internal::classic::classic_uniform_spline<K>(control_, closed, method);

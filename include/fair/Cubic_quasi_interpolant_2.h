@@ -77,12 +77,12 @@ public:
     if (closed) {
       control_.reserve(m);
       for (std::size_t i = 0; i < m; ++i)
-        control_.push_back(internal::classic::classic_combine<K>(w, data[(i + m - 1) % m], c, data[i], w, data[(i + 1) % m],
+        control_.push_back(internal::common::combine<K>(w, data[(i + m - 1) % m], c, data[i], w, data[(i + 1) % m],
                                                         zero, data[i]));
     } else {
       control_.reserve(m - 2);
       for (std::size_t i = 1; i + 1 < m; ++i)
-        control_.push_back(internal::classic::classic_combine<K>(w, data[i - 1], c, data[i], w, data[i + 1], zero, data[i]));
+        control_.push_back(internal::common::combine<K>(w, data[i - 1], c, data[i], w, data[i + 1], zero, data[i]));
     }
     spline_ = internal::classic::classic_uniform_spline<K>(control_, closed, "Cubic_quasi_interpolant_2");
     pieces_ = spline_->polynomial_pieces();

@@ -166,7 +166,7 @@ public:
         out.push_back(q[i]);
       }
       if (i < edges)
-        out.push_back(internal::classic::classic_combine<K>(minus_w, e[k - 1], half_w, e[k], half_w, e[k + 1], minus_w, e[k + 2]));
+        out.push_back(internal::common::combine<K>(minus_w, e[k - 1], half_w, e[k], half_w, e[k + 1], minus_w, e[k + 2]));
     }
     return out;
   }

@@ -85,7 +85,7 @@ Cubic_spline_2<K> parametric_curve_spline(const Curve& f, const std::vector<doub
     // eq. 3 on the cubic 2-jet at u_i of piece i: c_i = (1 + 1/beta_i) b_1^i - (1/beta_i) b_2^i
     ip::cubic_jet<K>(ip::quintic_end<K>(ip::jet_at(f, marks[i], i, regular, fn), marks[i], marks[i + 1], true), bb1, bb2);
     const FT inv_beta = (t[i] - t[i - 1]) / (t[i + 1] - t[i]);
-    d.push_back(ip::combine<K>(FT(1) + inv_beta, bb1, -inv_beta, bb2, FT(0), bb2));
+    d.push_back(internal::common::combine<K>(FT(1) + inv_beta, bb1, -inv_beta, bb2, FT(0), bb2));
   }
   // the 2-jet at the end of piece m-1 (b5, b4, b3), mirrored
   b = ip::quintic_end<K>(ip::jet_at(f, marks[m], m, regular, fn), marks[m - 1], marks[m], false);

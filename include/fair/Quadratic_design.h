@@ -104,8 +104,9 @@ std::vector<FT> rounding_marks(const FT& rho) {
 /// (beta = 1 at the added control points; at the shared point beta = u_1 / (1 - u_{m-1}), 1 for
 /// symmetric marks). Shape j occupies the parameter interval [j P, j P + 1] (closed: shifted by
 /// u_1), P = 2 + u_1 - u_{m-1}, and is reproduced exactly (exact kernel) between its marks u_2
-/// and u_{m-2}, and up to the clamped end of an open chain. (Helper G's Basic_shape_design also
-/// merges close and separate ends; this is the chain of shapes that share their ends.) O(total marks).
+/// and u_{m-2}, and up to the clamped end of an open chain. (The basic-shape design
+/// (include/fair/Basic_shape_design.h) also merges close and separate ends; this is the chain of
+/// shapes that share their ends.) O(total marks).
 /// \throws Invalid_input_error for no shape (fewer than 2 closed), end points or end weights that
 /// differ, or bad marks; Precondition_error for a degree above 3.
 template <class K>

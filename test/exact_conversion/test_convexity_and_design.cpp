@@ -3,6 +3,7 @@
 // Proposition 1 (spline_convexity): exact polygon convexity (collinear runs, reversals, double
 // winding), convex and non-convex joins of two conic arcs (at their end points and by an edge),
 // the proposition's implication on seeded random convex polygons (open and closed, rational),
+// singular curves (cusp, reversal, coincident Bezier points at a join) never locally convex,
 // a counterexample with a non-convex polygon, the filter / exact split. Quadratic design
 // (eq. 12): m_i^L and m_i^R against the Lagrange interpolant, parabola reproduction, reversal
 // symmetry, and the chain spline's exact reproduction of its shapes.
@@ -216,6 +217,54 @@ TYPED_TEST(Convexity_exact, FilterThenExactFallback) {
   const fair::Spline_convexity_report<K> u = fair::spline_convexity(s, no_fallback);
   EXPECT_EQ(u.undecided_pieces, std::vector<std::size_t>{0});
   EXPECT_FALSE(u.curve_locally_convex);
+}
+
+// Proposition 1 needs a regular curve: the sign of D says nothing where c' = 0. A cusp (D =
+// 18 (1 - 2t)^2 >= 0, c' = 3 ((1 - 2t)^2, 1 - 2t) vanishes at 1/2), a straight polygon that
+// reverses (D == 0, c' = (3 (2t - 1)(4t - 3), 0) vanishes at 1/2 and 3/4), and a C2 join whose Bezier points coincide (b_2^0 = b_3^0 = b_1^1,
+// c' = 0 at the join) are singular, never locally convex.
+TYPED_TEST(Convexity, SingularCurvesAreNotLocallyConvex) {
+  typedef TypeParam K;
+  typedef typename K::Point_2 P;
+  typedef typename K::FT FT;
+  const fair::Cubic_spline_2<K> cusp(std::vector<FT>{0, 1}, std::vector<P>{P(0, 0), P(1, 1), P(0, 1), P(1, 0)});
+  const fair::Spline_convexity_report<K> a = fair::spline_convexity(cusp);
+  EXPECT_FALSE(a.curve_locally_convex);
+  EXPECT_EQ(a.curve_orientation, CGAL::COLLINEAR);
+  EXPECT_EQ(a.singular_pieces, std::vector<std::size_t>{0});
+  EXPECT_TRUE(a.inflected_pieces.empty());
+  EXPECT_EQ(a.piece_signs, std::vector<int>{0});
+  const fair::Cubic_spline_2<K> back(std::vector<FT>{0, 1}, std::vector<P>{P(0, 0), P(3, 0), P(1, 0), P(2, 0)});
+  const fair::Spline_convexity_report<K> b = fair::spline_convexity(back);
+  EXPECT_FALSE(b.polygon_convex);
+  EXPECT_FALSE(b.curve_locally_convex);
+  EXPECT_EQ(b.singular_pieces, std::vector<std::size_t>{0});
+  // A straight run that does not reverse stays regular and convex.
+  const fair::Cubic_spline_2<K> run(std::vector<FT>{0, 1}, std::vector<P>{P(0, 0), P(1, 0), P(2, 0), P(4, 0)});
+  const fair::Spline_convexity_report<K> c = fair::spline_convexity(run);
+  EXPECT_TRUE(c.curve_locally_convex);
+  EXPECT_TRUE(c.singular_pieces.empty());
+  // C2 join of two cubics (h = 1) at J = b_3^0 = b_2^0 = b_1^1; C2 (b_1^0 - J = b_2^1 - J, the
+  // second derivatives) gives b_2^1 = b_1^0: the join is a cusp (c' = 0, c'' != 0).
+  const P J(2, 1);
+  const std::vector<fair::Bezier_2<K>> pieces{fair::Bezier_2<K>(std::vector<P>{P(0, 0), P(1, 0), J, J}),
+                                              fair::Bezier_2<K>(std::vector<P>{J, J, P(1, 0), P(0, 1)})};
+  const fair::Cubic_spline_2<K> joined = fair::Cubic_spline_2<K>::from_bezier_pieces(std::vector<FT>{0, 1, 2}, pieces);
+  const fair::Spline_convexity_report<K> d = fair::spline_convexity(joined);
+  EXPECT_FALSE(d.curve_locally_convex);
+  EXPECT_EQ(d.singular_pieces, (std::vector<std::size_t>{0, 1}));
+  fair::Spline_convexity_options no_fallback;
+  no_fallback.exact_fallback = false;
+  EXPECT_FALSE(fair::spline_convexity(cusp, no_fallback).curve_locally_convex);
+  // A control point repeated three times: the polygon is convex once repeats are skipped, but
+  // b_1^0 = b_2^0 = b_3^0 = b_0^1 = b_1^1 = (4,0), so c' = 0 at t_1. Outside the certificate.
+  const fair::Cubic_spline_2<K> triple(std::vector<FT>{0, 1, 2, 3},
+                                       std::vector<P>{P(0, 0), P(4, 0), P(4, 0), P(4, 0), P(4, 4), P(0, 4)});
+  const fair::Spline_convexity_report<K> e = fair::spline_convexity(triple);
+  EXPECT_TRUE(e.polygon_convex);
+  EXPECT_FALSE(e.curve_locally_convex);
+  EXPECT_EQ(e.singular_pieces, (std::vector<std::size_t>{0, 1}));
+  EXPECT_FALSE(e.proposition_holds());
 }
 
 // ----------------------------------------------------------------- quadratic design (eq. 12)

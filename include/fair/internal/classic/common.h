@@ -11,6 +11,7 @@
 #include <fair/Bezier_2.h>
 #include <fair/Errors.h>
 #include <fair/Knot_spacing.h>
+#include <fair/internal/common/combination.h>
 #include <fair/internal/common/input_checks.h>
 
 #include <CGAL/number_utils.h>
@@ -97,16 +98,6 @@ Bezier_2<K> classic_bspline_segment(const typename K::Point_2& d0, const typenam
       Point_2((d1.x() + four * d2.x() + d3.x()) / six, (d1.y() + four * d2.y() + d3.y()) / six));
 }
 
-/// a p + b q + c r + d s for points (an affine combination when a + b + c + d = 1).
-template <class K>
-typename K::Point_2 classic_combine(const typename K::FT& a, const typename K::Point_2& p,
-                                    const typename K::FT& b, const typename K::Point_2& q,
-                                    const typename K::FT& c, const typename K::Point_2& r,
-                                    const typename K::FT& d, const typename K::Point_2& s) {
-  return typename K::Point_2(a * p.x() + b * q.x() + c * r.x() + d * s.x(),
-                             a * p.y() + b * q.y() + c * r.y() + d * s.y());
-}
-
 /// The point on the cubic through P0..P3 (at parameters 0,1,2,3) at parameter -1:
 /// 4 P0 - 6 P1 + 4 P2 - P3 (the fourth difference of a cubic vanishes). Used as phantom data
 /// so that cubic reproduction holds up to the ends of open curves.
@@ -114,7 +105,7 @@ template <class K>
 typename K::Point_2 classic_cubic_extrapolation(const typename K::Point_2& p0, const typename K::Point_2& p1,
                                                 const typename K::Point_2& p2, const typename K::Point_2& p3) {
   typedef typename K::FT FT;
-  return classic_combine<K>(FT(4), p0, FT(-6), p1, FT(4), p2, FT(-1), p3);
+  return common::combine<K>(FT(4), p0, FT(-6), p1, FT(4), p2, FT(-1), p3);
 }
 
 /// Throws Invalid_input_error if a constructed control point is not finite in double (finite

@@ -17,6 +17,7 @@
 
 #include <fair/Bezier_2.h>
 #include <fair/Errors.h>
+#include <fair/internal/common/combination.h>
 #include <fair/internal/common/curvature.h>
 
 #include <CGAL/number_utils.h>
@@ -29,19 +30,13 @@ namespace fair {
 namespace internal {
 namespace exact_conversion {
 
-template <class K>
-typename K::Point_2 combination(const typename K::Point_2& a, const typename K::FT& ca, const typename K::Point_2& b,
-                                const typename K::FT& cb, const typename K::Point_2& c, const typename K::FT& cc) {
-  return typename K::Point_2(ca * a.x() + cb * b.x() + cc * c.x(), ca * a.y() + cb * b.y() + cc * c.y());
-}
-
 /// m_i^L from q_{i-1}, q_i, q_{i+1} and beta_i = h_i / h_{i-1}.
 template <class K>
 typename K::Point_2 middle_left(const typename K::Point_2& qm, const typename K::Point_2& q0, const typename K::Point_2& qp,
                                 const typename K::FT& beta) {
   typedef typename K::FT FT;
   const FT half(FT(1) / FT(2));
-  return combination<K>(qm, -half * beta * beta / (FT(1) + beta), q0, half * (FT(1) + beta), qp, half / (FT(1) + beta));
+  return common::combine<K>(-half * beta * beta / (FT(1) + beta), qm, half * (FT(1) + beta), q0, half / (FT(1) + beta), qp);
 }
 
 /// m_i^R from q_i, q_{i+1}, q_{i+2} and beta_{i+1} = h_{i+1} / h_i.
@@ -50,7 +45,7 @@ typename K::Point_2 middle_right(const typename K::Point_2& q0, const typename K
                                  const typename K::FT& beta) {
   typedef typename K::FT FT;
   const FT half(FT(1) / FT(2));
-  return combination<K>(qpp, -half / (beta * beta + beta), qp, half * (FT(1) + beta) / beta, q0, half * beta / (FT(1) + beta));
+  return common::combine<K>(-half / (beta * beta + beta), qpp, half * (FT(1) + beta) / beta, qp, half * beta / (FT(1) + beta), q0);
 }
 
 /// |curvature| at t_i of the quadratic through q_{i-1}, q_i, q_{i+1} at t_i - hm, t_i, t_i + hp (double).

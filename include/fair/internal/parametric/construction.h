@@ -12,6 +12,7 @@
 #include <fair/Bezier_2.h>
 #include <fair/Errors.h>
 #include <fair/Parametric_curve_2.h>
+#include <fair/internal/common/combination.h>
 
 #include <array>
 #include <cmath>
@@ -60,13 +61,6 @@ std::vector<Curve_jet_2> jets_at(const Curve& f, const std::vector<double>& u, b
   return j;
 }
 
-/// a P + b Q + c R (affine when a + b + c = 1).
-template <class K>
-typename K::Point_2 combine(const typename K::FT& a, const typename K::Point_2& p, const typename K::FT& b,
-                            const typename K::Point_2& q, const typename K::FT& c, const typename K::Point_2& r) {
-  return typename K::Point_2(a * p.x() + b * q.x() + c * r.x(), a * p.y() + b * q.y() + c * r.y());
-}
-
 /// Eq. 7 with local derivatives at one end of a piece: (b0, b1, b2) = (f, f + s h/5 f',
 /// f + s 2h/5 f' + h^2/20 f'') with h = u1 - u0 in FT and s = +1 at the start of the piece
 /// (u = u_i), s = -1 at its end (u = u_{i+1}: b5, b4, b3).
@@ -92,8 +86,8 @@ Bezier_2<K> quintic_piece(double u0, const Curve_jet_2& j0, double u1, const Cur
 template <class K>
 void cubic_jet(const std::array<typename K::Point_2, 3>& b, typename K::Point_2& bb1, typename K::Point_2& bb2) {
   typedef typename K::FT FT;
-  bb1 = combine<K>(FT(-2) / FT(3), b[0], FT(5) / FT(3), b[1], FT(0), b[2]);
-  bb2 = combine<K>(FT(1), b[0], FT(-10) / FT(3), b[1], FT(10) / FT(3), b[2]);
+  bb1 = common::combine<K>(FT(-2) / FT(3), b[0], FT(5) / FT(3), b[1], FT(0), b[2]);
+  bb2 = common::combine<K>(FT(1), b[0], FT(-10) / FT(3), b[1], FT(10) / FT(3), b[2]);
 }
 
 } // namespace parametric
