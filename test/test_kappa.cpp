@@ -507,6 +507,55 @@ TEST(Kappa, BoundaryRootNamesThePoint) {
   EXPECT_FALSE(cert.valid());
 }
 
+// Automatic weights w_i < 1 can put a point at a curvature MINIMUM of its piece (paper Sec.
+// 3.2): 6 random points in the unit square (std::mt19937 seed 307), closed. Every equation holds
+// (residual <= 1e-12, no point on a join), yet point 5 is a minimum: the outcome is UNSOLVED, the
+// point listed, the exact certificate agreeing, and throw_on_non_convergence throws.
+TEST(Kappa, PointAtACurvatureMinimumIsUnsolved) {
+  const std::vector<Pd> p = {Pd(0.19889350873851647, 0.63531557873837441), Pd(0.41116133888305417, 0.29134000893768197),
+                             Pd(0.19565686281376002, 0.78263404471619846), Pd(0.88627965362420014, 0.82247598969570035),
+                             Pd(0.35042944914999491, 0.57064531950887243), Pd(0.33944371296043074, 0.60700168187066261)};
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  o.weights = fair::Kappa_weights::AUTOMATIC;
+  const fair::Kappa_curve_2<Kd> c(p, o);
+  const fair::Kappa_solve_report& r = c.report();
+  EXPECT_EQ(r.status, fair::Kappa_solve_status::UNSOLVED) << r;
+  EXPECT_FALSE(r.converged);
+  EXPECT_LE(r.residual, o.tolerance) << r;
+  EXPECT_TRUE(r.points_on_joins.empty()) << r;
+  ASSERT_EQ(r.points_at_minima, std::vector<std::size_t>{5}) << r;
+  EXPECT_LT(c.weight(5), 1.0);
+  EXPECT_FALSE(r.worst_points.empty());
+  const fair::Kappa_certificate cert = fair::certify(c);
+  ASSERT_TRUE(cert.pieces[5].has_extremum_at_t) << cert;
+  EXPECT_EQ(cert.pieces[5].kind_at_t, fair::Curvature_extremum_kind::MINIMUM) << cert;
+  EXPECT_FALSE(cert.proves_outcome());
+  o.throw_on_non_convergence = true;
+  EXPECT_THROW(fair::Kappa_curve_2<Kd>(p, o), fair::Non_convergence_error);
+}
+
+// Unit weights never put a point at a minimum (w = 1: eq. 7's root is a maximum, Appendix A): no
+// point listed on random sets, whatever the outcome.
+TEST(Kappa, UnitWeightsListNoMinima) {
+  std::mt19937 g(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<Pd> p;
+    for (int k = 0; k < 4 + trial % 9; ++k) p.emplace_back(u(g), u(g));
+    fair::Kappa_curve_options o;
+    o.closed = trial % 2 == 0;
+    try {
+      const fair::Kappa_curve_2<Kd> c(p, o);
+      EXPECT_TRUE(c.report().points_at_minima.empty()) << trial << c.report();
+      if (c.report().status != fair::Kappa_solve_status::UNSOLVED) {
+        EXPECT_LE(c.report().residual, o.tolerance);
+      }
+    } catch (const fair::Invalid_input_error&) {
+    }
+  }
+}
+
 TEST(Kappa, HundredThousandPointsStress) {
   std::mt19937 g(1);
   const std::vector<Pd> p = spiky_star(g, 100000, 0.05);

@@ -445,29 +445,33 @@ inline std::size_t bounds_active(const Problem& pb, const Kappa_solver_state& st
   return count;
 }
 
-/// Relative size (to the largest Bernstein coefficient) below which the derivative of eq. 4's
-/// numerator at t_i is taken as 0: no minimum is reported at a (near) double root.
-constexpr double minimum_derivative_floor = 1e-12;
+/// Relative size (to the terms of eq. 4's coefficients, before their cancellation) above which
+/// a negative derivative of eq. 4's numerator at t_i counts as a minimum. Below it the piece is
+/// a circular arc to that relative accuracy (the numerator vanishes identically for a circle):
+/// its curvature has no extremum worth the name there, and no minimum is reported.
+constexpr double minimum_derivative_floor = 1e-8;
 
 /// Whether the input point of block i (t_i inside the bound margin) is at a curvature MINIMUM
 /// of its piece: the numerator E of kappa' (eq. 4, fair::internal::conic::eq4_coefficients; E
-/// goes from - to + at a maximum of |kappa|) decreases at t_i. The weights are st.w.
+/// goes from - to + at a maximum of |kappa|) decreases at t_i, by more than
+/// minimum_derivative_floor relative to the size of its terms. The weights are st.w.
 inline bool point_at_minimum(const Problem& pb, const Kappa_solver_state& st, std::size_t i) {
-  const double t = st.t[i];
+  const double t = st.t[i], w = st.w[i];
   if (!(t > bound_margin && t < 1 - bound_margin)) return false;
   Window<double> win;
   build_window(pb, st, i, win);
   Piece_values<double> pv;
   piece_values(pb, st, i, win, 2, pv);
   const double* X = win.X[2];
-  const std::vector<double> b = conic::eq4_coefficients<double>(pv.E0[0], pv.E0[1], X[0], X[1], pv.E2[0], pv.E2[1], st.w[i]);
+  const std::vector<double> b = conic::eq4_coefficients<double>(pv.E0[0], pv.E0[1], X[0], X[1], pv.E2[0], pv.E2[1], w);
   const double u = 1 - t;
   // E'(t) / 4 in the Bernstein basis of degree 3.
   const double d = (b[1] - b[0]) * u * u * u + 3 * (b[2] - b[1]) * u * u * t + 3 * (b[3] - b[2]) * u * t * t +
                    (b[4] - b[3]) * t * t * t;
-  double scale = 0;
-  for (const double c : b) scale = std::max(scale, std::abs(c));
-  return d < -minimum_derivative_floor * scale;
+  const auto sq = [](double x, double y) { return x * x + y * y; };
+  const double size = (w * w * w + w + 1) * (sq(pv.E0[0] - X[0], pv.E0[1] - X[1]) + sq(X[0] - pv.E2[0], X[1] - pv.E2[1]) +
+                                             sq(pv.E0[0] - pv.E2[0], pv.E0[1] - pv.E2[1]));
+  return d < -minimum_derivative_floor * size;
 }
 
 /// The outcome of a solve whose per-block residuals are F (4 per block, as evaluate()) and, with
