@@ -494,8 +494,11 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
   std::vector<Kappa_point_residual> all(pb.n);
   for (std::size_t i = 0; i < pb.n; ++i) {
     double r = weight_error.empty() ? 0.0 : weight_error[i];
-    for (int c = 0; c < 4; ++c) r = std::max(r, std::abs(F[4 * i + c]));
-    all[i] = Kappa_point_residual{pb.point_index(i), std::isnan(F[4 * i]) ? std::numeric_limits<double>::infinity() : r};
+    for (int c = 0; c < 4; ++c) {
+      const double a = std::abs(F[4 * i + c]);
+      r = std::isnan(a) ? std::numeric_limits<double>::infinity() : std::max(r, a);  // NaN: the worst
+    }
+    all[i] = Kappa_point_residual{pb.point_index(i), r};
   }
   const std::size_t k = std::min(all.size(), Kappa_solve_report::worst_points_listed);
   std::partial_sort(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(k), all.end(),
