@@ -29,7 +29,7 @@ int main() {
   options.weights = fair::Kappa_weights::AUTOMATIC;
   fair::Kappa_curve_2<K> curve(star, options);
   std::cout << "cold: " << curve.report() << '\n';
-  if (!curve.report().converged) return 1;
+  if (curve.report().status != fair::Kappa_solve_status::INTERIOR) return 1;
 
   // Drag point 3 outwards in small steps, as a user would.
   for (int step = 1; step <= 5; ++step) {
@@ -38,7 +38,7 @@ int main() {
     const fair::Kappa_solve_report& r = curve.report();
     std::cout << "drag " << step << ": warm " << r.warm_started << ", Jacobians " << r.iterations
               << ", residual " << r.residual << ", piece 3 weight " << curve.piece(3).weight() << '\n';
-    if (!r.converged || !r.warm_started) return 1;
+    if (r.status != fair::Kappa_solve_status::INTERIOR || !r.warm_started) return 1;
   }
 
   // Open data without an interior solution: the first interior point can only be interpolated on
@@ -49,8 +49,11 @@ int main() {
                                      {0.4147174195865368, 0.82380946371988828},
                                      {0.27611375678874384, 0.64727747335147212}};
   const fair::Kappa_curve_2<K> open(data);
-  std::cout << "open: converged " << open.report().converged << ", points on a join:";
-  for (const std::size_t i : open.report().boundary_points) std::cout << ' ' << i;
+  std::cout << "open: " << open.report().status << ", points on a join:";
+  for (const std::size_t i : open.report().points_on_joins) std::cout << ' ' << i;
   std::cout << '\n';
-  return !open.report().converged && open.report().boundary_points == std::vector<std::size_t>{1} ? 0 : 1;
+  return open.report().status == fair::Kappa_solve_status::ON_JOINS &&
+                 open.report().points_on_joins == std::vector<std::size_t>{1}
+             ? 0
+             : 1;
 }

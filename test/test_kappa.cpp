@@ -16,6 +16,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -161,7 +162,7 @@ TEST(Kappa, PropertiesOnRandomClosedCurves) {
 TEST(Kappa, CornerDataConverges) {
   // Points at corners (the intended use): with unit, fixed and automatic weights, open and
   // closed, the solver reaches 1e-12 on (nearly) all inputs and the defining properties hold.
-  // The few failures are reported (converged == false), never silent.
+  // The few failures are reported (status != INTERIOR, converged == false), never silent.
   std::mt19937 g(7);
   int converged = 0, total = 0;
   for (int trial = 0; trial < 30; ++trial) {
@@ -177,7 +178,9 @@ TEST(Kappa, CornerDataConverges) {
       EXPECT_LE(k.interpolation, 1e-12);
       EXPECT_LE(k.g1, 1e-9);
       if (!c.report().converged) {
-        EXPECT_TRUE(c.report().residual > o.tolerance || c.report().bounds_active > 0) << c.report();
+        EXPECT_TRUE(c.report().residual > o.tolerance || c.report().bounds_active > 0 ||
+                    !c.report().points_at_minima.empty())
+            << c.report();
         continue;
       }
       ++converged;
@@ -424,11 +427,56 @@ TEST(Kappa, NonConvergenceIsReportedOrThrown) {
   o.refinement_passes = 0;
   o.max_iterations = 0;
   const fair::Kappa_curve_2<Kd> c(p, o);
-  EXPECT_FALSE(c.report().converged);
-  EXPECT_GT(c.report().residual, o.tolerance);
+  const fair::Kappa_solve_report& r = c.report();
+  EXPECT_EQ(r.status, fair::Kappa_solve_status::UNSOLVED);
+  EXPECT_FALSE(r.converged);
+  EXPECT_GT(r.residual, o.tolerance);
+  // How far and where: the worst points, worst first, the first one carrying the residual.
+  ASSERT_EQ(r.worst_points.size(), fair::Kappa_solve_report::worst_points_listed) << r;
+  EXPECT_DOUBLE_EQ(r.worst_points[0].residual, r.residual) << r;
+  for (std::size_t k = 1; k < r.worst_points.size(); ++k) {
+    EXPECT_LE(r.worst_points[k].residual, r.worst_points[k - 1].residual);
+    EXPECT_LT(r.worst_points[k].point, p.size());
+  }
+  std::ostringstream text;
+  text << r;
+  EXPECT_NE(text.str().find("unsolved"), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find("worst points"), std::string::npos) << text.str();
   EXPECT_LE(check_curve(c).interpolation, 1e-12);  // still a valid interpolating G1 curve
+  EXPECT_FALSE(fair::certify(c).proves_outcome());
   o.throw_on_non_convergence = true;
   EXPECT_THROW(fair::Kappa_curve_2<Kd>(p, o), fair::Non_convergence_error);
+}
+
+// The three outcomes and their spellings (the JSON of fair-curves kappa uses them).
+TEST(Kappa, OutcomeSpellings) {
+  EXPECT_STREQ(fair::to_string(fair::Kappa_solve_status::INTERIOR), "interior");
+  EXPECT_STREQ(fair::to_string(fair::Kappa_solve_status::ON_JOINS), "on_joins");
+  EXPECT_STREQ(fair::to_string(fair::Kappa_solve_status::UNSOLVED), "unsolved");
+  std::ostringstream out;
+  out << fair::Kappa_solve_status::ON_JOINS << ' ' << fair::Kappa_solve_report{};
+  EXPECT_EQ(out.str().rfind("on_joins Kappa_solve_report{unsolved,", 0), 0u) << out.str();
+}
+
+// A random spiky star (every point a corner, the benchmark's data) ends INTERIOR: nothing on a join or at a minimum, no
+// worst points, the deprecated alias converged set, the certificate proving valid().
+TEST(Kappa, RandomStarIsInterior) {
+  std::mt19937 g(7);
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  o.throw_on_non_convergence = true;
+  const fair::Kappa_curve_2<Kd> c(spiky_star(g, 16, 0.1), o);
+  const fair::Kappa_solve_report& r = c.report();
+  EXPECT_EQ(r.status, fair::Kappa_solve_status::INTERIOR) << r;
+  EXPECT_TRUE(r.converged);
+  EXPECT_LE(r.residual, o.tolerance);
+  EXPECT_TRUE(r.points_on_joins.empty());
+  EXPECT_TRUE(r.points_at_minima.empty());
+  EXPECT_TRUE(r.worst_points.empty());
+  const fair::Kappa_certificate cert = fair::certify(c);
+  EXPECT_EQ(cert.status, fair::Kappa_solve_status::INTERIOR);
+  EXPECT_TRUE(cert.proves_outcome()) << cert;
+  EXPECT_TRUE(cert.valid());
 }
 
 // A data set without an interior solution (doc/kappa_existence.md, the first failure of its
@@ -438,13 +486,76 @@ TEST(Kappa, NonConvergenceIsReportedOrThrown) {
 TEST(Kappa, BoundaryRootNamesThePoint) {
   const std::vector<Pd> p = {Pd(0.8420396853122557, 0.73342007152880162), Pd(0.46358155033629755, 0.8249558033892006),
                              Pd(0.4147174195865368, 0.82380946371988828), Pd(0.27611375678874384, 0.64727747335147212)};
-  const fair::Kappa_curve_2<Kd> c(p, fair::Kappa_curve_options{});
-  EXPECT_FALSE(c.report().converged);
-  EXPECT_GE(c.report().bounds_active, 1u);
-  ASSERT_EQ(c.report().boundary_points, std::vector<std::size_t>{1}) << c.report();
+  fair::Kappa_curve_options o;
+  o.throw_on_non_convergence = true;  // ON_JOINS is an outcome, not a failure: no throw
+  const fair::Kappa_curve_2<Kd> c(p, o);
+  const fair::Kappa_solve_report& r = c.report();
+  EXPECT_EQ(r.status, fair::Kappa_solve_status::ON_JOINS) << r;
+  EXPECT_FALSE(r.converged);
+  EXPECT_GE(r.bounds_active, 1u);
+  ASSERT_EQ(r.points_on_joins, std::vector<std::size_t>{1}) << r;
+  EXPECT_EQ(r.boundary_points, r.points_on_joins);  // the deprecated alias
+  EXPECT_TRUE(r.points_at_minima.empty());
+  EXPECT_TRUE(r.worst_points.empty());
   EXPECT_GT(c.t(0), 1 - 1e-4);
-  EXPECT_LE(c.report().residual, 1e-11);
+  EXPECT_LE(r.residual, 1e-11);
   EXPECT_LE(check_curve(c).interpolation, 1e-12);
+  // certify() reports the joins and proves the ON_JOINS properties (the exempt piece has no
+  // interior maximum at t_1, so valid() fails).
+  const fair::Kappa_certificate cert = fair::certify(c);
+  EXPECT_EQ(cert.status, fair::Kappa_solve_status::ON_JOINS);
+  EXPECT_EQ(cert.points_on_joins, std::vector<std::size_t>{1});
+  EXPECT_TRUE(cert.proves_outcome()) << cert;
+  EXPECT_FALSE(cert.valid());
+}
+
+// Automatic weights w_i < 1 can put a point at a curvature MINIMUM of its piece (paper Sec.
+// 3.2): 6 random points in the unit square (std::mt19937 seed 307), closed. Every equation holds
+// (residual <= 1e-12, no point on a join), yet point 5 is a minimum: the outcome is UNSOLVED, the
+// point listed, the exact certificate agreeing, and throw_on_non_convergence throws.
+TEST(Kappa, PointAtACurvatureMinimumIsUnsolved) {
+  const std::vector<Pd> p = {Pd(0.19889350873851647, 0.63531557873837441), Pd(0.41116133888305417, 0.29134000893768197),
+                             Pd(0.19565686281376002, 0.78263404471619846), Pd(0.88627965362420014, 0.82247598969570035),
+                             Pd(0.35042944914999491, 0.57064531950887243), Pd(0.33944371296043074, 0.60700168187066261)};
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  o.weights = fair::Kappa_weights::AUTOMATIC;
+  const fair::Kappa_curve_2<Kd> c(p, o);
+  const fair::Kappa_solve_report& r = c.report();
+  EXPECT_EQ(r.status, fair::Kappa_solve_status::UNSOLVED) << r;
+  EXPECT_FALSE(r.converged);
+  EXPECT_LE(r.residual, o.tolerance) << r;
+  EXPECT_TRUE(r.points_on_joins.empty()) << r;
+  ASSERT_EQ(r.points_at_minima, std::vector<std::size_t>{5}) << r;
+  EXPECT_LT(c.weight(5), 1.0);
+  EXPECT_FALSE(r.worst_points.empty());
+  const fair::Kappa_certificate cert = fair::certify(c);
+  ASSERT_TRUE(cert.pieces[5].has_extremum_at_t) << cert;
+  EXPECT_EQ(cert.pieces[5].kind_at_t, fair::Curvature_extremum_kind::MINIMUM) << cert;
+  EXPECT_FALSE(cert.proves_outcome());
+  o.throw_on_non_convergence = true;
+  EXPECT_THROW(fair::Kappa_curve_2<Kd>(p, o), fair::Non_convergence_error);
+}
+
+// Unit weights never put a point at a minimum (w = 1: eq. 7's root is a maximum, Appendix A): no
+// point listed on random sets, whatever the outcome.
+TEST(Kappa, UnitWeightsListNoMinima) {
+  std::mt19937 g(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<Pd> p;
+    for (int k = 0; k < 4 + trial % 9; ++k) p.emplace_back(u(g), u(g));
+    fair::Kappa_curve_options o;
+    o.closed = trial % 2 == 0;
+    try {
+      const fair::Kappa_curve_2<Kd> c(p, o);
+      EXPECT_TRUE(c.report().points_at_minima.empty()) << trial << c.report();
+      if (c.report().status != fair::Kappa_solve_status::UNSOLVED) {
+        EXPECT_LE(c.report().residual, o.tolerance);
+      }
+    } catch (const fair::Invalid_input_error&) {
+    }
+  }
 }
 
 TEST(Kappa, HundredThousandPointsStress) {

@@ -7,6 +7,7 @@
 #ifndef FAIR_KAPPA_CERTIFICATE_H
 #define FAIR_KAPPA_CERTIFICATE_H
 
+#include <fair/Kappa_solve_report.h>
 #include <fair/Rational_quadratic_bezier_2.h>
 
 #include <CGAL/Gmpq.h>
@@ -58,6 +59,11 @@ struct Kappa_certificate {
   std::vector<Piece> pieces;
   std::vector<Join> joins;
   std::vector<Rational_quadratic_bezier_2<Exact_kernel>> exact_pieces;
+  /// The outcome of the solve that was certified (its Kappa_solve_report::status) and the
+  /// points it reported on joins (Kappa_solve_report::points_on_joins). What the certificate
+  /// proves per outcome: proves_outcome().
+  Kappa_solve_status status = Kappa_solve_status::UNSOLVED;
+  std::vector<std::size_t> points_on_joins;
 
   bool all_points_on_pieces() const { for (const Piece& p : pieces) if (!p.point_on_piece) return false; return true; }
   bool all_unique_maxima() const { for (const Piece& p : pieces) if (!p.unique_maximum) return false; return true; }
@@ -97,10 +103,38 @@ struct Kappa_certificate {
     return all_points_on_pieces() && all_unique_maxima() && all_g1() && max_kappa_mismatch() <= kappa_tolerance &&
            max_root_distance() <= t_tolerance;
   }
+  /// The ON_JOINS properties: every Q_i on its piece, C0 and G1 exactly, |kappa| matching within
+  /// `kappa_tolerance` at every join, and every piece whose point is NOT in points_on_joins with
+  /// a unique curvature maximum within `t_tolerance` of t_i (the pieces of the listed points are
+  /// exempt: their point lies on a join, not at an interior maximum).
+  bool valid_on_joins(double kappa_tolerance = default_kappa_tolerance, double t_tolerance = default_t_tolerance) const {
+    if (!(all_points_on_pieces() && all_g1() && max_kappa_mismatch() <= kappa_tolerance)) return false;
+    for (const Piece& p : pieces) {
+      if (std::find(points_on_joins.begin(), points_on_joins.end(), p.point_index) != points_on_joins.end()) continue;
+      if (!(p.unique_maximum && p.root_distance <= t_tolerance)) return false;
+    }
+    return true;
+  }
+  /// Whether the certificate proves the outcome of `status`: INTERIOR, valid(); ON_JOINS,
+  /// valid_on_joins(); UNSOLVED promises nothing beyond what the members say (false).
+  bool proves_outcome(double kappa_tolerance = default_kappa_tolerance, double t_tolerance = default_t_tolerance) const {
+    switch (status) {
+      case Kappa_solve_status::INTERIOR: return valid(kappa_tolerance, t_tolerance);
+      case Kappa_solve_status::ON_JOINS: return valid_on_joins(kappa_tolerance, t_tolerance);
+      case Kappa_solve_status::UNSOLVED: break;
+    }
+    return false;
+  }
   friend std::ostream& operator<<(std::ostream& out, const Kappa_certificate& c) {
     out << "Kappa_certificate{pieces " << c.pieces.size() << ", Q_i on pieces " << c.all_points_on_pieces()
         << ", unique maxima " << c.all_unique_maxima() << ", G1 " << c.all_g1() << ", max |kappa| mismatch <= "
-        << c.max_kappa_mismatch() << ", max |root - t_i| <= " << c.max_root_distance() << "}";
+        << c.max_kappa_mismatch() << ", max |root - t_i| <= " << c.max_root_distance() << ", outcome " << c.status;
+    if (!c.points_on_joins.empty()) {
+      out << " (points on joins:";
+      for (const std::size_t i : c.points_on_joins) out << ' ' << i;
+      out << ')';
+    }
+    out << "}";
     for (const Piece& p : c.pieces)
       if (!(p.point_on_piece && p.unique_maximum))
         out << "\n  piece for point " << p.point_index << ": valid " << p.valid_piece << ", on piece "

@@ -50,9 +50,11 @@ namespace fair {
 /// P_j in its arithmetic): C0 and G1 by construction, exactly so in an exact kernel.
 /// Accuracy: report().residual, the max norm of dimensionless residuals (distances in units of
 /// the half size of the bounding box, eq. 7 divided by A + C, relative |kappa| mismatch); with
-/// unit or fixed weights it usually reaches options().tolerance (default 1e-12); a solve that
-/// stops earlier says so (report().converged == false). certify() and certify_pieces() certify
-/// the result, exactly or by certified bounds.
+/// unit or fixed weights it usually reaches options().tolerance (default 1e-12).
+/// Outcome: report().status, INTERIOR (every property of the paper), ON_JOINS (the listed
+/// report().points_on_joins lie on joins, the rest holds) or UNSOLVED (residual above the
+/// tolerance, or report().points_at_minima); see Kappa_solve_status and doc/kappa_curves.md.
+/// certify() and certify_pieces() certify the result, exactly or by certified bounds.
 /// Complexity: O(n) per iteration of the solver (a few Newton iterations from a cold start on
 /// typical data); after move_point() first O(1) per iteration on the pieces near the point.
 template <class K>
@@ -68,8 +70,8 @@ public:
   /// \throws Invalid_input_error for too few points, NaN/inf coordinates, coincident
   /// consecutive points, all points collinear, bad weights/tension/clamp, or a solution with a
   /// degenerate (straight) piece; Precondition_error for a negative or non-finite tolerance;
-  /// Non_convergence_error if the solve does not converge and
-  /// options.throw_on_non_convergence is set (otherwise see report().converged).
+  /// Non_convergence_error if the outcome is Kappa_solve_status::UNSOLVED and
+  /// options.throw_on_non_convergence is set (never for INTERIOR or ON_JOINS; see report().status).
   explicit Kappa_curve_2(std::vector<Point_2> points, Kappa_curve_options options = Kappa_curve_options())
     : q_(std::move(points)), opt_(std::move(options)) {
     solve(false, no_point);
@@ -161,11 +163,14 @@ private:
     Kappa_solve_report report =
         kp::solve_with_warm_start(pb, has_previous ? &previous : nullptr, moved, kp::solve_settings(opt_), st);
     std::vector<Piece> pieces = kp::assemble_pieces<K>(pb, st, normalisation, q_);
-    if (!report.converged && opt_.throw_on_non_convergence)
-      throw Non_convergence_error(internal::message("Kappa_curve_2: no convergence after ", report.iterations,
-                                                    " iterations, residual ", report.residual, " > tolerance ",
-                                                    opt_.tolerance, " (", report, ")"),
-                                  report.iterations, report.residual);
+    if (report.status == Kappa_solve_status::UNSOLVED && opt_.throw_on_non_convergence)
+      throw Non_convergence_error(
+          report.residual <= opt_.tolerance
+              ? internal::message("Kappa_curve_2: unsolved: residual ", report.residual, " <= tolerance ",
+                                  opt_.tolerance, " but points at a curvature minimum (", report, ")")
+              : internal::message("Kappa_curve_2: unsolved after ", report.iterations, " iterations, residual ",
+                                  report.residual, " > tolerance ", opt_.tolerance, " (", report, ")"),
+          report.iterations, report.residual);
     pieces_.swap(pieces);
     st_ = std::move(st);
     normalisation_ = normalisation;
@@ -185,14 +190,19 @@ private:
 /// solved exactly and fraction-free. Returns the Kappa_certificate: Q_i == c_i(t_i), C0 and G1
 /// exactly; the number and kind of curvature extrema of each piece and the distance of the
 /// nearest one to t_i; the relative |kappa| mismatch at each join by outward-rounded intervals;
-/// the exact pieces in Kappa_certificate::Exact_kernel. Use Kappa_certificate::valid().
+/// the exact pieces in Kappa_certificate::Exact_kernel; the outcome and the points on joins of
+/// report(). Use Kappa_certificate::proves_outcome() (valid() for INTERIOR, valid_on_joins()
+/// for ON_JOINS).
 /// Any kernel (its numbers are converted exactly). Complexity: O(n) products of O(n)-bit
 /// numbers (the exact control points have ~150 n bits), O(n M(n)) bit operations; timings in
 /// doc/benchmarks.md. \throws Internal_error if the exact elimination meets a zero pivot
 /// (impossible for the 0 < lambda_i, t_i < 1, w_i > 0 of a Kappa_curve_2).
 template <class K>
 Kappa_certificate certify(const Kappa_curve_2<K>& curve) {
-  return internal::kappa::certify_curve(curve, internal::kappa::Certify_mode::FILTERED);
+  Kappa_certificate c = internal::kappa::certify_curve(curve, internal::kappa::Certify_mode::FILTERED);
+  c.status = curve.report().status;
+  c.points_on_joins = curve.report().points_on_joins;
+  return c;
 }
 
 /// Certifies the pieces that `curve` returns, piece by piece in O(n): their exact control
@@ -206,7 +216,10 @@ Kappa_certificate certify(const Kappa_curve_2<K>& curve) {
 /// the pieces' E_j are rounded, and G1 generally fails exactly (as it is reported).
 template <class K>
 Kappa_certificate certify_pieces(const Kappa_curve_2<K>& curve) {
-  return internal::kappa::certify_returned_pieces(curve);
+  Kappa_certificate c = internal::kappa::certify_returned_pieces(curve);
+  c.status = curve.report().status;
+  c.points_on_joins = curve.report().points_on_joins;
+  return c;
 }
 
 } // namespace fair

@@ -14,10 +14,48 @@
 
 namespace fair {
 
+/// The outcome of a kappa-curve solve (doc/kappa_curves.md, "Outcomes").
+///  - INTERIOR: max residual <= tolerance, no t_i or lambda_i on a bound, and every input point
+///    at a curvature MAXIMUM of its piece: every property of the paper holds.
+///  - ON_JOINS: max residual <= tolerance (interpolating, C0, G1, |kappa|-continuous to the
+///    tolerance), no point at a curvature minimum, but the points of points_on_joins lie on a
+///    join (t or lambda at 0 or 1: the box-constrained solution of doc/kappa_existence.md), not
+///    at an interior curvature maximum.
+///  - UNSOLVED: otherwise: the residual stays above the tolerance (worst_points says where), or a
+///    point lies at a curvature MINIMUM of its piece (points_at_minima; possible with weights
+///    w_i < 1, paper Sec. 3.2), even when every equation holds.
+enum class Kappa_solve_status { INTERIOR, ON_JOINS, UNSOLVED };
+
+/// "interior", "on_joins" or "unsolved" (the spelling of the JSON of fair-curves kappa).
+inline const char* to_string(Kappa_solve_status s) {
+  switch (s) {
+    case Kappa_solve_status::INTERIOR: return "interior";
+    case Kappa_solve_status::ON_JOINS: return "on_joins";
+    case Kappa_solve_status::UNSOLVED: break;
+  }
+  return "unsolved";
+}
+inline std::ostream& operator<<(std::ostream& out, Kappa_solve_status s) { return out << to_string(s); }
+
+/// An input point and the largest residual of its block (eq. 18 as distances, eq. 7, |kappa|
+/// continuity at the join before it, eq. 16 with automatic weights): one of the worst points
+/// of an UNSOLVED solve.
+struct Kappa_point_residual {
+  std::size_t point = 0;   ///< index into the input points
+  double residual = 0;     ///< dimensionless, as Kappa_solve_report::residual
+  friend bool operator==(const Kappa_point_residual& a, const Kappa_point_residual& b) {
+    return a.point == b.point && a.residual == b.residual;
+  }
+};
+
 /// What a solve did and reached. Residuals are dimensionless: distances in units of the half
 /// size of the bounding box of the points, eq. 7 divided by A_i + C_i, relative |kappa|
 /// mismatch (Kappa_curve_2.h).
 struct Kappa_solve_report {
+  /// Most worst_points an UNSOLVED report lists.
+  static constexpr std::size_t worst_points_listed = 5;
+  Kappa_solve_status status = Kappa_solve_status::UNSOLVED;  ///< the outcome (see Kappa_solve_status)
+  /// Deprecated (kept one release): status == Kappa_solve_status::INTERIOR.
   bool converged = false;
   bool warm_started = false;           ///< the solution came from the previous one (not a cold start)
   std::size_t refinement_passes = 0;   ///< alternating passes of Sec. 5.1
@@ -26,27 +64,45 @@ struct Kappa_solve_report {
   double interpolation_residual = 0;   ///< max |c_i(t_i) - Q_i| / (half size of the bounding box)
   double curvature_residual = 0;       ///< max |eq. 7| / (A_i + C_i)
   double g2_residual = 0;              ///< max | |k1|-|k2| | / (|k1|+|k2|) at joins
-  double weight_residual = 0;          ///< max |w_i - w~_i| (AUTOMATIC; 0 when converged)
+  double weight_residual = 0;          ///< max |w_i - w~_i| (AUTOMATIC; 0 when the equations hold)
   /// Energy terms: sums of squares of the same residuals (E_G2 ~ eq. 11, E_c ~ eq. 12,
   /// E_w = eq. 13, plus the interpolation constraint eq. 18 as an energy).
   double energy_interpolation = 0, energy_curvature = 0, energy_g2 = 0, energy_weight = 0;
   /// Number of t_i or lambda_i within 1e-4 of 0 or 1: the data have no (well-separated) interior solution
-  /// there (an interpolated point lands on a join); such a solve is never "converged".
+  /// there (an interpolated point lands on a join); such a solve is never INTERIOR.
   std::size_t bounds_active = 0;
-  /// The input points whose t_i or lambda_i is there (indices into points()): each lies on a
-  /// join, not at a curvature maximum (see doc/kappa_existence.md). Empty when converged.
+  /// The input points whose t_i or lambda_i is there (indices into points(), increasing): each
+  /// lies on a join, not at a curvature maximum (see doc/kappa_existence.md). Empty when INTERIOR.
+  std::vector<std::size_t> points_on_joins;
+  /// Deprecated (kept one release): the same as points_on_joins.
   std::vector<std::size_t> boundary_points;
+  /// The input points (increasing) whose t_i is inside (0, 1) but where the curvature of the
+  /// piece has a MINIMUM instead of a maximum (the sign of the derivative of eq. 4's numerator
+  /// at t_i, in double; fair::certify() decides it exactly). Non-empty only with weights < 1;
+  /// the outcome is then UNSOLVED.
+  std::vector<std::size_t> points_at_minima;
+  /// UNSOLVED: up to worst_points_listed input points with the largest residuals, worst first.
+  /// Empty otherwise.
+  std::vector<Kappa_point_residual> worst_points;
   double energy() const { return energy_interpolation + energy_curvature + energy_g2 + energy_weight; }
 
   friend std::ostream& operator<<(std::ostream& out, const Kappa_solve_report& r) {
-    out << "Kappa_solve_report{converged " << r.converged << ", warm " << r.warm_started << ", passes "
+    out << "Kappa_solve_report{" << r.status << ", warm " << r.warm_started << ", passes "
         << r.refinement_passes << ", iterations " << r.iterations << ", residual " << r.residual << " (interpolation "
         << r.interpolation_residual << ", eq.7 " << r.curvature_residual << ", |kappa| " << r.g2_residual << ", weight "
         << r.weight_residual << "), bounds active " << r.bounds_active;
-    if (!r.boundary_points.empty()) {
+    if (!r.points_on_joins.empty()) {
       out << " (points on a join:";
-      for (const std::size_t i : r.boundary_points) out << ' ' << i;
+      for (const std::size_t i : r.points_on_joins) out << ' ' << i;
       out << ')';
+    }
+    if (!r.points_at_minima.empty()) {
+      out << ", points at a curvature minimum:";
+      for (const std::size_t i : r.points_at_minima) out << ' ' << i;
+    }
+    if (!r.worst_points.empty()) {
+      out << ", worst points:";
+      for (const Kappa_point_residual& p : r.worst_points) out << ' ' << p.point << " (" << p.residual << ')';
     }
     return out << ", energy " << r.energy() << "}";
   }

@@ -4,7 +4,9 @@
 // Yan, Schiller, Schaefer; doc/kappa_curves.md). Weights: "1" (polynomial kappa-curves),
 // "auto" (clamped minimum-eccentricity weights, eq. 16, optional per-point tension file) or a
 // number W used for every point; with "auto", --clamp sets the lower clamp of eq. 16 (default
-// 1/2). Writes the pieces and the solve report as JSON and a figure.
+// 1/2). Writes the pieces and the solve report as JSON and a figure. The outcome (interior, on
+// joins, unsolved: fair::Kappa_solve_status) is one line on stdout; unsolved also on stderr, and
+// the exit code is then unsolved_exit_code unless --allow-unsolved.
 
 #include "registry.h"
 #include "tool_common.h"
@@ -14,6 +16,7 @@
 #include <fair/io/svg.h>
 #include <fair/io/write_json.h>
 
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -26,10 +29,13 @@ namespace {
 /// Fewest points of a kappa-curve (Kappa_curve_2: one interior point of an open curve, a
 /// triangle for a closed one), checked here to name the file in the message.
 constexpr std::size_t minimum_points = 3;
+/// Exit code of an unsolved solve (outputs written, "status": "unsolved"), unless --allow-unsolved.
+constexpr int unsolved_exit_code = 3;
 
 struct Kappa_command_options {
-  std::string input, weights = "1", tension_file, clamp, json_out, svg_out;
+  std::string input, weights = "1", tension_file, clamp, json_out, svg_out, max_iterations;
   bool closed = false;
+  bool allow_unsolved = false;
   bool clamp_given = false; // --clamp appeared (even with an empty value, which is then rejected)
 };
 
@@ -86,6 +92,12 @@ fair::Kappa_curve_options curve_options(const Kappa_command_options& o) {
     if (!(options.weight_clamp > 0))
       throw CLI::ValidationError("--clamp", "expected a weight clamp > 0, got '" + o.clamp + "'");
   }
+  if (!o.max_iterations.empty()) {
+    const double cap = option_number(o.max_iterations, "--max-iterations");
+    if (!(cap >= 0) || cap != std::floor(cap) || cap > 1e9)
+      throw CLI::ValidationError("--max-iterations", "expected an integer >= 0, got '" + o.max_iterations + "'");
+    options.max_iterations = static_cast<std::size_t>(cap);
+  }
   return options;
 }
 
@@ -93,6 +105,8 @@ fair::Kappa_curve_options curve_options(const Kappa_command_options& o) {
 std::string curve_json(const Kappa_command_options& o, const fair::Kappa_curve_2<fair_curves::Kernel>& curve) {
   const fair::Kappa_curve_options& options = curve.options();
   const fair::Kappa_solve_report& r = curve.report();
+  nlohmann::json worst = nlohmann::json::array();
+  for (const fair::Kappa_point_residual& p : r.worst_points) worst.push_back({{"point", p.point}, {"residual", p.residual}});
   nlohmann::json pieces = nlohmann::json::array();
   for (std::size_t j = 0; j < curve.number_of_pieces(); ++j) {
     const auto& pc = curve.piece(j);
@@ -105,7 +119,11 @@ std::string curve_json(const Kappa_command_options& o, const fair::Kappa_curve_2
                          {"weight_clamp", options.weights == fair::Kappa_weights::AUTOMATIC
                                               ? nlohmann::json(options.weight_clamp)
                                               : nlohmann::json(nullptr)},
-                         {"converged", r.converged},
+                         {"status", fair::to_string(r.status)},
+                         {"points_on_joins", r.points_on_joins},
+                         {"points_at_minima", r.points_at_minima},
+                         {"worst_points", worst},
+                         {"converged", r.converged},  // deprecated: "status" == "interior"
                          {"iterations", r.iterations},
                          {"refinement_passes", r.refinement_passes},
                          {"residuals",
@@ -121,7 +139,7 @@ std::string curve_json(const Kappa_command_options& o, const fair::Kappa_curve_2
                            {"g2_eq11", r.energy_g2},
                            {"weight_eq13", r.energy_weight}}},
                          {"bounds_active", r.bounds_active},
-                         {"boundary_points", r.boundary_points},
+                         {"boundary_points", r.boundary_points},  // deprecated: "points_on_joins"
                          {"pieces", pieces}};
   std::ostringstream out;
   fair::io::write_json(out, j);
@@ -139,7 +157,34 @@ std::string curve_svg(const Kappa_command_options& o, const fair::io::Point_file
   return make_curve_figures(curve.pieces(), c).curve_svg;
 }
 
-/// The report on stdout: one line on the solve, and the points that ended on a join if any.
+/// " point 1 7" or " points 1 7" for the indices `points`.
+std::string point_list(const std::vector<std::size_t>& points) {
+  std::string s = points.size() == 1 ? " point" : " points";
+  for (const std::size_t i : points) s += " " + std::to_string(i);
+  return s;
+}
+
+/// The line of an unsolved outcome: how far (the residual) and where (the worst points), and
+/// the points at a curvature minimum.
+std::string unsolved_line(const fair::Kappa_curve_2<fair_curves::Kernel>& curve) {
+  using namespace fair_curves;
+  const fair::Kappa_solve_report& r = curve.report();
+  std::ostringstream line;
+  line << "unsolved: ";
+  if (r.residual > curve.options().tolerance) {
+    line << "residual " << format_number(r.residual, 3) << " > tolerance " << format_number(curve.options().tolerance)
+         << ", worst";
+    for (const fair::Kappa_point_residual& p : r.worst_points)
+      line << " " << p.point << " (" << format_number(p.residual, 3) << ")";
+    if (!r.points_at_minima.empty()) line << "; ";
+  }
+  if (!r.points_at_minima.empty())
+    line << "at a curvature minimum, not a maximum:" << point_list(r.points_at_minima);
+  return line.str();
+}
+
+/// The report on stdout: one line on the solve and its outcome (interior, on joins, unsolved;
+/// the points on joins and at minima by 0-based input index).
 std::string summary(const Kappa_command_options& o, const fair::Kappa_curve_2<fair_curves::Kernel>& curve) {
   using namespace fair_curves;
   const fair::Kappa_curve_options& options = curve.options();
@@ -148,15 +193,18 @@ std::string summary(const Kappa_command_options& o, const fair::Kappa_curve_2<fa
   report << o.input << ": " << curve.number_of_pieces() << " pieces, " << (options.closed ? "closed" : "open")
          << ", weights " << o.weights
          << (options.weights == fair::Kappa_weights::AUTOMATIC ? " (clamp " + format_number(options.weight_clamp) + ")" : "")
-         << ", " << (r.converged ? "converged" : "NOT converged") << " after "
-         << r.refinement_passes << " passes and " << r.iterations << " iterations, residual "
-         << format_number(r.residual, 3) << ", energy " << format_number(r.energy(), 3) << "\n";
-  if (!r.boundary_points.empty()) {
-    // No interior solution found: name the points that ended on a join (doc/kappa_existence.md).
-    report << "  on a join (t or lambda at 0 or 1), not at a curvature maximum: point";
-    for (const std::size_t i : r.boundary_points) report << " " << i;
-    report << " (0-based)\n";
+         << ", " << r.refinement_passes << " passes and " << r.iterations << " iterations, residual "
+         << format_number(r.residual, 3) << ", energy " << format_number(r.energy(), 3) << "; ";
+  switch (r.status) {
+    case fair::Kappa_solve_status::INTERIOR: report << "interior: every point at a curvature maximum of its piece"; break;
+    case fair::Kappa_solve_status::ON_JOINS:
+      // No interior solution: the box-constrained one (doc/kappa_existence.md).
+      report << "on joins:" << point_list(r.points_on_joins)
+             << " on a join (t or lambda at 0 or 1), not at a curvature maximum; the rest interior";
+      break;
+    case fair::Kappa_solve_status::UNSOLVED: report << unsolved_line(curve); break;
   }
+  report << "\n";
   return report.str();
 }
 
@@ -174,6 +222,11 @@ void run_kappa(const Kappa_command_options& o) {
   const std::string json_text = o.json_out.empty() ? std::string() : curve_json(o, curve);
   const std::string svg_text = o.svg_out.empty() ? std::string() : curve_svg(o, data, curve);
   write_outputs(summary(o, curve), o.json_out, json_text, {{o.svg_out, svg_text}});
+  if (curve.report().status == fair::Kappa_solve_status::UNSOLVED) {
+    std::cerr << "fair-curves kappa: " << o.input << ": " << unsolved_line(curve)
+              << (o.allow_unsolved ? "" : " (exit code 3; --allow-unsolved to exit 0)") << '\n';
+    if (!o.allow_unsolved) throw fair_curves::Exit_code{unsolved_exit_code};
+  }
 }
 
 } // namespace
@@ -191,6 +244,10 @@ void register_kappa_command(CLI::App& app) {
   CLI::Option* clamp = sub->add_option("--clamp", options->clamp,
                   "with --weights auto: the lower clamp of eq. 16, a number > 0 (default 1/2; small values approach "
                   "the unclamped minimum-eccentricity weights of eq. 15)");
+  sub->add_option("--max-iterations", options->max_iterations,
+                  "cap on the Jacobians of the solve, an integer >= 0 (default 200)");
+  sub->add_flag("--allow-unsolved", options->allow_unsolved,
+                "exit 0 even when the solve is unsolved (default: exit code 3, outputs still written)");
   sub->add_option("-o,--output", options->json_out, "write the pieces and the report as JSON ('-': only JSON on stdout)");
   sub->add_option("--svg", options->svg_out, "draw the curve, its control polygons and curvature comb");
   sub->callback([options, clamp] {

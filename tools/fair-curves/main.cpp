@@ -3,7 +3,8 @@
 // fair-curves: a thin command-line layer over the fair library. Each subcommand registers
 // itself from its own file (see registry.h). Exit codes: 0 success, 1 bad input data (a
 // missing or malformed file, a degenerate configuration: one message on stderr naming the file
-// and line), 2 usage error (unknown option, malformed option value).
+// and line), 2 usage error (unknown option, malformed option value), 3 a result that does not
+// solve the problem (kappa: an unsolved solve, its outputs still written; fair_curves::Exit_code).
 
 #include "registry.h"
 
@@ -31,6 +32,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
+  } catch (const fair_curves::Exit_code& e) {
+    return e.code;
   } catch (const fair::Error& e) {
     // A data error that does not name the file it came from (e.g. a degenerate configuration
     // found by the library): prefix the subcommand's input file, so that the one line says

@@ -26,6 +26,12 @@
 
 namespace fair_curves {
 
+/// Thrown by a subcommand after it has written its outputs to make the program exit with
+/// `code` (main.cpp), e.g. 3 for an unsolved kappa-curve (doc/fair_curves_program.md).
+struct Exit_code {
+  int code;
+};
+
 typedef void (*Command_registrar)(CLI::App&);
 
 struct Command_entry {

@@ -39,6 +39,7 @@
 #include <fair/internal/kappa/jacobian.h>
 #include <fair/internal/kappa/refinement.h>
 #include <fair/internal/kappa/system.h>
+#include <fair/internal/conic/curvature_extrema.h>
 
 #include <algorithm>
 #include <cmath>
@@ -444,6 +445,69 @@ inline std::size_t bounds_active(const Problem& pb, const Kappa_solver_state& st
   return count;
 }
 
+/// Relative size (to the terms of eq. 4's coefficients, before their cancellation) above which
+/// a negative derivative of eq. 4's numerator at t_i counts as a minimum. Below it the piece is
+/// a circular arc to that relative accuracy (the numerator vanishes identically for a circle):
+/// its curvature has no extremum worth the name there, and no minimum is reported.
+constexpr double minimum_derivative_floor = 1e-8;
+
+/// Whether the input point of block i (t_i inside the bound margin) is at a curvature MINIMUM
+/// of its piece: the numerator E of kappa' (eq. 4, fair::internal::conic::eq4_coefficients; E
+/// goes from - to + at a maximum of |kappa|) decreases at t_i, by more than
+/// minimum_derivative_floor relative to the size of its terms. The weights are st.w.
+inline bool point_at_minimum(const Problem& pb, const Kappa_solver_state& st, std::size_t i) {
+  const double t = st.t[i], w = st.w[i];
+  if (!(t > bound_margin && t < 1 - bound_margin)) return false;
+  Window<double> win;
+  build_window(pb, st, i, win);
+  Piece_values<double> pv;
+  piece_values(pb, st, i, win, 2, pv);
+  const double* X = win.X[2];
+  const std::vector<double> b = conic::eq4_coefficients<double>(pv.E0[0], pv.E0[1], X[0], X[1], pv.E2[0], pv.E2[1], w);
+  const double u = 1 - t;
+  // E'(t) / 4 in the Bernstein basis of degree 3.
+  const double d = (b[1] - b[0]) * u * u * u + 3 * (b[2] - b[1]) * u * u * t + 3 * (b[3] - b[2]) * u * t * t +
+                   (b[4] - b[3]) * t * t * t;
+  const auto sq = [](double x, double y) { return x * x + y * y; };
+  const double size = (w * w * w + w + 1) * (sq(pv.E0[0] - X[0], pv.E0[1] - X[1]) + sq(X[0] - pv.E2[0], X[1] - pv.E2[1]) +
+                                             sq(pv.E0[0] - pv.E2[0], pv.E0[1] - pv.E2[1]));
+  return d < -minimum_derivative_floor * size;
+}
+
+/// The outcome of a solve whose per-block residuals are F (4 per block, as evaluate()) and, with
+/// automatic weights, weight_error (|w_i - eq. 16|, per block; empty otherwise): status, points
+/// at minima, worst points, and the deprecated aliases converged and boundary_points.
+inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solve_settings& settings,
+                     const std::vector<double>& F, const std::vector<double>& weight_error, Kappa_solve_report& res) {
+  res.bounds_active = bounds_active(pb, st, &res.points_on_joins);
+  res.points_at_minima.clear();
+  for (std::size_t i = 0; i < pb.n; ++i)
+    if (point_at_minimum(pb, st, i)) res.points_at_minima.push_back(pb.point_index(i));
+  const bool solved = res.residual <= settings.tolerance;
+  res.status = !solved || !res.points_at_minima.empty() ? Kappa_solve_status::UNSOLVED
+               : res.bounds_active > 0                  ? Kappa_solve_status::ON_JOINS
+                                                        : Kappa_solve_status::INTERIOR;
+  res.converged = res.status == Kappa_solve_status::INTERIOR;
+  res.boundary_points = res.points_on_joins;
+  res.worst_points.clear();
+  if (res.status != Kappa_solve_status::UNSOLVED) return;
+  std::vector<Kappa_point_residual> all(pb.n);
+  for (std::size_t i = 0; i < pb.n; ++i) {
+    double r = weight_error.empty() ? 0.0 : weight_error[i];
+    for (int c = 0; c < 4; ++c) {
+      const double a = std::abs(F[4 * i + c]);
+      r = std::isnan(a) ? std::numeric_limits<double>::infinity() : std::max(r, a);  // NaN: the worst
+    }
+    all[i] = Kappa_point_residual{pb.point_index(i), r};
+  }
+  const std::size_t k = std::min(all.size(), Kappa_solve_report::worst_points_listed);
+  std::partial_sort(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(k), all.end(),
+                    [](const Kappa_point_residual& a, const Kappa_point_residual& b) {
+                      return a.residual > b.residual || (a.residual == b.residual && a.point < b.point);
+                    });
+  res.worst_points.assign(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(k));
+}
+
 /// Iteration cap of the Newton phase before the Levenberg-Marquardt fallback takes over.
 constexpr std::size_t newton_iterations = 30;
 /// Iteration cap of the Levenberg-Marquardt run of a local warm-start stage.
@@ -453,10 +517,9 @@ constexpr std::size_t local_lm_iterations = 20;
 inline Kappa_solve_report finish(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
                                  Kappa_solve_report res, double fmax) {
   const std::size_t n = pb.n;
-  std::vector<double> F;
-  res.converged = fmax <= settings.tolerance;
+  std::vector<double> F, weight_error;
   std::vector<double> w(n, 1.0);
-  if (res.converged) {
+  if (fmax <= settings.tolerance) {
     res.residual = evaluate(pb, st, F, &res, &w);
     st.w = w;
   } else {
@@ -472,18 +535,19 @@ inline Kappa_solve_report finish(const Problem& pb, Kappa_solver_state& st, cons
     frozen.weight = st.w;
     res.residual = evaluate(frozen, st, F, &res);
     if (pb.mode == Kappa_weights::AUTOMATIC) {
-      std::vector<double> wt(n, 1.0);
-      evaluate(pb, st, F, nullptr, &wt);
+      std::vector<double> wt(n, 1.0), G;
+      evaluate(pb, st, G, nullptr, &wt);
+      weight_error.resize(n);
       for (std::size_t i = 0; i < n; ++i) {
         const double e = st.w[i] - wt[i];
+        weight_error[i] = std::abs(e);
         res.weight_residual = std::max(res.weight_residual, std::abs(e));
         res.energy_weight += e * e;
       }
       res.residual = std::max(res.residual, res.weight_residual);
     }
   }
-  res.bounds_active = bounds_active(pb, st, &res.boundary_points);
-  res.converged = res.residual <= settings.tolerance && res.bounds_active == 0;
+  classify(pb, st, settings, F, weight_error, res);
   return res;
 }
 
@@ -640,7 +704,7 @@ inline Kappa_solve_report solve_with_warm_start(const Problem& pb, const Kappa_s
   warm.warm = true;
   warm.moved = pb.block_of_point(moved_point);
   const Kappa_solve_report warm_report = solve(pb, st, warm);
-  if (warm_report.converged) return warm_report;
+  if (warm_report.status == Kappa_solve_status::INTERIOR) return warm_report;
   Kappa_solver_state cold;
   Kappa_solve_report cold_report = solve(pb, cold, settings);
   if (!(cold_report.residual < warm_report.residual)) return warm_report;
