@@ -325,47 +325,39 @@ TEST(Kappa, WarmStartIsLocalAndAgreesWithColdSolve) {
 
 // ------------------------------------------------------------------ bad and hard input
 
-template <class F>
-std::string error_message(F f) {
-  try {
-    f();
-  } catch (const fair::Invalid_input_error& e) {
-    return e.what();
-  }
-  return "no Invalid_input_error";
-}
+using fair_test::invalid_input_message;
 
 TEST(Kappa, BadInput) {
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
-  EXPECT_NE(error_message([] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1)}); }).find("at least 3"), std::string::npos);
-  EXPECT_NE(error_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(nan, 1), Pd(2, 0)}); }).find("non-finite"),
+  EXPECT_NE(invalid_input_message([] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1)}); }).find("at least 3"), std::string::npos);
+  EXPECT_NE(invalid_input_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(nan, 1), Pd(2, 0)}); }).find("non-finite"),
             std::string::npos);
-  EXPECT_NE(error_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, inf), Pd(2, 0)}); }).find("non-finite"),
+  EXPECT_NE(invalid_input_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, inf), Pd(2, 0)}); }).find("non-finite"),
             std::string::npos);
-  EXPECT_NE(error_message([] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(1, 1), Pd(2, 0)}); }).find("coincide"),
+  EXPECT_NE(invalid_input_message([] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(1, 1), Pd(2, 0)}); }).find("coincide"),
             std::string::npos);
   fair::Kappa_curve_options closed;
   closed.closed = true;
-  EXPECT_NE(error_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 0), Pd(0, 0)}, closed); })
+  EXPECT_NE(invalid_input_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 0), Pd(0, 0)}, closed); })
                 .find("coincide"),
             std::string::npos);
-  EXPECT_NE(error_message([] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 2), Pd(5, 5)}); }).find("collinear"),
+  EXPECT_NE(invalid_input_message([] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 2), Pd(5, 5)}); }).find("collinear"),
             std::string::npos);
-  EXPECT_NE(error_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 0), Pd(3, 0), Pd(2, 0)}, closed); })
+  EXPECT_NE(invalid_input_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 0), Pd(3, 0), Pd(2, 0)}, closed); })
                 .find("collinear"),
             std::string::npos);
   fair::Kappa_curve_options fixed;
   fixed.weights = fair::Kappa_weights::FIXED;
   fixed.fixed_weights = {1, 1};
-  EXPECT_NE(error_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 0)}, fixed); }).find("one weight"),
+  EXPECT_NE(invalid_input_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 0)}, fixed); }).find("one weight"),
             std::string::npos);
   fixed.fixed_weights = {1, -2, 1};
-  EXPECT_NE(error_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 0)}, fixed); }).find("-2"),
+  EXPECT_NE(invalid_input_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 0)}, fixed); }).find("-2"),
             std::string::npos);
   fair::Kappa_curve_options aut;
   aut.weights = fair::Kappa_weights::AUTOMATIC;
   aut.tension = {1, nan, 1};
-  EXPECT_NE(error_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 0)}, aut); }).find("tension"),
+  EXPECT_NE(invalid_input_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 0)}, aut); }).find("tension"),
             std::string::npos);
 }
 

@@ -4,6 +4,8 @@
 #ifndef FAIR_TEST_SUPPORT_H
 #define FAIR_TEST_SUPPORT_H
 
+#include <fair/Errors.h>
+
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Gmpq.h>
@@ -15,6 +17,7 @@
 #include <cmath>
 #include <cstddef>
 #include <random>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -97,6 +100,18 @@ std::vector<typename K::Point_2> random_points(std::mt19937& rng, std::size_t n)
 template <class K>
 typename K::FT q(int n, int d = 1) {
   return typename K::FT(n) / typename K::FT(d);
+}
+
+// The message of the fair::Invalid_input_error that f() throws ("no Invalid_input_error" if it
+// throws none), for tests that check what a typed error names.
+template <class F>
+std::string invalid_input_message(F f) {
+  try {
+    f();
+  } catch (const fair::Invalid_input_error& e) {
+    return e.what();
+  }
+  return "no Invalid_input_error";
 }
 
 } // namespace fair_test

@@ -388,15 +388,7 @@ TYPED_TEST(Csr, ClosedSquareIsSymmetric) {
 // ---------------------------------------------------------------------------------------------
 // Errors
 
-template <class F>
-std::string invalid_input_message(F f) {
-  try {
-    f();
-  } catch (const fair::Invalid_input_error& e) {
-    return e.what();
-  }
-  return "no Invalid_input_error";
-}
+using fair_test::invalid_input_message;
 #define EXPECT_INVALID(expr, text) EXPECT_NE(invalid_input_message([&] { expr; }).find(text), std::string::npos) << invalid_input_message([&] { expr; })
 
 TYPED_TEST(Csr, TypedErrorsNameTheProblem) {

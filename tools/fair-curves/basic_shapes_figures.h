@@ -21,17 +21,6 @@
 
 namespace fair_curves {
 
-/// The spline in double, for drawing.
-template <class K>
-fair::Cubic_spline_2<Kernel> to_double_spline(const fair::Cubic_spline_2<K>& s) {
-  std::vector<double> t, w;
-  std::vector<Point_2> p;
-  for (const auto& x : s.breakpoints()) t.push_back(CGAL::to_double(x));
-  for (const auto& x : s.weights()) w.push_back(CGAL::to_double(x));
-  for (const auto& x : s.control_points()) p.push_back(Point_2(CGAL::to_double(x.x()), CGAL::to_double(x.y())));
-  return fair::Cubic_spline_2<Kernel>(t, p, w, s.is_closed());
-}
-
 /// Proposition 1 (fair::spline_convexity) certified for the spline's own data: its breakpoints,
 /// control points and weights taken exactly into EPECK, so that rounding in the pieces of a double
 /// spline cannot decide the verdict (the double kernel's predicates are not exact).

@@ -28,17 +28,6 @@ typedef CGAL::Simple_cartesian<CGAL::Gmpq> Exact;
 typedef Exact::FT Q;
 typedef Exact::Point_2 Exact_point;
 
-// The spline in double, for drawing.
-template <class K>
-fair::Cubic_spline_2<Kernel> in_double(const fair::Cubic_spline_2<K>& s) {
-  std::vector<double> t, w;
-  std::vector<Point_2> p;
-  for (const auto& x : s.breakpoints()) t.push_back(CGAL::to_double(x));
-  for (const auto& x : s.weights()) w.push_back(CGAL::to_double(x));
-  for (const auto& x : s.control_points()) p.push_back(Point_2(CGAL::to_double(x.x()), CGAL::to_double(x.y())));
-  return fair::Cubic_spline_2<Kernel>(t, p, w, s.is_closed());
-}
-
 template <class K>
 void add_convexity(const fair::Cubic_spline_2<K>& s, fair_curves::Curve_case& c) {
   const fair::Spline_convexity_report<K> r = fair::spline_convexity(s);
@@ -76,7 +65,7 @@ void exact_circle(fair_curves::Gallery& gallery) {
   c.measurements.emplace_back("rational parameters k/100 with x^2 + y^2 = 1 exactly", std::to_string(on_circle) + " of 101");
   c.measurements.emplace_back("rational parameters where spline = conic exactly", std::to_string(equal) + " of 101");
   add_convexity(s, c);
-  add_spline_case(gallery, in_double(s), c);
+  add_spline_case(gallery, fair_curves::to_double_spline(s), c);
 }
 
 void conic_and_wide_arc(fair_curves::Gallery& gallery) {
@@ -92,7 +81,7 @@ void conic_and_wide_arc(fair_curves::Gallery& gallery) {
     c.caption = "A rational quadratic with weight 2 (a hyperbola arc) marked more densely towards its end: the "
                 "breakpoints follow the marks, the control polygon refines there, the curve stays exactly the conic.";
     add_convexity(s, c);
-    add_spline_case(gallery, in_double(s), c);
+    add_spline_case(gallery, fair_curves::to_double_spline(s), c);
   }
   {
     const double deg = std::acos(-1.0) / 180;
@@ -131,7 +120,7 @@ void quadratic_design(fair_curves::Gallery& gallery) {
               "the data points).";
   c.measurements.emplace_back("quadratic shapes", std::to_string(shapes.size()));
   add_convexity(s, c);
-  add_spline_case(gallery, in_double(s), c);
+  add_spline_case(gallery, fair_curves::to_double_spline(s), c);
 }
 
 } // namespace

@@ -9,6 +9,7 @@
 
 #include "gallery.h"
 
+#include <fair/Cubic_spline_2.h>
 #include <fair/Curve_sampling.h>
 #include <fair/Errors.h>
 #include <fair/io/parsing.h>
@@ -31,6 +32,17 @@ namespace fair_curves {
 /// The kernel of the program: points typed on the command line or read from files are doubles.
 typedef CGAL::Simple_cartesian<double> Kernel;
 typedef Kernel::Point_2 Point_2;
+
+/// The spline in double, for drawing.
+template <class K>
+fair::Cubic_spline_2<Kernel> to_double_spline(const fair::Cubic_spline_2<K>& s) {
+  std::vector<double> t, w;
+  std::vector<Point_2> p;
+  for (const auto& x : s.breakpoints()) t.push_back(CGAL::to_double(x));
+  for (const auto& x : s.weights()) w.push_back(CGAL::to_double(x));
+  for (const auto& x : s.control_points()) p.push_back(Point_2(CGAL::to_double(x.x()), CGAL::to_double(x.y())));
+  return fair::Cubic_spline_2<Kernel>(t, p, w, s.is_closed());
+}
 
 /// Writes what a subcommand computed, only once everything has been computed (a failure leaves
 /// no partial output): the text report on stdout unless the JSON goes there (`-o -`: stdout
