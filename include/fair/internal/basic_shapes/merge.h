@@ -32,6 +32,8 @@
 #include <fair/Basic_shape_design.h>
 #include <fair/Errors.h>
 
+#include <CGAL/Kernel/global_functions_2.h>
+#include <CGAL/squared_distance_2.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
