@@ -13,6 +13,11 @@ jobs=${FAIR_JOBS:-$(nproc)}
 
 packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev libboost-dev
           libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libpng-dev)
+# Test-only dependencies (never of the library): FreeType and Debian's DejaVu fonts for the glyph
+# outlines of the real-data tests; OpenCASCADE's FairCurve_Batten (and the TBB its CMake config
+# needs) as the peer of the optimal curves.
+test_packages=(libfreetype-dev fonts-dejavu-core libocct-modeling-algorithms-dev libocct-modeling-data-dev
+               libocct-foundation-dev libtbb-dev)
 
 setup() {
   local missing=()
@@ -46,11 +51,13 @@ case "${1:-}" in
     ./build/tools/fair-curves/fair-curves demo --out demo-out
     echo "bootstrap: open demo-out/index.html" ;;
   test)
+    packages+=("${test_packages[@]}")
     setup
     configure build -DFAIR_BUILD_TESTS=ON -DFAIR_BUILD_EXAMPLES=ON
     cmake --build build -j "$jobs"
     ctest --test-dir build --output-on-failure -j "$jobs" ;;
   sanitize)
+    packages+=("${test_packages[@]}")
     setup
     # -g1: line tables only — enough for the sanitizers' file:line stack traces, and much less
     # debug information to generate and link for the CGAL templates than -g

@@ -25,7 +25,7 @@ namespace {
 using fair_test::q;
 using fair_test::same;
 
-typedef ::testing::Types<fair_test::EPECK, fair_test::SC_gmpq> Exact_kernels;
+using fair_test::Exact_kernels;
 
 template <class K>
 class Convexity : public ::testing::Test {};

@@ -29,7 +29,7 @@ TYPED_TEST_SUITE(Exact_spline, fair_test::All_kernels);
 
 template <class K>
 class Exact_spline_exact : public ::testing::Test {};
-typedef ::testing::Types<fair_test::EPECK, fair_test::SC_gmpq> Exact_kernels;
+using fair_test::Exact_kernels;
 TYPED_TEST_SUITE(Exact_spline_exact, Exact_kernels);
 
 template <class K>

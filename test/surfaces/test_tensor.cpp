@@ -117,7 +117,7 @@ TEST(TensorNetPoints, Point3CoefficientsAreAffine) {
 
 template <class K>
 class TensorRevolution : public ::testing::Test {};
-typedef ::testing::Types<fair_test::EPECK, fair_test::SC_gmpq> Exact_kernels;
+using fair_test::Exact_kernels;
 TYPED_TEST_SUITE(TensorRevolution, Exact_kernels);
 
 // A surface of revolution of a rational spline profile over a rational quarter circle: patches of
