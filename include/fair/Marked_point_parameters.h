@@ -9,6 +9,7 @@
 
 #include <fair/Errors.h>
 #include <fair/Parametric_curve_2.h>
+#include <fair/internal/common/constants.h>
 #include <fair/internal/parametric/nearest.h>
 
 #include <algorithm>
@@ -28,8 +29,7 @@ namespace fair {
 /// Both sines are > 0 for 0 < alpha_i < alpha: no cancellation, relative error a few ulps.
 /// Throws Precondition_error unless 0 < alpha < 2 pi and 0 <= alpha_i <= alpha.
 inline double circle_arc_parameter(double alpha_i, double alpha) {
-  const double two_pi = 6.283185307179586476925;
-  internal::require(std::isfinite(alpha) && alpha > 0 && alpha < two_pi, "circle_arc_parameter: opening angle alpha = ",
+  internal::require(std::isfinite(alpha) && alpha > 0 && alpha < internal::common::two_pi, "circle_arc_parameter: opening angle alpha = ",
                     alpha, " is not in (0, 2 pi)");
   internal::require(std::isfinite(alpha_i) && alpha_i >= 0 && alpha_i <= alpha, "circle_arc_parameter: alpha_i = ",
                     alpha_i, " is not in [0, alpha = ", alpha, "]");

@@ -18,6 +18,7 @@
 #define FAIR_IO_SURFACE_OF_REVOLUTION_H
 
 #include <fair/Errors.h>
+#include <fair/internal/common/constants.h>
 #include <fair/io/internal/render/png.h>
 #include <fair/io/internal/render/profile.h>
 #include <fair/io/internal/render/raster.h>
@@ -98,7 +99,7 @@ inline void check_render_options(const Surface_of_revolution_options& o) {
   const double m = std::max(std::fabs(o.axis_direction[0]), std::fabs(o.axis_direction[1]));
   require(std::isfinite(m) && m > 0, f, "the axis direction (", o.axis_direction[0], ", ", o.axis_direction[1],
           ") is zero or not finite");
-  const double half_pi = 2 * std::atan(1.0);
+  using fair::internal::common::half_pi;
   require(std::isfinite(o.elevation) && std::fabs(o.elevation) < half_pi, f, "elevation ", o.elevation,
           " is not in (-pi/2, pi/2)");
   require(o.stripes >= 1 && o.stripes <= 4096, f, "stripes = ", o.stripes, " is not in 1..4096");

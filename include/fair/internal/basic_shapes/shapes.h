@@ -13,6 +13,7 @@
 #include <fair/Basic_shape_design.h>
 #include <fair/Errors.h>
 #include <fair/Exact_spline_conversion.h>
+#include <fair/internal/common/constants.h>
 #include <fair/Marked_point_parameters.h>
 
 #include <CGAL/number_utils.h>
@@ -89,7 +90,7 @@ Basic_shape_2<K> Basic_shape_2<K>::circle_arc(const Point_2& center, const FT& r
   if (!(radius > FT(0)) || !std::isfinite(r))
     throw Invalid_input_error(internal::message(fn, ": the radius ", r, " must be finite and > 0"));
   const double opening = end_angle - start_angle;
-  if (!std::isfinite(start_angle) || !std::isfinite(end_angle) || !(opening > 0) || opening > 2 * M_PI)
+  if (!std::isfinite(start_angle) || !std::isfinite(end_angle) || !(opening > 0) || opening > internal::common::two_pi)
     throw Invalid_input_error(internal::message(fn, ": degenerate arc from ", start_angle, " to ", end_angle,
                                                 " rad: the opening ", opening,
                                                 " must be in (0, 2 pi] (counter-clockwise)"));

@@ -18,6 +18,7 @@
 #define FAIR_INTERNAL_EXACT_CONVERSION_CIRCLE_H
 
 #include <fair/Errors.h>
+#include <fair/internal/common/constants.h>
 #include <fair/Rational_bezier_2.h>
 
 #include <CGAL/number_utils.h>
@@ -30,7 +31,7 @@ namespace fair {
 namespace internal {
 namespace exact_conversion {
 
-constexpr double pi = 3.14159265358979323846;
+using common::pi;
 
 /// The elevated cubic of the homogeneous quadratic (P0,1), (hx, hy, hw), (P2,1).
 /// \throws Precondition_error unless 1 + 2 hw > 0 (the cubic weights must be positive).

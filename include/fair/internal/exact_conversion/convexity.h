@@ -31,6 +31,7 @@
 #include <fair/internal/bernstein/signed_roots.h>
 #include <fair/Errors.h>
 #include <fair/Rational_bezier_2.h>
+#include <fair/internal/common/constants.h>
 #include <fair/internal/common/exact_conversion.h>
 
 #include <CGAL/FPU.h>
@@ -197,7 +198,7 @@ inline bool certainly_regular(const Bernstein_polynomial<CGAL::Interval_nt<false
   }
   if (angle.empty()) return false;
   std::sort(angle.begin(), angle.end());
-  const double pi = 3.14159265358979323846;
+  using common::pi;
   // The largest gap between circularly consecutive directions; the arc holding them all is its complement.
   std::size_t at = angle.size() - 1;
   double gap = angle.front() + 2 * pi - angle.back();

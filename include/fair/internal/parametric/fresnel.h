@@ -19,6 +19,7 @@
 #define FAIR_INTERNAL_PARAMETRIC_FRESNEL_H
 
 #include <fair/Errors.h>
+#include <fair/internal/common/constants.h>
 #include <fair/internal/metrics/quadrature.h>
 
 #include <cmath>
@@ -40,7 +41,8 @@ constexpr std::size_t fresnel_fraction_cap = 2000;
 
 inline void fresnel(double x, double& c, double& s) {
   require(std::isfinite(x), "fresnel_integrals: x = ", x, " is not finite");
-  const double ax = std::fabs(x), pi = 3.14159265358979323846;
+  using common::pi;
+  const double ax = std::fabs(x);
   if (ax == 0) {
     c = s = 0;
   } else if (ax <= fresnel_series_limit) {

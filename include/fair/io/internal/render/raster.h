@@ -29,6 +29,7 @@
 #define FAIR_IO_INTERNAL_RENDER_RASTER_H
 
 #include <fair/Errors.h>
+#include <fair/internal/common/constants.h>
 #include <fair/io/internal/render/profile.h>
 
 #include <algorithm>
@@ -108,7 +109,7 @@ void render(const Profile<Piece>& profile, const Options& o, Result& res) {
   for (std::size_t i = 0; i < n; ++i)
     for (int k = 0; k < per; ++k) svals.push_back(static_cast<double>(i) + static_cast<double>(k) / per);
   svals.push_back(static_cast<double>(n));
-  const double two_pi = 2 * std::acos(-1.0);
+  using fair::internal::common::two_pi;
   std::vector<double> cs(na + 1), sn(na + 1), phis(na + 1);
   for (int j = 0; j <= na; ++j) {
     phis[j] = two_pi * j / na;
