@@ -152,8 +152,9 @@ struct Basic_shape_design_2 {
 /// The ONE C^2 spline of the shapes (Fig. 9), open (clamped at the first shape's start and the
 /// last shape's end) or closed (periodic). O(total number of control points); exact in an exact
 /// kernel. Editing its control points (Cubic_spline_2::with_control_point) keeps C^2.
-/// \throws Precondition_error for no shape, a closed part, or a bad merge tolerance; a closed
-/// design needs at least 3 control points (always true unless a lone segment is closed on itself).
+/// \throws Precondition_error for no shape, a closed part, or a bad merge tolerance;
+/// Invalid_input_error for a closed design whose control points all lie on one line (e.g. a lone
+/// segment closed on itself: a curve there and back).
 template <class K>
 Basic_shape_design_2<K> basic_shape_design(const std::vector<Basic_shape_2<K>>& shapes,
                                            const Basic_shape_design_options& options = Basic_shape_design_options());

@@ -306,6 +306,14 @@ TYPED_TEST(Shapes, BadShapesAndOptionsAreTypedErrors) {
   const auto d = fair::basic_shape_design(one);
   EXPECT_EQ(d.spline.number_of_control_points(), 4u);
   EXPECT_TRUE(d.joins.empty());
+  const std::string what = fair_test::invalid_input_message([&] { fair::basic_shape_design(one, fair::Basic_shape_design_options{true}); });
+  EXPECT_NE(what.find("lie on one line"), std::string::npos) << what;
+  // There and back along one line, closed: also no interior. A triangle of segments is fine.
+  const std::vector<S> back = {S::segment(P(0, 0), P(2, 0)), S::segment(P(2, 0), P(0, 0))};
+  EXPECT_THROW(fair::basic_shape_design(back, fair::Basic_shape_design_options{true}), fair::Invalid_input_error);
+  const std::vector<S> triangle = {S::segment(P(0, 0), P(2, 0)), S::segment(P(2, 0), P(1, 1)),
+                                   S::segment(P(1, 1), P(0, 0))};
+  EXPECT_NO_THROW(fair::basic_shape_design(triangle, fair::Basic_shape_design_options{true}));
 }
 
 // Circle arcs from angles: split into sub-arcs of at most 180 degrees (circle_arc_split), on the

@@ -12,6 +12,7 @@
 
 #include "test_support.h"
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -466,6 +467,123 @@ std::vector<Piece> pieces_between(const std::vector<Piece>& p, std::size_t first
   return std::vector<Piece>(p.begin() + first, p.begin() + last);
 }
 
+// An independent construction of eq. 6 (corrected), in plain double, from the definitions rather
+// than the library's stencils: each quadratic interpolant f_j through q_{j-1}, q_j, q_{j+1} in
+// Lagrange form, the de Boor points p_i^L, p_i, p_i^R as its cubic blossom F(t_{i-1}, t_i, t_{i+1})
+// (the blossom of a quadratic A + B t + C t^2 is A + B (u+v+w)/3 + C (uv+uw+vw)/3), kappa_j from the
+// Lagrange derivatives, and c_i = (1 - nu)(mu p^L + (1 - mu) p) + nu ((1 - mu') p^R + mu' p) with
+// mu = r(kappa_i, kappa_{i-1}), nu = r(kappa_{i-1}, kappa_{i+1}), mu' = r(kappa_{i+1}, kappa_i),
+// r(a, b) = a / (a + b). Open ends: f_0 := f_1, f_m := f_{m-1} (clamped). Chordal knots.
+struct Csr_oracle {
+  std::vector<std::array<double, 2>> q;
+  bool closed;
+  std::vector<double> t;  // closed: n + 1 knots, t_n closing back to q_0
+  bool uniform_weights = false;  // mu = nu = 1/2: w_L = w_R = 1/4, no curvature sensitivity
+  explicit Csr_oracle(std::vector<std::array<double, 2>> pts, bool c) : q(std::move(pts)), closed(c) {
+    const std::size_t n = q.size(), edges = closed ? n : n - 1;
+    t.assign(1, 0.0);
+    for (std::size_t i = 0; i < edges; ++i)
+      t.push_back(t.back() + std::hypot(q[(i + 1) % n][0] - q[i][0], q[(i + 1) % n][1] - q[i][1]));
+  }
+  long n() const { return long(q.size()); }
+  double knot(long i) const {  // extended periodically when closed
+    if (!closed) return t[std::size_t(i)];
+    const long k = (i % n() + n()) % n();
+    return t[std::size_t(k)] + double((i - k) / n()) * t.back();
+  }
+  std::array<double, 2> sample(long i) const { return q[std::size_t(closed ? (i % n() + n()) % n() : i)]; }
+  // Lagrange basis l_k(x) = A + B x + C x^2 of the nodes t_{j-1}, t_j, t_{j+1}.
+  std::array<double, 3> basis(long j, int k) const {
+    const double x[3] = {knot(j - 1), knot(j), knot(j + 1)};
+    const double a = x[(k + 1) % 3], b = x[(k + 2) % 3], d = (x[k] - a) * (x[k] - b);
+    return {a * b / d, -(a + b) / d, 1 / d};
+  }
+  std::array<double, 2> blossom(long j, double u, double v, double w) const {
+    std::array<double, 2> r{0, 0};
+    for (int k = 0; k < 3; ++k) {
+      const std::array<double, 3> c = basis(j, k);
+      const double b = c[0] + c[1] * (u + v + w) / 3 + c[2] * (u * v + u * w + v * w) / 3;
+      const std::array<double, 2> p = sample(j - 1 + k);
+      r[0] += b * p[0], r[1] += b * p[1];
+    }
+    return r;
+  }
+  double curvature(long j, double x) const {
+    double d[2] = {0, 0}, dd[2] = {0, 0};
+    for (int k = 0; k < 3; ++k) {
+      const std::array<double, 3> c = basis(j, k);
+      const std::array<double, 2> p = sample(j - 1 + k);
+      for (int a = 0; a < 2; ++a) d[a] += (c[1] + 2 * c[2] * x) * p[a], dd[a] += 2 * c[2] * p[a];
+    }
+    return std::fabs(d[0] * dd[1] - d[1] * dd[0]) / std::pow(std::hypot(d[0], d[1]), 3);
+  }
+  double kappa(long i) const {
+    if (closed) return curvature(i, knot(i));
+    if (i == 0) return curvature(1, knot(0));
+    if (i == n() - 1) return curvature(n() - 2, knot(n() - 1));
+    return curvature(i, knot(i));
+  }
+  static double ratio(double a, double b) { return a / (a + b); }
+  std::vector<std::array<double, 2>> control_points() const {
+    std::vector<std::array<double, 2>> out;
+    const long last = n() - 1;
+    if (!closed) out.push_back(q.front()), out.push_back(blossom(1, knot(0), knot(0), knot(1)));
+    for (long i = closed ? 0 : 1; i < (closed ? n() : last); ++i) {
+      const double u = knot(i - 1), v = knot(i), w = knot(i + 1);
+      const std::array<double, 2> p = blossom(i, u, v, w);
+      const std::array<double, 2> pl = closed || i >= 2 ? blossom(i - 1, u, v, w) : p;
+      const std::array<double, 2> pr = closed || i + 2 <= last ? blossom(i + 1, u, v, w) : p;
+      const double mu = uniform_weights ? 0.5 : ratio(kappa(i), kappa(i - 1)),
+                   nu = uniform_weights ? 0.5 : ratio(kappa(i - 1), kappa(i + 1)),
+                   mu1 = uniform_weights ? 0.5 : ratio(kappa(i + 1), kappa(i));
+      std::array<double, 2> c;
+      for (int a = 0; a < 2; ++a)
+        c[a] = (1 - nu) * (mu * pl[a] + (1 - mu) * p[a]) + nu * ((1 - mu1) * pr[a] + mu1 * p[a]);
+      out.push_back(c);
+    }
+    if (!closed) out.push_back(blossom(last - 1, knot(last - 1), knot(last), knot(last))), out.push_back(q.back());
+    return out;
+  }
+};
+
+// Curvature-sensitive data (a spiral-like loop, neighbouring curvatures differ by factors up to
+// ~2), non-uniform chordal knots: the library's control points are the oracle's to rounding, open
+// and closed. Constant weights w_L = w_R = 1/4 (no curvature sensitivity) move them by > 1e-3.
+TYPED_TEST(Csr_floating, ControlPointsMatchAnIndependentConstructionOfEq6) {
+  typedef TypeParam K;
+  typedef typename K::Point_2 P;
+  const std::vector<std::array<double, 2>> data = {{0, 0},  {1, 0.2}, {2.5, 1}, {3, 2.2},
+                                                   {2.2, 3.5}, {0.5, 4}, {-1, 3}, {-1.5, 1.2}};
+  std::vector<P> q;
+  for (const auto& p : data) q.push_back(P(p[0], p[1]));
+  for (bool closed : {false, true}) {
+    Csr_oracle oracle(data, closed);
+    const std::vector<std::array<double, 2>> expected = oracle.control_points();
+    oracle.uniform_weights = true;
+    const std::vector<std::array<double, 2>> averaged = oracle.control_points();
+    oracle.uniform_weights = false;
+    const fair::Csr_spline_2<K> csr(q, closed);
+    const std::vector<P>& got = csr.spline().control_points();
+    ASSERT_EQ(got.size(), expected.size()) << (closed ? "closed" : "open");
+    double worst = 0, spread = 0, to_averaged = 0;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      worst = std::max(worst, std::hypot(CGAL::to_double(got[i].x()) - expected[i][0],
+                                         CGAL::to_double(got[i].y()) - expected[i][1]));
+      to_averaged = std::max(to_averaged, std::hypot(CGAL::to_double(got[i].x()) - averaged[i][0],
+                                                     CGAL::to_double(got[i].y()) - averaged[i][1]));
+    }
+    EXPECT_GT(to_averaged, 1e-3) << "the curvature weights must matter on these data";
+    for (long i = 0; i + 1 < oracle.n(); ++i) {
+      const double r = oracle.kappa(i) / oracle.kappa(i + 1);
+      spread = std::max({spread, r, 1 / r});
+    }
+    EXPECT_LT(worst, 1e-12) << (closed ? "closed" : "open");
+    EXPECT_GT(spread, 1.5) << "the data must exercise unequal curvatures";
+    for (std::size_t i = 0; i < oracle.q.size(); ++i)
+      EXPECT_NEAR(csr.discrete_curvatures()[i], oracle.kappa(long(i)), 1e-12 * (1 + oracle.kappa(long(i))));
+  }
+}
+
 // The transition is the flat side from the junction sample 8 on, pieces 8..13 (clear of the
 // natural end of the classic spline, where its curvature is forced to 0). There the classic
 // interpolant (chordal knots, as the csr-spline) oscillates: its curvature undershoots to -0.09
@@ -483,10 +601,9 @@ TYPED_TEST(Csr_floating, Fig2FewerCurvatureExtremaThanTheClassicInterpolant) {
   const fair::Feature_report ei = fair::curvature_extrema(pieces_between(classic.pieces(), 8, 14));
   ASSERT_TRUE(ec.certified);
   ASSERT_TRUE(ei.certified);
-  EXPECT_EQ(ec.count(), 2u);
-  EXPECT_EQ(ei.count(), 4u);
+  EXPECT_LT(ec.count(), ei.count());  // measured: 2 against 4
   EXPECT_EQ(fair::inflections(csr.pieces()).count(), 0u);
-  EXPECT_EQ(fair::inflections(classic.pieces()).count(), 3u);
+  EXPECT_GT(fair::inflections(classic.pieces()).count(), 0u);  // measured: 3
 }
 
 } // namespace

@@ -42,7 +42,7 @@ struct Surface_of_revolution_options {
   std::array<double, 2> axis_direction{{0, 1}};  ///< its direction (default: the y-axis), not zero
   int width = 480, height = 480;                 ///< image size in pixels, 1..16384
   double elevation = 0.35;       ///< the viewer above the plane perpendicular to the axis, in (-pi/2, pi/2)
-  int stripes = 16;              ///< light tubes around the environment (a full turn); even: no seam
+  int stripes = 16;              ///< light tubes around the environment (a full turn); integer: no seam
   double stripe_width = 0.5;     ///< dark part of each stripe period, in (0, 1)
   double stripe_tilt = 0.35;     ///< angle of the tubes from the axis, towards the screen's x axis
   double diffuse = 0.35;         ///< weight of the diffuse shading, in [0, 1]

@@ -189,9 +189,19 @@ Basic_shape_design_2<K> basic_shape_design(const std::vector<Basic_shape_2<K>>& 
   for (const FT& h : intervals) knots.push_back(knots.back() + h);
   FAIR_ASSERT_MSG(closed ? points.size() + 1 == knots.size() : points.size() == knots.size() + 2,
                   fn, ": ", points.size(), " control points for ", knots.size(), " breakpoints");
-  if (closed)
-    internal::require(points.size() >= 3, fn, ": a closed design needs at least 3 control points, the shapes give ",
-                      points.size());
+  // A closed design always has >= 3 control points (each part gives >= 2, the closing join >= 1),
+  // but if all of them lie on one line the periodic curve runs there and back (e.g. one segment
+  // closed on itself): no interior, a degenerate closed curve. Decided exactly in an exact kernel.
+  if (closed) {
+    std::size_t k = 1;
+    while (k < points.size() && points[k] == points[0]) ++k;
+    bool on_one_line = true;
+    for (std::size_t i = k + 1; k < points.size() && i < points.size() && on_one_line; ++i)
+      on_one_line = CGAL::collinear(points[0], points[k], points[i]);
+    if (on_one_line)
+      throw Invalid_input_error(internal::message(fn, ": the closed design's ", points.size(),
+                                        " control points lie on one line (a curve there and back, no interior)"));
+  }
   // All weights equal (polynomial shapes only): the constructor makes it a polynomial spline.
   Cubic_spline_2<K> spline(std::move(knots), std::move(points), std::move(weights), closed);
   Basic_shape_design_2<K> out{std::move(spline), std::move(joins), std::move(spans), 0.0};

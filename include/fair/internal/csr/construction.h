@@ -206,7 +206,7 @@ Construction<K> construct(const std::vector<typename K::Point_2>& q, const std::
     end_stencil(h[0], h[1], w1, w2);
     d.push_back(Point_2(q[0].x() + w1 * (q[1].x() - q[0].x()) + w2 * (q[2].x() - q[0].x()),
                         q[0].y() + w1 * (q[1].y() - q[0].y()) + w2 * (q[2].y() - q[0].y())));
-    Weights prev, cur = weights_at(1), next;
+    Weights prev{}, cur = weights_at(1), next{};
     for (std::size_t i = 1; i < m; ++i) {
       const bool left = i >= 2, right = i + 2 <= m;
       if (right) next = weights_at(i + 1);
