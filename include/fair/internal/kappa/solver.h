@@ -469,6 +469,40 @@ bool factor_pivoted(const Problem& pb, const Block_range& range, std::size_t na,
   return plu.factor();
 }
 
+/// The fixing rule of newton()'s active set, after an accepted step: a free t_i within
+/// bound_margin of a bound (where the outcome would call it on a join anyway) is put on that face.
+/// This ends the linear "creep" of Newton's method into a root on the face, whose Jacobian is
+/// singular there (doc/kappa_existence.md, Sec. 1), in one step. Returns whether any was.
+inline bool snap_to_faces(const Problem& pb, const Block_range& range,
+                          Kappa_solver_state& st) {
+  const std::size_t na = range.all ? pb.n : range.count;
+  bool any = false;
+  for (std::size_t ii = 0; ii < na; ++ii) {
+    const std::size_t i = range_block(pb, range, ii);
+    double& t = st.t[i];
+    if (t_on_face(t)) continue;
+    if (t < bound_margin) { t = parameter_margin; any = true; }
+    else if (t > 1 - bound_margin) { t = 1 - parameter_margin; any = true; }
+  }
+  return any;
+}
+
+/// The largest alpha in (0, 1) at which the step alpha delta puts a free t_i of `range` on a
+/// bound (the first crossing), or 0 if the full step crosses none.
+inline double first_crossing(const Problem& pb, const Block_range& range, const std::vector<double>& delta,
+                             const Kappa_solver_state& st) {
+  const std::size_t na = range.all ? pb.n : range.count;
+  double alpha = 1;
+  bool any = false;
+  for (std::size_t ii = 0; ii < na; ++ii) {
+    const double t = st.t[range_block(pb, range, ii)], d = delta[4 * ii + 3];
+    if (t_on_face(t)) continue;
+    const double a = d > 0 ? (1 - parameter_margin - t) / d : d < 0 ? (parameter_margin - t) / d : 2.0;
+    if (a < alpha) { alpha = a; any = true; }
+  }
+  return any ? alpha : 0.0;
+}
+
 /// A t in (0,1) of the maximum of |kappa| of the piece of block i (the sign change - to + of
 /// eq. 4's numerator E, by bisection on the Bernstein quartic), or 1/2 if E has none there.
 inline double piece_maximum_parameter(const Problem& pb, const Kappa_solver_state& st, std::size_t i) {
@@ -483,6 +517,10 @@ inline double piece_maximum_parameter(const Problem& pb, const Kappa_solver_stat
   return 0.5 * (lo + hi);
 }
 
+/// Releases of one t_i per Newton run: a t_i released this often and back on its face stays
+/// fixed (no cycling; the outcome then lists the point among points_at_minima).
+constexpr char max_releases = 2;
+
 /// The release step of newton()'s active set at a root of the reduced system: every block of
 /// `range` whose t is on its face with a negative multiplier (face_multiplier_negative) and was
 /// not released before is released, t moved to its piece's maximum of |kappa|. Returns whether
@@ -494,13 +532,13 @@ inline bool release_faces(const Problem& pb, Kappa_solver_state& st, const Block
   std::vector<std::size_t> to_release;
   for (std::size_t ii = 0; ii < na; ++ii) {
     const std::size_t i = range.all ? ii : (range.first + ii) % pb.n;
-    if (released[ii] || !t_on_face(st.t[i]) || !face_multiplier_negative(pb, st, i)) continue;
+    if (released[ii] >= max_releases || !t_on_face(st.t[i]) || !face_multiplier_negative(pb, st, i)) continue;
     to_release.push_back(ii);
   }
   for (std::size_t ii : to_release) {  // all decided on the same state, then moved
     const std::size_t i = range.all ? ii : (range.first + ii) % pb.n;
     st.t[i] = piece_maximum_parameter(pb, st, i);
-    released[ii] = 1;
+    ++released[ii];
     any = true;
   }
   return any;
@@ -521,8 +559,9 @@ inline bool release_faces(const Problem& pb, Kappa_solver_state& st, const Block
 /// free t_i that a projected step puts on its bound is fixed from the next iteration on. At a
 /// root of the reduced system each fixed t_i whose multiplier is negative
 /// (face_multiplier_negative: the maximum of |kappa| of its piece is inside the piece) is
-/// released once -- moved to that maximum -- and the iteration goes on; a variable released
-/// once stays fixed if it comes back, so the set changes at most 3 times per block (no cycling).
+/// released -- moved to that maximum -- and the iteration goes on; a variable released
+/// max_releases times stays fixed if it comes back, so the set changes at most 2 max_releases + 1
+/// times per block (no cycling).
 /// Returns max |r| of the equations that remain (st: the last accepted state). Stops early --
 /// leaving the rest to Levenberg-Marquardt -- on a singular pivot block or a failed line search.
 inline double newton(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
@@ -628,7 +667,19 @@ inline double newton(const Problem& pb, Kappa_solver_state& st, const Solve_sett
     const double before = fmax;
     bool accepted = false;
     for (double alpha = 1.0; alpha >= newton_min_step && !accepted; alpha *= 0.5) accepted = try_step(alpha);
-    if (!accepted) break;
+    if (!accepted) {
+      // The projected step does not decrease the residual: the step up to its first crossing
+      // of a bound, where that t_i lands on its face (fixed from the next iteration on).
+      const double alpha = first_crossing(pb, range, delta, st);
+      if (!(alpha > 0) || !try_step(alpha)) break;
+    }
+    if (snap_to_faces(pb, range, st)) {
+      evaluate_range(pb, st, range, F);
+      fmax = drop_face_equations(pb, st, range, F);
+      cost = half_squared_norm(F);
+      factored = contracting = false;
+      continue;
+    }
     contracting = fmax <= newton_contraction * before;
   }
   return fmax;
@@ -669,8 +720,11 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
                      const std::vector<double>& F, const std::vector<double>& weight_error, Kappa_solve_report& res) {
   res.bounds_active = bounds_active(pb, st, &res.points_on_joins);
   res.points_at_minima.clear();
+  // A point on its face whose multiplier is negative (|kappa| of its piece falls towards the
+  // join) is at a minimum of |kappa| over its piece too, at the piece's end.
   for (std::size_t i = 0; i < pb.n; ++i)
-    if (point_at_minimum(pb, st, i)) res.points_at_minima.push_back(pb.point_index(i));
+    if (point_at_minimum(pb, st, i) || (t_on_face(st.t[i]) && face_multiplier_negative(pb, st, i)))
+      res.points_at_minima.push_back(pb.point_index(i));
   const bool solved = res.residual <= settings.tolerance;
   res.status = !solved || !res.points_at_minima.empty() ? Kappa_solve_status::UNSOLVED
                : res.bounds_active > 0                  ? Kappa_solve_status::ON_JOINS
@@ -698,6 +752,10 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
 
 /// Iteration cap of the Newton phase before the Levenberg-Marquardt fallback takes over.
 constexpr std::size_t newton_iterations = 30;
+/// Iteration cap of Newton's method in each warm-start stage: from a nearby previous solution it
+/// converges in 2-5 Jacobians; more means it is outside the basin (an edit that moves points
+/// onto or off joins), where the cold start's Newton paths are cheaper than crawling on.
+constexpr std::size_t warm_newton_iterations = 8;
 /// Iteration cap of the Levenberg-Marquardt run of a local warm-start stage.
 constexpr std::size_t local_lm_iterations = 20;
 
@@ -762,7 +820,7 @@ inline bool cold_start_newton(const Problem& pb, Kappa_solver_state& st, const S
   initial_guess(pb, st);
   const std::size_t first_passes = std::min<std::size_t>(fast_passes, settings.refinement_passes);
   refine(pb, st, first_passes, refinement_stop, res);
-  fmax = newton(pb, st, settings, res, std::min<std::size_t>(settings.max_iterations, newton_iterations));
+  fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), newton_iterations));
   if (is_root(fmax, settings) && bounds_active(pb, st) == 0) return true;
   const bool on_joins = is_root(fmax, settings);
   Kappa_solver_state joins_root;
@@ -823,7 +881,7 @@ inline bool local_warm_start(const Problem& pb, Kappa_solver_state& st, const So
     Block_range range;
     if (!local_range(pb, settings.moved, R, range)) break;
     Kappa_solver_state trial = st;
-    const std::size_t newton_cap = std::min(remaining_iterations(settings, res), newton_iterations);
+    const std::size_t newton_cap = std::min(remaining_iterations(settings, res), warm_newton_iterations);
     if (!(newton(pb, trial, settings, res, newton_cap, range) <= settings.tolerance)) {
       trial = st;
       const std::size_t lm_cap = std::min(remaining_iterations(settings, res), local_lm_iterations);
@@ -848,7 +906,7 @@ inline bool local_warm_start(const Problem& pb, Kappa_solver_state& st, const So
 inline bool global_warm_newton(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
                                Kappa_solve_report& res, double& fmax) {
   Kappa_solver_state start = st;
-  fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), newton_iterations));
+  fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), warm_newton_iterations));
   if (is_root(fmax, settings)) return true;
   st = start;
   return false;
@@ -872,22 +930,34 @@ inline double levenberg_marquardt_with_restart(const Problem& pb, Kappa_solver_s
 /// Solves the kappa-curve system; `st` holds the initial state when settings.warm.
 /// Cold start: cold_start_newton, else (from the passes) levenberg_marquardt_with_restart.
 /// Warm start (st of size n): local_warm_start around the moved block, else global_warm_newton,
-/// else levenberg_marquardt_with_restart, from the previous solution.
+/// else cold_start_newton (report().warm_started false then), else
+/// levenberg_marquardt_with_restart from the previous solution.
 inline Kappa_solve_report solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings) {
   Kappa_solve_report res;
   const bool cold = !settings.warm || st.t.size() != pb.n;
   res.warm_started = !cold;
   double fmax = std::numeric_limits<double>::infinity();
-  const bool root = cold ? cold_start_newton(pb, st, settings, res, fmax)
-                         : local_warm_start(pb, st, settings, res, fmax) || global_warm_newton(pb, st, settings, res, fmax);
+  bool root = cold ? cold_start_newton(pb, st, settings, res, fmax)
+                   : local_warm_start(pb, st, settings, res, fmax) || global_warm_newton(pb, st, settings, res, fmax);
+  if (!root && !cold) {
+    // The Newton paths of a cold start (a few Jacobians) before Levenberg-Marquardt from the
+    // previous solution: an edit that moves points onto or off joins can leave the previous
+    // solution outside Newton's basin while the cold start's passes land inside it.
+    Kappa_solver_state fresh;
+    if (cold_start_newton(pb, fresh, settings, res, fmax)) {
+      st = std::move(fresh);
+      res.warm_started = false;
+      root = true;
+    }
+  }
   if (!root) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
   return finish(pb, st, settings, res, fmax);
 }
 
 /// The warm/cold start policy of Kappa_curve_2: with a `previous` solution of the same size
 /// (offsets already in pb's normalisation), a warm start after a change of input point
-/// `moved_point` (any value that is not an input point: unknown change), and if that does not
-/// converge a cold start as well, keeping the solve with the smaller residual
+/// `moved_point` (any value that is not an input point: unknown change), and if that ends
+/// UNSOLVED a cold start as well, keeping the better solve (by outcome, then residual)
 /// (report().warm_started says which); without one, a cold start. `st` receives the solution.
 inline Kappa_solve_report solve_with_warm_start(const Problem& pb, const Kappa_solver_state* previous,
                                                 std::size_t moved_point, Solve_settings settings,
@@ -900,10 +970,17 @@ inline Kappa_solve_report solve_with_warm_start(const Problem& pb, const Kappa_s
   warm.warm = true;
   warm.moved = pb.block_of_point(moved_point);
   const Kappa_solve_report warm_report = solve(pb, st, warm);
-  if (warm_report.status == Kappa_solve_status::INTERIOR) return warm_report;
+  // A warm root on joins is the constrained solution near the previous one: kept (a cold solve
+  // costs more than the whole warm one and would jump to another root far from the edit).
+  if (warm_report.status != Kappa_solve_status::UNSOLVED) return warm_report;
   Kappa_solver_state cold;
   Kappa_solve_report cold_report = solve(pb, cold, settings);
-  if (!(cold_report.residual < warm_report.residual)) return warm_report;
+  // Ranked by outcome (INTERIOR, ON_JOINS, UNSOLVED: the enum's order), then by residual (NaN last).
+  const auto rank = [](const Kappa_solve_report& r) { return static_cast<int>(r.status); };
+  const bool cold_better = rank(cold_report) < rank(warm_report) ||
+                           (rank(cold_report) == rank(warm_report) &&
+                            (cold_report.residual < warm_report.residual || (std::isnan(warm_report.residual) && !std::isnan(cold_report.residual))));
+  if (!cold_better) return warm_report;
   st = std::move(cold);
   return cold_report;
 }
