@@ -736,6 +736,7 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
   std::vector<Kappa_point_residual> all(pb.n);
   for (std::size_t i = 0; i < pb.n; ++i) {
     double r = weight_error.empty() ? 0.0 : weight_error[i];
+    if (std::isnan(r)) r = std::numeric_limits<double>::infinity();  // NaN: the worst, and a valid sort key
     for (int c = 0; c < 4; ++c) {
       const double a = std::abs(F[4 * i + c]);
       r = std::isnan(a) ? std::numeric_limits<double>::infinity() : std::max(r, a);  // NaN: the worst
@@ -798,9 +799,15 @@ inline Kappa_solve_report finish(const Problem& pb, Kappa_solver_state& st, cons
 }
 
 /// A root of the box-constrained problem: max |r| = fmax of the equations that remain within the
-/// tolerance. Its t_i on their faces are the points on joins (Kappa_solve_status::ON_JOINS):
-/// newton() has already released those whose multiplier says the interior is better.
-inline bool is_root(double fmax, const Solve_settings& settings) { return fmax <= settings.tolerance; }
+/// tolerance, and every t_i on its face with a non-negative multiplier (face_multiplier_negative:
+/// Q_i is where its piece's |kappa| is largest). Its t_i on their faces are the points on joins
+/// (Kappa_solve_status::ON_JOINS). O(n), eq. 4 evaluated only on the faces.
+inline bool is_root(const Problem& pb, const Kappa_solver_state& st, double fmax, const Solve_settings& settings) {
+  if (!(fmax <= settings.tolerance)) return false;
+  for (std::size_t i = 0; i < pb.n; ++i)
+    if (t_on_face(st.t[i]) && face_multiplier_negative(pb, st, i)) return false;
+  return true;
+}
 
 /// What is left of the iteration cap (Jacobians of the whole solve).
 inline std::size_t remaining_iterations(const Solve_settings& settings, const Kappa_solve_report& res) {
@@ -821,8 +828,8 @@ inline bool cold_start_newton(const Problem& pb, Kappa_solver_state& st, const S
   const std::size_t first_passes = std::min<std::size_t>(fast_passes, settings.refinement_passes);
   refine(pb, st, first_passes, refinement_stop, res);
   fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), newton_iterations));
-  if (is_root(fmax, settings) && bounds_active(pb, st) == 0) return true;
-  const bool on_joins = is_root(fmax, settings);
+  if (is_root(pb, st, fmax, settings) && bounds_active(pb, st) == 0) return true;
+  const bool on_joins = is_root(pb, st, fmax, settings);
   Kappa_solver_state joins_root;
   const double joins_fmax = fmax;
   if (on_joins) joins_root = st;
@@ -835,7 +842,7 @@ inline bool cold_start_newton(const Problem& pb, Kappa_solver_state& st, const S
   if (res.iterations < settings.max_iterations && passes.refinement_passes > first_passes) {
     Kappa_solver_state after_passes = st;
     fmax = newton(pb, st, settings, res, std::min(settings.max_iterations - res.iterations, newton_iterations));
-    if (is_root(fmax, settings) && (!on_joins || bounds_active(pb, st) == 0)) return true;
+    if (is_root(pb, st, fmax, settings) && (!on_joins || bounds_active(pb, st) == 0)) return true;
     st = after_passes;
   }
   if (!on_joins) return false;
@@ -888,7 +895,7 @@ inline bool local_warm_start(const Problem& pb, Kappa_solver_state& st, const So
       levenberg_marquardt(pb, trial, settings, res, lm_cap, range);
     }
     const double fm = evaluate(pb, trial, F);
-    if (is_root(fm, settings)) {
+    if (is_root(pb, trial, fm, settings)) {
       st = trial;
       fmax = fm;
       return true;
@@ -907,7 +914,7 @@ inline bool global_warm_newton(const Problem& pb, Kappa_solver_state& st, const 
                                Kappa_solve_report& res, double& fmax) {
   Kappa_solver_state start = st;
   fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), warm_newton_iterations));
-  if (is_root(fmax, settings)) return true;
+  if (is_root(pb, st, fmax, settings)) return true;
   st = start;
   return false;
 }
