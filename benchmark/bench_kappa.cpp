@@ -125,6 +125,27 @@ void BM_kappa_warm_resolve_1000(benchmark::State& state) {
 }
 BENCHMARK(BM_kappa_warm_resolve_1000)->Unit(benchmark::kMillisecond);
 
+// Warm re-solve that changes which points are on joins: point 500 of the same curve alternates
+// between its place (INTERIOR) and a place 0.2 beyond the chord of its neighbours (ON_JOINS).
+void BM_kappa_warm_resolve_join_change_1000(benchmark::State& state) {
+  std::vector<P> points = random_star(1000, 2);
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  fair::Kappa_curve_2<K> curve(points, o);
+  const P a = points[500], m = CGAL::midpoint(points[499], points[501]);
+  const P b = m + 0.2 * (m - a);
+  bool flip = false, warm = true, changed = true;
+  for (auto _ : state) {
+    curve.move_point(500, flip ? a : b);
+    flip = !flip;
+    warm = warm && curve.report().warm_started;
+    changed = changed && curve.report().status == (flip ? fair::Kappa_solve_status::ON_JOINS : fair::Kappa_solve_status::INTERIOR);
+  }
+  state.counters["warm"] = warm ? 1 : 0;
+  state.counters["joins_changed"] = changed ? 1 : 0;
+}
+BENCHMARK(BM_kappa_warm_resolve_join_change_1000)->Unit(benchmark::kMillisecond);
+
 // Exact certification of 10^4 pieces, as 500 closed curves of 20 pieces or 100 of 100 (the
 // exact control points have ~200 n bits: O(n^2) bit operations per curve, see
 // doc/kappa_curves.md). Arg 1: 0 = fair::certify (interval filter for eq. 4, exact fallback),
