@@ -24,9 +24,14 @@
 //    bandwidth 15 for open curves; closed curves use the zig-zag block order of
 //    banded.h, half bandwidth 31) factored by banded Cholesky, the Jacobian by
 //    automatic differentiation (dual.h). Slower per iteration, but robust far from a root.
-// Bounds 0 < lambda_i, t_i < 1 are kept by projection onto [parameter_margin, 1 - parameter_margin].
+// Bounds 0 < lambda_i, t_i < 1 are kept by projection onto [parameter_margin, 1 - parameter_margin];
+// Newton's method treats the t_i bounds as box constraints of an active-set method (a t_i on
+// its face is fixed with its eq. 7 dropped, released by the sign of its multiplier: see
+// newton() and doc/kappa_curves.md, "Points on joins"), so a root on joins (ON_JOINS) is solved
+// to the tolerance like an interior one. A singular pivot block of the block LU falls back to a
+// pivoted band LU of the same Jacobian (factor_pivoted).
 // The warm/cold start policy of Kappa_curve_2 is solve_with_warm_start(). Non-convergence
-// within the iteration caps is reported (Kappa_solve_report::converged == false); the caller
+// within the iteration caps is reported (Kappa_solve_report::status UNSOLVED); the caller
 // decides whether to throw.
 
 #ifndef FAIR_INTERNAL_KAPPA_SOLVER_H
