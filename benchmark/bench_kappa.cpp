@@ -3,7 +3,9 @@
 // Benchmarks of fair::Kappa_curve_2 (rational kappa-curves): time to converge on closed
 // random star-shaped point sets (every point a corner, alternately convex and concave: the
 // data kappa-curves are made for) with unit and automatic weights; a warm re-solve after moving
-// one point of a 1000-point curve; exact certification (fair::certify).
+// one point of a 1000-point curve (also one that changes which points are on joins); dense
+// smooth closed curves with inflections (r(a) = 1 + amplitude sin(lobes a), jittered angles,
+// with and without small noise: issue 9); exact certification (fair::certify).
 // Run: ./bench_kappa --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
 #include <fair/Kappa_curve_2.h>
@@ -36,25 +38,48 @@ std::vector<P> random_star(std::size_t n, unsigned seed) {
   return p;
 }
 
-void solve(benchmark::State& state, fair::Kappa_weights weights) {
-  const std::size_t n = static_cast<std::size_t>(state.range(0));
-  const std::vector<P> points = random_star(n, 1);
+// Dense smooth closed curve with 2 * lobes inflections: r(a) = 1 + amplitude sin(lobes a) at n
+// angles jittered by up to +-jitter/2 of the spacing, radii perturbed by relative noise of up to
+// +-noise/2 (seeded).
+std::vector<P> dense_inflected(std::size_t n, int lobes, double amplitude, double jitter, double noise, unsigned seed) {
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<double> U(0, 1);
+  std::vector<P> p;
+  p.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * (i + jitter * (U(g) - 0.5)) / n;
+    const double r = (1 + amplitude * std::sin(lobes * a)) * (1 + noise * (U(g) - 0.5));
+    p.push_back(P(r * std::cos(a), r * std::sin(a)));
+  }
+  return p;
+}
+
+void solve_points(benchmark::State& state, const std::vector<P>& points, fair::Kappa_weights weights) {
   fair::Kappa_curve_options o;
   o.closed = true;
   o.weights = weights;
-  std::size_t iterations = 0, passes = 0;
-  bool converged = true;
+  std::size_t iterations = 0, passes = 0, on_joins = 0;
+  double residual = 0;
+  bool converged = true;  // INTERIOR or ON_JOINS (the box-constrained solution)
   for (auto _ : state) {
     const fair::Kappa_curve_2<K> curve(points, o);
     iterations = curve.report().iterations;
     passes = curve.report().refinement_passes;
-    converged = converged && curve.report().converged;
+    residual = curve.report().residual;
+    on_joins = curve.report().points_on_joins.size();
+    converged = converged && curve.report().status != fair::Kappa_solve_status::UNSOLVED;
     benchmark::DoNotOptimize(curve.pieces().data());
   }
   state.counters["jacobians"] = static_cast<double>(iterations);
   state.counters["passes"] = static_cast<double>(passes);
   state.counters["converged"] = converged ? 1 : 0;
+  state.counters["residual"] = residual;
+  state.counters["on_joins"] = static_cast<double>(on_joins);
   state.SetComplexityN(state.range(0));
+}
+
+void solve(benchmark::State& state, fair::Kappa_weights weights) {
+  solve_points(state, random_star(static_cast<std::size_t>(state.range(0)), 1), weights);
 }
 
 void BM_kappa_closed_unit(benchmark::State& state) { solve(state, fair::Kappa_weights::UNIT); }
@@ -63,6 +88,24 @@ BENCHMARK(BM_kappa_closed_unit)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(
 BENCHMARK(BM_kappa_closed_unit)->Arg(100000)->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_kappa_closed_automatic)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_kappa_closed_automatic)->Arg(100000)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// Dense inflected closed curves (issue 9, Sec. 4). Args: n, lobes, amplitude in %, jitter in %
+// of the spacing, noise in 1e-4 (relative radius), weights (0 unit, 1 automatic).
+void BM_kappa_dense_inflected(benchmark::State& state) {
+  const std::vector<P> points =
+      dense_inflected(static_cast<std::size_t>(state.range(0)), static_cast<int>(state.range(1)), 0.01 * static_cast<double>(state.range(2)),
+                      0.01 * static_cast<double>(state.range(3)), 1e-4 * static_cast<double>(state.range(4)), 3);
+  solve_points(state, points, state.range(5) ? fair::Kappa_weights::AUTOMATIC : fair::Kappa_weights::UNIT);
+}
+BENCHMARK(BM_kappa_dense_inflected)
+    ->Args({1000, 7, 30, 40, 0, 0})
+    ->Args({1000, 3, 10, 40, 0, 0})
+    ->Args({1000, 7, 30, 40, 10, 0})
+    ->Args({1000, 7, 30, 40, 0, 1})
+    ->Args({10000, 7, 30, 40, 0, 0})
+    ->Args({10000, 7, 30, 40, 0, 1})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 // Warm re-solve: move one point of a converged 1000-point curve by 1 % and solve again from
 // the previous solution (alternating back and forth so every iteration does real work).
@@ -81,6 +124,27 @@ void BM_kappa_warm_resolve_1000(benchmark::State& state) {
   state.counters["warm_and_converged"] = warm ? 1 : 0;
 }
 BENCHMARK(BM_kappa_warm_resolve_1000)->Unit(benchmark::kMillisecond);
+
+// Warm re-solve that changes which points are on joins: point 500 of the same curve alternates
+// between its place (INTERIOR) and a place 0.2 beyond the chord of its neighbours (ON_JOINS).
+void BM_kappa_warm_resolve_join_change_1000(benchmark::State& state) {
+  std::vector<P> points = random_star(1000, 2);
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  fair::Kappa_curve_2<K> curve(points, o);
+  const P a = points[500], m = CGAL::midpoint(points[499], points[501]);
+  const P b = m + 0.2 * (m - a);
+  bool flip = false, warm = true, changed = true;
+  for (auto _ : state) {
+    curve.move_point(500, flip ? a : b);
+    flip = !flip;
+    warm = warm && curve.report().warm_started;
+    changed = changed && curve.report().status == (flip ? fair::Kappa_solve_status::ON_JOINS : fair::Kappa_solve_status::INTERIOR);
+  }
+  state.counters["warm"] = warm ? 1 : 0;
+  state.counters["joins_changed"] = changed ? 1 : 0;
+}
+BENCHMARK(BM_kappa_warm_resolve_join_change_1000)->Unit(benchmark::kMillisecond);
 
 // Exact certification of 10^4 pieces, as 500 closed curves of 20 pieces or 100 of 100 (the
 // exact control points have ~200 n bits: O(n^2) bit operations per curve, see

@@ -359,6 +359,11 @@ TEST(Kappa, BadInput) {
   aut.tension = {1, nan, 1};
   EXPECT_NE(invalid_input_message([&] { fair::Kappa_curve_2<Kd>({Pd(0, 0), Pd(1, 1), Pd(2, 0)}, aut); }).find("tension"),
             std::string::npos);
+  // A subnormal weight (fuzz finding kappa-1: it gave a NaN residual) is outside [1e-12, 1e12].
+  fixed.fixed_weights = {0.26, 0.25, 3.1114278112498342e-319, 0.25};
+  EXPECT_NE(invalid_input_message([&] { fair::Kappa_curve_2<Kd>({Pd(3, 8), Pd(1, 0), Pd(10, 0), Pd(3, 3)}, fixed); })
+                .find("weight 2"),
+            std::string::npos);
 }
 
 TEST(Kappa, PartlyCollinearPointsGiveAValidCurve) {

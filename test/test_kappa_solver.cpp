@@ -397,6 +397,166 @@ TEST(KappaNewton, RangeSolveTouchesOnlyItsBlocks) {
   EXPECT_NE(local.dx[30], st.dx[30]);
 }
 
+// ------------------------------------------------------------------ box constraints (active set)
+
+/// The normalised problem of m random points in the unit square (seeded), open or closed.
+Problem random_square(std::size_t m, unsigned seed, bool closed, Kappa_weights mode) {
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<double> U(0, 1);
+  std::vector<double> x(m), y(m);
+  for (std::size_t i = 0; i < m; ++i) { x[i] = 2 * U(g) - 1; y[i] = 2 * U(g) - 1; }
+  Problem pb;
+  pb.closed = closed;
+  const std::size_t first = closed ? 0 : 1;
+  pb.n = closed ? m : m - 2;
+  pb.qx.assign(x.begin() + first, x.begin() + first + pb.n);
+  pb.qy.assign(y.begin() + first, y.begin() + first + pb.n);
+  if (!closed) { pb.sx = x[0]; pb.sy = y[0]; pb.ex = x[m - 1]; pb.ey = y[m - 1]; }
+  pb.mode = mode;
+  if (mode == Kappa_weights::AUTOMATIC) pb.tension.assign(pb.n, 1.0);
+  return pb;
+}
+
+/// Independent check of |kappa| along the piece of block i: the rational quadratic evaluated at
+/// three parameters h apart, |kappa| of the circle through them (not eq. 4 or eq. 7).
+double sampled_abs_curvature(const Problem& pb, const Kappa_solver_state& st, std::size_t i, double t, double h) {
+  Window<double> win;
+  build_window(pb, st, i, win);
+  Piece_values<double> pv;
+  piece_values(pb, st, i, win, 2, pv);
+  auto at = [&](double s, double& x, double& y) {
+    const double u = 1 - s, b0 = u * u, b1 = 2 * u * s * pv.w, b2 = s * s, d = b0 + b1 + b2;
+    x = (b0 * pv.E0[0] + b1 * win.X[2][0] + b2 * pv.E2[0]) / d;
+    y = (b0 * pv.E0[1] + b1 * win.X[2][1] + b2 * pv.E2[1]) / d;
+  };
+  double ax, ay, bx, by, cx, cy;
+  at(t - h, ax, ay);
+  at(t, bx, by);
+  at(t + h, cx, cy);
+  const double cross = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+  const double ab = std::hypot(bx - ax, by - ay), bc = std::hypot(cx - bx, cy - by), ca = std::hypot(ax - cx, ay - cy);
+  return 2 * std::abs(cross) / (ab * bc * ca);
+}
+
+// Random 4-30-point sets in the unit square, open and closed, w = 1: every solve ends INTERIOR or
+// ON_JOINS (the box-constrained solution) with residual <= 1e-12; every t_i on a face is exactly
+// on the projection bound, and an independent sampling of its piece finds |kappa| rising towards
+// the join (the point is where its piece's |kappa| is largest, at the join), unless the outcome
+// lists the point among points_at_minima.
+TEST(KappaActiveSet, RandomSetsEndOnTheConstrainedSolution) {
+  std::size_t on_joins = 0;
+  for (unsigned s = 0; s < 80; ++s) {
+    const std::size_t m = 4 + s % 27;
+    const Problem pb = random_square(m, 1000 + s, s % 2 == 1, Kappa_weights::UNIT);
+    Kappa_solver_state st;
+    const Kappa_solve_report r = solve(pb, st, Solve_settings{});
+    ASSERT_NE(r.status, fair::Kappa_solve_status::UNSOLVED) << "seed " << s << " residual " << r.residual;
+    EXPECT_LE(r.residual, 1e-12) << "seed " << s;
+    on_joins += r.status == fair::Kappa_solve_status::ON_JOINS ? 1 : 0;
+    for (std::size_t i = 0; i < pb.n; ++i) {
+      if (!t_on_face(st.t[i])) continue;
+      EXPECT_TRUE(st.t[i] == parameter_margin || st.t[i] == 1 - parameter_margin) << "seed " << s;
+      const bool at_end = st.t[i] > 0.5;
+      const double inward = at_end ? -1e-2 : 1e-2, h = 1e-4;
+      const double k_join = sampled_abs_curvature(pb, st, i, at_end ? 1 - h : h, h);
+      const double k_in = sampled_abs_curvature(pb, st, i, (at_end ? 1 - h : h) + inward, h);
+      EXPECT_GE(k_join, k_in * (1 - 1e-6)) << "seed " << s << " block " << i;
+    }
+  }
+  EXPECT_GT(on_joins, 0u);  // the data exercise the active set
+}
+
+// Release: a t_i of an interior root put on a face by hand is released by Newton's method
+// (its multiplier is negative: the piece's maximum is inside) and the interior root comes back.
+TEST(KappaActiveSet, FaceWithNegativeMultiplierIsReleased) {
+  const Problem pb = star(40, 9, Kappa_weights::UNIT);
+  Kappa_solver_state root;
+  ASSERT_EQ(solve(pb, root, Solve_settings{}).status, fair::Kappa_solve_status::INTERIOR);
+  for (const double face : {parameter_margin, 1 - parameter_margin}) {
+    Kappa_solver_state st = root;
+    st.t[17] = face;
+    EXPECT_TRUE(face_multiplier_negative(pb, st, 17));
+    Kappa_solve_report res;
+    const double f = newton(pb, st, Solve_settings{}, res, 30);
+    EXPECT_LE(f, 1e-12);
+    EXPECT_FALSE(t_on_face(st.t[17]));
+    for (std::size_t i = 0; i < pb.n; ++i) EXPECT_NEAR(st.t[i], root.t[i], 1e-9);
+  }
+}
+
+// Fixing: on a face the Newton system drops eq. 7 of that block and t_i; a constrained root is a
+// fixed point of Newton's method (no step, the face kept), and the full residual (eq. 7
+// included) is O(parameter_margin^2) there, below the tolerance.
+TEST(KappaActiveSet, ConstrainedRootIsAFixedPoint) {
+  std::size_t checked = 0;
+  for (unsigned s = 0; s < 80 && checked < 5; ++s) {
+    const Problem pb = random_square(4 + s % 27, 1000 + s, s % 2 == 1, Kappa_weights::UNIT);
+    Kappa_solver_state st;
+    if (solve(pb, st, Solve_settings{}).status != fair::Kappa_solve_status::ON_JOINS) continue;
+    std::size_t faces = 0;
+    for (double t : st.t) faces += t_on_face(t) ? 1 : 0;
+    if (faces == 0) continue;  // on joins through lambda only
+    ++checked;
+    std::vector<double> F;
+    EXPECT_LE(evaluate(pb, st, F), 1e-12);
+    Kappa_solver_state again = st;
+    Kappa_solve_report res;
+    EXPECT_LE(newton(pb, again, Solve_settings{}, res, 30), 1e-12);
+    for (std::size_t i = 0; i < pb.n; ++i) {
+      EXPECT_EQ(t_on_face(again.t[i]), t_on_face(st.t[i]));
+      EXPECT_NEAR(again.dx[i], st.dx[i], 1e-12);
+    }
+  }
+  EXPECT_EQ(checked, 5u);
+}
+
+// Warm re-solve across a change of the active set: a point of a 200-point star moved onto the
+// chord of its neighbours goes onto a join (ON_JOINS, warm), and moved back the previous interior
+// root returns.
+TEST(KappaActiveSet, WarmResolveWithAJoinChange) {
+  Problem pb = star(200, 2, Kappa_weights::UNIT);
+  Kappa_solver_state st;
+  ASSERT_EQ(solve_with_warm_start(pb, nullptr, 0, Solve_settings{}, st).status, fair::Kappa_solve_status::INTERIOR);
+  const Kappa_solver_state original = st;
+  const double x0 = pb.qx[100], y0 = pb.qy[100];
+  const double mx = 0.5 * (pb.qx[99] + pb.qx[101]), my = 0.5 * (pb.qy[99] + pb.qy[101]);
+  pb.qx[100] = mx - 0.2 * (x0 - mx);
+  pb.qy[100] = my - 0.2 * (y0 - my);
+  Kappa_solver_state moved;
+  const Kappa_solve_report r = solve_with_warm_start(pb, &st, 100, Solve_settings{}, moved);
+  EXPECT_EQ(r.status, fair::Kappa_solve_status::ON_JOINS);
+  EXPECT_LE(r.residual, 1e-12);
+  pb.qx[100] = x0;
+  pb.qy[100] = y0;
+  Kappa_solver_state back;
+  const Kappa_solve_report rb = solve_with_warm_start(pb, &moved, 100, Solve_settings{}, back);
+  EXPECT_EQ(rb.status, fair::Kappa_solve_status::INTERIOR);
+  for (std::size_t i = 0; i < pb.n; ++i) EXPECT_NEAR(back.t[i], original.t[i], 1e-8);
+}
+
+// Automatic weights on random sets: never an unexplained stop. Every solve is INTERIOR or
+// ON_JOINS, or UNSOLVED with a finite residual above the tolerance and its worst points listed,
+// or with its points at minima listed; within the iteration cap.
+TEST(KappaActiveSet, AutomaticWeightsOnRandomSetsExplainTheOutcome) {
+  std::size_t solved = 0;
+  for (unsigned s = 0; s < 60; ++s) {
+    const Problem pb = random_square(4 + s % 27, 2000 + s, s % 2 == 1, Kappa_weights::AUTOMATIC);
+    Kappa_solver_state st;
+    const Solve_settings settings;
+    const Kappa_solve_report r = solve(pb, st, settings);
+    EXPECT_LE(r.iterations, settings.max_iterations);
+    ASSERT_TRUE(std::isfinite(r.residual)) << "seed " << s;
+    if (r.status != fair::Kappa_solve_status::UNSOLVED) {
+      EXPECT_LE(r.residual, 1e-12);
+      ++solved;
+    } else if (r.points_at_minima.empty()) {
+      EXPECT_GT(r.residual, settings.tolerance);
+      EXPECT_FALSE(r.worst_points.empty());
+    }
+  }
+  EXPECT_GT(solved, 40u);
+}
+
 // ------------------------------------------------------------------ warm/cold policy
 
 // Input points and blocks: an open curve's end points belong to its end blocks.

@@ -105,16 +105,22 @@ struct Kappa_certificate {
   }
   /// The ON_JOINS properties: every Q_i on its piece, C0 and G1 exactly, |kappa| matching within
   /// `kappa_tolerance` at every join, and every piece whose point is NOT in points_on_joins with
-  /// a unique curvature maximum within `t_tolerance` of t_i (the pieces of the listed points are
-  /// exempt: their point lies on a join, not at an interior maximum).
+  /// a unique curvature maximum within `t_tolerance` of t_i; a piece of a listed point has either
+  /// its t_i within join_t_margin of 0 or 1 (the point on a join) or that same interior maximum
+  /// (listed for a lambda at a bound).
   bool valid_on_joins(double kappa_tolerance = default_kappa_tolerance, double t_tolerance = default_t_tolerance) const {
     if (!(all_points_on_pieces() && all_g1() && max_kappa_mismatch() <= kappa_tolerance)) return false;
     for (const Piece& p : pieces) {
-      if (std::find(points_on_joins.begin(), points_on_joins.end(), p.point_index) != points_on_joins.end()) continue;
-      if (!(p.unique_maximum && p.root_distance <= t_tolerance)) return false;
+      const bool interior_maximum = p.unique_maximum && p.root_distance <= t_tolerance;
+      const bool listed = std::find(points_on_joins.begin(), points_on_joins.end(), p.point_index) != points_on_joins.end();
+      const bool on_join = p.t <= join_t_margin || p.t >= 1 - join_t_margin;
+      if (!(interior_maximum || (listed && on_join))) return false;
     }
     return true;
   }
+  /// A listed point's t_i within this of 0 or 1 counts as on a join (the solver's margin for
+  /// points_on_joins).
+  static constexpr double join_t_margin = 1e-4;
   /// Whether the certificate proves the outcome of `status`: INTERIOR, valid(); ON_JOINS,
   /// valid_on_joins(); UNSOLVED promises nothing beyond what the members say (false).
   bool proves_outcome(double kappa_tolerance = default_kappa_tolerance, double t_tolerance = default_t_tolerance) const {

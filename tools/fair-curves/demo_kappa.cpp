@@ -5,7 +5,8 @@
 // (minimum-eccentricity weights without and with the clamp of eq. 16 against the polynomial
 // kappa-curve, on concave and on overlapping convex shapes), Fig. 9 (a cusp forming as two points
 // approach) and Fig. 12 (circle reproduction from non-uniform points on a circle, and the failure
-// case with a central angle above pi). Every case lists the solve report and the curvature
+// case with a central angle above pi) and a box-constrained solution with a point on a join.
+// Every case lists the solve report and the curvature
 // variation int (dkappa/ds)^2 ds, the paper's measure of fairness (Sec. 7).
 
 #include "registry.h"
@@ -206,6 +207,18 @@ void add_kappa_cases(fair_curves::Gallery& gallery) {
                    "Four points on the unit circle at 0, 30, 80, 120 degrees: the last central angle is 240 "
                    "degrees > 180, a piece would have to span more than the clamp allows, and the curve is not "
                    "the circle (Sec. 8).");
+  }
+  // The box-constrained solution (issue 9, doc/kappa_curves.md "Points on joins"): eight random
+  // points (rounded; seeded random data of the active-set tests) without an interior solution.
+  {
+    const std::vector<Point_2> p = {Point_2(0.419, 0.382), Point_2(0.285, 0.987), Point_2(0.643, 0.275),
+                                    Point_2(0.706, 0.356), Point_2(0.314, 0.096), Point_2(0.249, 0.284),
+                                    Point_2(0.316, 0.930), Point_2(0.336, 0.751)};
+    add_kappa_case(gallery, p, fair::Kappa_curve_options(), "Points on joins: the box-constrained solution",
+                   "Open curve, weights 1, eight points without an interior kappa-curve: the solve fixes t of the "
+                   "sixth point (index 5) on a face (t = 0 or 1), so the point lies on a join, where its own "
+                   "piece's |kappa| is largest; every other point is an interior curvature maximum, and the "
+                   "curve interpolates, is G1 and |kappa|-continuous.");
   }
 }
 FAIR_CURVES_DEMO(50, add_kappa_cases)

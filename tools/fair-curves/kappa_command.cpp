@@ -171,7 +171,7 @@ std::string unsolved_line(const fair::Kappa_curve_2<fair_curves::Kernel>& curve)
   const fair::Kappa_solve_report& r = curve.report();
   std::ostringstream line;
   line << "unsolved: ";
-  if (r.residual > curve.options().tolerance) {
+  if (!(r.residual <= curve.options().tolerance)) {  // NaN included
     line << "residual " << format_number(r.residual, 3) << " > tolerance " << format_number(curve.options().tolerance)
          << ", worst";
     for (const fair::Kappa_point_residual& p : r.worst_points)

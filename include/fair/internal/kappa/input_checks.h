@@ -26,6 +26,14 @@ namespace kappa {
 /// open curve, a triangle for a closed one.
 constexpr std::size_t minimum_points = 3;
 
+/// Range of FIXED weights, AUTOMATIC tension and clamp: w^2 lambda^2 of eq. 10 and w^3 of eq. 4
+/// stay normal doubles (a subnormal weight gave 0/0 in the abs(kappa) mismatch; fuzz finding).
+constexpr double minimum_weight = 1e-12;
+constexpr double maximum_weight = 1e12;
+
+/// Whether v is a weight-like option value in [minimum_weight, maximum_weight].
+inline bool weight_in_range(double v) { return v >= minimum_weight && v <= maximum_weight; }
+
 /// The options that apply to m input points: FIXED weights, AUTOMATIC tension and clamp
 /// (Invalid_input_error), the tolerance (Precondition_error).
 inline void check_options(const Kappa_curve_options& opt, std::size_t m, const char* fn) {
@@ -34,17 +42,20 @@ inline void check_options(const Kappa_curve_options& opt, std::size_t m, const c
       throw Invalid_input_error(message(fn, ": FIXED weights need one weight per point (", m, "), got ",
                                         opt.fixed_weights.size()));
     for (std::size_t i = 0; i < m; ++i)
-      if (!(std::isfinite(opt.fixed_weights[i]) && opt.fixed_weights[i] > 0))
-        throw Invalid_input_error(message(fn, ": weight ", i, " = ", opt.fixed_weights[i], " must be finite and > 0"));
+      if (!weight_in_range(opt.fixed_weights[i]))
+        throw Invalid_input_error(message(fn, ": weight ", i, " = ", opt.fixed_weights[i], " must be finite and > 0 (in [",
+                                          minimum_weight, ", ", maximum_weight, "])"));
   }
   if (opt.weights == Kappa_weights::AUTOMATIC) {
     if (!opt.tension.empty() && opt.tension.size() != m)
       throw Invalid_input_error(message(fn, ": tension needs one value per point (", m, "), got ", opt.tension.size()));
     for (std::size_t i = 0; i < opt.tension.size(); ++i)
-      if (!(std::isfinite(opt.tension[i]) && opt.tension[i] > 0))
-        throw Invalid_input_error(message(fn, ": tension ", i, " = ", opt.tension[i], " must be finite and > 0"));
-    if (!(std::isfinite(opt.weight_clamp) && opt.weight_clamp > 0))
-      throw Invalid_input_error(message(fn, ": weight clamp ", opt.weight_clamp, " must be finite and > 0"));
+      if (!weight_in_range(opt.tension[i]))
+        throw Invalid_input_error(message(fn, ": tension ", i, " = ", opt.tension[i], " must be finite and > 0 (in [",
+                                          minimum_weight, ", ", maximum_weight, "])"));
+    if (!weight_in_range(opt.weight_clamp))
+      throw Invalid_input_error(message(fn, ": weight clamp ", opt.weight_clamp, " must be finite and > 0 (in [",
+                                        minimum_weight, ", ", maximum_weight, "])"));
   }
   require(std::isfinite(opt.tolerance) && opt.tolerance >= 0, fn, ": tolerance ", opt.tolerance,
           " must be finite and >= 0");

@@ -24,9 +24,14 @@
 //    bandwidth 15 for open curves; closed curves use the zig-zag block order of
 //    banded.h, half bandwidth 31) factored by banded Cholesky, the Jacobian by
 //    automatic differentiation (dual.h). Slower per iteration, but robust far from a root.
-// Bounds 0 < lambda_i, t_i < 1 are kept by projection onto [parameter_margin, 1 - parameter_margin].
+// Bounds 0 < lambda_i, t_i < 1 are kept by projection onto [parameter_margin, 1 - parameter_margin];
+// Newton's method treats the t_i bounds as box constraints of an active-set method (a t_i on
+// its face is fixed with its eq. 7 dropped, released by the sign of its multiplier: see
+// newton() and doc/kappa_curves.md, "Points on joins"), so a root on joins (ON_JOINS) is solved
+// to the tolerance like an interior one. A singular pivot block of the block LU falls back to a
+// pivoted band LU of the same Jacobian (factor_pivoted).
 // The warm/cold start policy of Kappa_curve_2 is solve_with_warm_start(). Non-convergence
-// within the iteration caps is reported (Kappa_solve_report::converged == false); the caller
+// within the iteration caps is reported (Kappa_solve_report::status UNSOLVED); the caller
 // decides whether to throw.
 
 #ifndef FAIR_INTERNAL_KAPPA_SOLVER_H
@@ -165,6 +170,86 @@ inline void project_bounds(Kappa_solver_state& st) {
     st.lambda[i] = std::min(std::max(st.lambda[i], lo), hi);
     st.t[i] = std::min(std::max(st.t[i], lo), hi);
   }
+}
+
+// ----------------------------------------------------------------------------- active set
+
+/// The active set of the box-constrained problem (doc/kappa_curves.md, "Points on joins"): t_i
+/// is FIXED on its face when it sits on the projection bound parameter_margin or
+/// 1 - parameter_margin. The set is a function of the state alone, so it survives warm starts
+/// without extra bookkeeping. On the face Q_i is (to O(parameter_margin)) the end point of its
+/// piece, eq. 7 of the piece holds by itself (its residual is O(u^2), u the distance of t_i to
+/// the bound: doc/kappa_existence.md, Sec. 1) and its row degenerates (a zero gradient at the
+/// face root): the Newton system drops that equation together with the unknown t_i.
+inline bool t_on_face(double t) { return t <= parameter_margin || t >= 1 - parameter_margin; }
+
+/// Drops the equations of the active set from the residuals F of the blocks of `range` (r_2 of
+/// a block whose t_i is on its face: set to 0); returns the max |r| of the equations that remain.
+inline double drop_face_equations(const Problem& pb, const Kappa_solver_state& st, const Block_range& range,
+                                  std::vector<double>& F) {
+  const std::size_t na = range.all ? pb.n : range.count;
+  double mx = 0;
+  for (std::size_t ii = 0; ii < na; ++ii) {
+    const std::size_t i = range.all ? ii : (range.first + ii) % pb.n;
+    if (t_on_face(st.t[i])) F[4 * ii + 2] = 0.0;
+    for (int c = 0; c < 4; ++c) {
+      const double a = std::abs(F[4 * ii + c]);
+      mx = (a > mx || std::isnan(a)) ? a : mx;
+    }
+  }
+  return mx;
+}
+
+/// Relative size (to the terms of eq. 4's coefficients, before their cancellation) below which a
+/// derivative of eq. 4's numerator counts as zero: the piece is a circular arc to that relative
+/// accuracy (the numerator vanishes identically for a circle) and has no extremum worth the name.
+constexpr double minimum_derivative_floor = 1e-8;
+
+/// The numerator E of kappa' (eq. 4, fair::internal::conic::eq4_coefficients; E goes from - to +
+/// at a maximum of |kappa|) of the piece of block i in the Bernstein basis of degree 4, and the
+/// size of the terms of its coefficients (for relative tests). The weight is the piece's own
+/// (1, the user's, or eq. 16 of the current control points).
+struct Eq4_of_piece {
+  std::vector<double> b;
+  double size = 0;
+  double value(double t) const {
+    const double u = 1 - t;
+    return b[0] * u * u * u * u + 4 * b[1] * u * u * u * t + 6 * b[2] * u * u * t * t + 4 * b[3] * u * t * t * t +
+           b[4] * t * t * t * t;
+  }
+  /// E'(t) / 4 (Bernstein basis of degree 3).
+  double derivative(double t) const {
+    const double u = 1 - t;
+    return (b[1] - b[0]) * u * u * u + 3 * (b[2] - b[1]) * u * u * t + 3 * (b[3] - b[2]) * u * t * t +
+           (b[4] - b[3]) * t * t * t;
+  }
+};
+inline Eq4_of_piece eq4_of_piece(const Problem& pb, const Kappa_solver_state& st, std::size_t i) {
+  Window<double> win;
+  build_window(pb, st, i, win);
+  Piece_values<double> pv;
+  piece_values(pb, st, i, win, 2, pv);
+  const double* X = win.X[2];
+  const double w = pv.w;
+  Eq4_of_piece e;
+  e.b = conic::eq4_coefficients<double>(pv.E0[0], pv.E0[1], X[0], X[1], pv.E2[0], pv.E2[1], w);
+  const auto sq = [](double x, double y) { return x * x + y * y; };
+  e.size = (w * w * w + w + 1) * (sq(pv.E0[0] - X[0], pv.E0[1] - X[1]) + sq(X[0] - pv.E2[0], X[1] - pv.E2[1]) +
+                                  sq(pv.E0[0] - pv.E2[0], pv.E0[1] - pv.E2[1]));
+  return e;
+}
+
+/// The multiplier of the face constraint of block i (t_i on its face): the one-sided derivative
+/// of |kappa| of piece i at Q_i (the piece's end at the join), taken towards the join, as the
+/// sign-carrying value of eq. 4's numerator: -E(t_i) at t_i = 1, +E(t_i) at t_i = 0 (E < 0 where
+/// |kappa| increases). Non-negative (|kappa| rises towards the join, so that the maximum of
+/// |kappa| over the piece is at Q_i, on the join) is the first-order condition of the
+/// constrained solution; negative beyond the floor means the piece's maximum lies inside it and
+/// the interior is better: the variable is released.
+inline bool face_multiplier_negative(const Problem& pb, const Kappa_solver_state& st, std::size_t i) {
+  const Eq4_of_piece e = eq4_of_piece(pb, st, i);
+  const double v = e.value(st.t[i]), m = st.t[i] > 0.5 ? -v : v;
+  return m < -minimum_derivative_floor * e.size;
 }
 
 /// Assembles J^T J (into `chol`, reset to half bandwidth h) and g = J^T F, in block order
@@ -345,6 +430,125 @@ inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, con
   return fmax;
 }
 
+/// The Jacobian of newton() (blocks of `range`, na of them; fill(ii, row) as for
+/// Block_band_lu::factor_rows) into a general band matrix with partial pivoting, in the block
+/// order of normal_bandwidth (zig-zag for a whole closed curve, natural otherwise): the fallback
+/// when the block LU, which does not pivot across blocks, meets a singular pivot block of a
+/// non-singular matrix (dense data near inflections). Half bandwidths 4 * 2 + 3 = 11 (lower)
+/// and 4 * 1 + 3 = 7 (upper) in natural order, <= 4 * 5 + 3 = 23 in zig-zag order: O(n), about
+/// 3x the work of the block LU. Returns false on an exactly singular matrix.
+template <class Fill>
+bool factor_pivoted(const Problem& pb, const Block_range& range, std::size_t na, Fill&& fill, Banded_lu& plu) {
+  const std::size_t n = pb.n, N = 4 * na;
+  const bool zigzag = range.all && pb.closed;
+  auto pos = [&](std::size_t j) { return zigzag ? cyclic_position(j, n) : j; };
+  auto column_block = [&](std::size_t ii, int k) -> long {
+    long b = static_cast<long>(ii) - 2 + k;
+    if (zigzag) return ((b % static_cast<long>(n)) + static_cast<long>(n)) % static_cast<long>(n);
+    return b;
+  };
+  std::size_t kl = 0, ku = 0;
+  for (std::size_t ii = 0; ii < na; ++ii)
+    for (int k = 0; k < 4; ++k) {
+      const long b = column_block(ii, k);
+      if (b < 0 || b >= static_cast<long>(na)) continue;
+      const std::size_t pr = pos(ii), pc = pos(static_cast<std::size_t>(b));
+      if (pc < pr) kl = std::max(kl, 4 * (pr - pc) + 3);
+      else ku = std::max(ku, 4 * (pc - pr) + 3);
+    }
+  kl = std::min(kl, N - 1);
+  ku = std::min(ku, N - 1);
+  plu.reset(N, kl, ku);
+  Block4 row[4];
+  for (std::size_t ii = 0; ii < na; ++ii) {
+    fill(ii, row);
+    for (int k = 0; k < 4; ++k) {
+      const long b = column_block(ii, k);
+      if (b < 0 || b >= static_cast<long>(na)) continue;
+      const std::size_t r0 = 4 * pos(ii), c0 = 4 * pos(static_cast<std::size_t>(b));
+      for (int e = 0; e < 4; ++e)
+        for (int c = 0; c < 4; ++c)
+          if (row[k][4 * e + c] != 0.0) plu.add(r0 + e, c0 + c, row[k][4 * e + c]);
+    }
+  }
+  return plu.factor();
+}
+
+/// The fixing rule of newton()'s active set, after an accepted step: a free t_i within
+/// bound_margin of a bound (where the outcome would call it on a join anyway) is put on that face.
+/// This ends the linear "creep" of Newton's method into a root on the face, whose Jacobian is
+/// singular there (doc/kappa_existence.md, Sec. 1), in one step. Returns whether any was.
+inline bool snap_to_faces(const Problem& pb, const Block_range& range,
+                          Kappa_solver_state& st) {
+  const std::size_t na = range.all ? pb.n : range.count;
+  bool any = false;
+  for (std::size_t ii = 0; ii < na; ++ii) {
+    const std::size_t i = range_block(pb, range, ii);
+    double& t = st.t[i];
+    if (t_on_face(t)) continue;
+    if (t < bound_margin) { t = parameter_margin; any = true; }
+    else if (t > 1 - bound_margin) { t = 1 - parameter_margin; any = true; }
+  }
+  return any;
+}
+
+/// The largest alpha in (0, 1) at which the step alpha delta puts a free t_i of `range` on a
+/// bound (the first crossing), or 0 if the full step crosses none.
+inline double first_crossing(const Problem& pb, const Block_range& range, const std::vector<double>& delta,
+                             const Kappa_solver_state& st) {
+  const std::size_t na = range.all ? pb.n : range.count;
+  double alpha = 1;
+  bool any = false;
+  for (std::size_t ii = 0; ii < na; ++ii) {
+    const double t = st.t[range_block(pb, range, ii)], d = delta[4 * ii + 3];
+    if (t_on_face(t)) continue;
+    const double a = d > 0 ? (1 - parameter_margin - t) / d : d < 0 ? (parameter_margin - t) / d : 2.0;
+    if (a < alpha) { alpha = a; any = true; }
+  }
+  return any ? alpha : 0.0;
+}
+
+/// A t in (0,1) of the maximum of |kappa| of the piece of block i (the sign change - to + of
+/// eq. 4's numerator E, by bisection on the Bernstein quartic), or 1/2 if E has none there.
+inline double piece_maximum_parameter(const Problem& pb, const Kappa_solver_state& st, std::size_t i) {
+  const Eq4_of_piece e = eq4_of_piece(pb, st, i);
+  auto E = [&](double t) { return e.value(t); };
+  double lo = parameter_margin, hi = 1 - parameter_margin;
+  if (!(E(lo) < 0 && E(hi) > 0)) return 0.5;
+  for (int k = 0; k < 60 && hi - lo > 1e-12; ++k) {  // 60 halvings: below 1e-12 from a unit bracket
+    const double mid = 0.5 * (lo + hi);
+    (E(mid) < 0 ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+/// Releases of one t_i per Newton run: a t_i released this often and back on its face stays
+/// fixed (no cycling; the outcome then lists the point among points_at_minima).
+constexpr char max_releases = 2;
+
+/// The release step of newton()'s active set at a root of the reduced system: every block of
+/// `range` whose t is on its face with a negative multiplier (face_multiplier_negative) and was
+/// not released before is released, t moved to its piece's maximum of |kappa|. Returns whether
+/// any was released.
+inline bool release_faces(const Problem& pb, Kappa_solver_state& st, const Block_range& range,
+                          std::vector<char>& released) {
+  const std::size_t na = range.all ? pb.n : range.count;
+  bool any = false;
+  std::vector<std::size_t> to_release;
+  for (std::size_t ii = 0; ii < na; ++ii) {
+    const std::size_t i = range.all ? ii : (range.first + ii) % pb.n;
+    if (released[ii] >= max_releases || !t_on_face(st.t[i]) || !face_multiplier_negative(pb, st, i)) continue;
+    to_release.push_back(ii);
+  }
+  for (std::size_t ii : to_release) {  // all decided on the same state, then moved
+    const std::size_t i = range.all ? ii : (range.first + ii) % pb.n;
+    st.t[i] = piece_maximum_parameter(pb, st, i);
+    ++released[ii];
+    any = true;
+  }
+  return any;
+}
+
 /// Newton's method on the square system: each step solves J delta = -r directly (block LU,
 /// block_lu.h, O(n)), then a backtracking (Armijo) line search on 1/2 |r|^2 along delta
 /// with the bounds projected. In the quadratic regime, "chord" steps reuse the last
@@ -353,21 +557,48 @@ inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, con
 /// are accurate to the tolerance itself. `max_iterations` caps the Jacobian factorisations of
 /// this call (res.iterations counts them, cumulatively); Jacobians and chord steps together are
 /// capped by 2 x max_iterations.
-/// Returns max |r| reached (st: the last accepted state). Stops early -- leaving the rest to
-/// Levenberg-Marquardt -- on a singular pivot block or a failed line search.
+/// Box constraints (active set, doc/kappa_curves.md): a t_i on its face (t_on_face) is fixed
+/// there and its eq. 7 dropped -- in the Jacobian its row r_2 becomes the identity row of t_i,
+/// whose column (which only block row i has) is cleared, so the block structure is kept -- and
+/// the residual and line search are those of the equations that remain (drop_face_equations). A
+/// free t_i that a projected step puts on its bound is fixed from the next iteration on. At a
+/// root of the reduced system each fixed t_i whose multiplier is negative
+/// (face_multiplier_negative: the maximum of |kappa| of its piece is inside the piece) is
+/// released -- moved to that maximum -- and the iteration goes on; a variable released
+/// max_releases times stays fixed if it comes back, so the set changes at most 2 max_releases + 1
+/// times per block (no cycling).
+/// Returns max |r| of the equations that remain (st: the last accepted state). Stops early --
+/// leaving the rest to Levenberg-Marquardt -- on a singular pivot block or a failed line search.
 inline double newton(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
                      Kappa_solve_report& res, std::size_t max_iterations, const Block_range& range = {}) {
   const std::size_t n = pb.n, na = range.all ? n : range.count, N = 4 * na;
   project_bounds(st);
   std::vector<double> F, Ftrial, delta(N);
-  double fmax = evaluate_range(pb, st, range, F), cost = half_squared_norm(F);
+  evaluate_range(pb, st, range, F);
+  double fmax = drop_face_equations(pb, st, range, F), cost = half_squared_norm(F);
+  std::vector<char> released(na, 0);
   Block_band_lu lu;
   Jacobian_workspace jws;
   Kappa_solver_state trial;
-  bool factored = false;
+  bool factored = false, pivoted = false;
+  Banded_lu plu;  // the pivoted fallback (factor_pivoted)
+  std::vector<double> permuted;
+  // delta = J^{-1} delta by the pivoted factorisation, whose unknowns are in zig-zag order for
+  // a whole closed curve.
+  auto solve_permuted = [&](std::vector<double>& v) {
+    const bool zigzag = range.all && pb.closed;
+    if (!zigzag) { plu.solve(v.data()); return; }
+    permuted.resize(N);
+    for (std::size_t ii = 0; ii < na; ++ii)
+      for (int c = 0; c < 4; ++c) permuted[4 * cyclic_position(ii, n) + c] = v[4 * ii + c];
+    plu.solve(permuted.data());
+    for (std::size_t ii = 0; ii < na; ++ii)
+      for (int c = 0; c < 4; ++c) v[4 * ii + c] = permuted[4 * cyclic_position(ii, n) + c];
+  };
   auto try_step = [&](double alpha) {
     stepped_state(pb, range, st, delta, alpha, [](std::size_t ii) { return ii; }, trial);
-    const double fm = evaluate_range(pb, trial, range, Ftrial);
+    evaluate_range(pb, trial, range, Ftrial);
+    const double fm = drop_face_equations(pb, trial, range, Ftrial);
     const double ct = half_squared_norm(Ftrial);
     // Armijo condition: the directional derivative of 1/2|r|^2 along the Newton step is -|r|^2.
     if (!(std::isfinite(ct) && ct <= (1 - 2 * armijo_constant * alpha) * cost)) return false;
@@ -379,7 +610,8 @@ inline double newton(const Problem& pb, Kappa_solver_state& st, const Solve_sett
   };
   auto chord_step = [&]() {  // the Newton step with the last factorised Jacobian
     for (std::size_t k = 0; k < N; ++k) delta[k] = -F[k];
-    lu.solve(delta.data());
+    if (pivoted) solve_permuted(delta);
+    else lu.solve(delta.data());
     return try_step(1.0);
   };
   bool contracting = false;  // the last step reduced max |r| by 1e2 or more
@@ -387,7 +619,12 @@ inline double newton(const Problem& pb, Kappa_solver_state& st, const Solve_sett
   for (std::size_t it = 0; it < 2 * max_iterations && jacobians < max_iterations && std::isfinite(cost); ++it) {
     if (fmax <= settings.tolerance) {
       if (factored && fmax > polish_fraction * settings.tolerance) chord_step();
-      break;
+      if (!release_faces(pb, st, range, released)) break;
+      evaluate_range(pb, st, range, F);
+      fmax = drop_face_equations(pb, st, range, F);
+      cost = half_squared_norm(F);
+      factored = contracting = false;
+      continue;
     }
     // In the quadratic regime the Jacobian of the previous iterate is accurate enough: a chord
     // step (one solve and one evaluation, ~15 % of an iteration) gains about as much as a new
@@ -403,7 +640,13 @@ inline double newton(const Problem& pb, Kappa_solver_state& st, const Solve_sett
     for (std::size_t k = 0; k < N; ++k) delta[k] = -F[k];
     auto fill = [&](std::size_t ii, Block4* row) {
       double r[4], J[4][16];
-      block_jacobian(pb, st, range_block(pb, range, ii), jws, r, J);
+      const std::size_t i = range_block(pb, range, ii);
+      block_jacobian(pb, st, i, jws, r, J);
+      if (t_on_face(st.t[i])) {  // eq. 7 and t_i dropped: identity row of t_i (slot 2, column 3)
+        for (int c = 0; c < 16; ++c) J[2][c] = 0.0;
+        J[0][11] = J[1][11] = 0.0;
+        J[2][11] = 1.0;
+      }
       for (int k = 0; k < 4; ++k) {
         Block4& b = row[k];
         if (!jws.values.valid[k] || (!range.all && (ii + k < 2 || ii + k - 2 >= na))) {
@@ -417,12 +660,31 @@ inline double newton(const Problem& pb, Kappa_solver_state& st, const Solve_sett
     ++res.iterations;
     ++jacobians;
     factored = lu.factor_rows(fill, delta.data());
-    if (!factored) break;
-    lu.finish_solve(delta.data());
+    pivoted = !factored;
+    if (pivoted) {  // a singular pivot block: the pivoted band LU of the same Jacobian
+      factored = factor_pivoted(pb, range, na, fill, plu);
+      if (!factored) break;
+      for (std::size_t k = 0; k < N; ++k) delta[k] = -F[k];
+      solve_permuted(delta);
+    } else {
+      lu.finish_solve(delta.data());
+    }
     const double before = fmax;
     bool accepted = false;
     for (double alpha = 1.0; alpha >= newton_min_step && !accepted; alpha *= 0.5) accepted = try_step(alpha);
-    if (!accepted) break;
+    if (!accepted) {
+      // The projected step does not decrease the residual: the step up to its first crossing
+      // of a bound, where that t_i lands on its face (fixed from the next iteration on).
+      const double alpha = first_crossing(pb, range, delta, st);
+      if (!(alpha > 0) || !try_step(alpha)) break;
+    }
+    if (snap_to_faces(pb, range, st)) {
+      evaluate_range(pb, st, range, F);
+      fmax = drop_face_equations(pb, st, range, F);
+      cost = half_squared_norm(F);
+      factored = contracting = false;
+      continue;
+    }
     contracting = fmax <= newton_contraction * before;
   }
   return fmax;
@@ -445,33 +707,15 @@ inline std::size_t bounds_active(const Problem& pb, const Kappa_solver_state& st
   return count;
 }
 
-/// Relative size (to the terms of eq. 4's coefficients, before their cancellation) above which
-/// a negative derivative of eq. 4's numerator at t_i counts as a minimum. Below it the piece is
-/// a circular arc to that relative accuracy (the numerator vanishes identically for a circle):
-/// its curvature has no extremum worth the name there, and no minimum is reported.
-constexpr double minimum_derivative_floor = 1e-8;
-
 /// Whether the input point of block i (t_i inside the bound margin) is at a curvature MINIMUM
-/// of its piece: the numerator E of kappa' (eq. 4, fair::internal::conic::eq4_coefficients; E
-/// goes from - to + at a maximum of |kappa|) decreases at t_i, by more than
-/// minimum_derivative_floor relative to the size of its terms. The weights are st.w.
+/// of its piece: the numerator E of kappa' (eq. 4) decreases at t_i, by more than
+/// minimum_derivative_floor relative to the size of its terms (below it the piece is a
+/// circular arc to that accuracy and no minimum is reported).
 inline bool point_at_minimum(const Problem& pb, const Kappa_solver_state& st, std::size_t i) {
-  const double t = st.t[i], w = st.w[i];
+  const double t = st.t[i];
   if (!(t > bound_margin && t < 1 - bound_margin)) return false;
-  Window<double> win;
-  build_window(pb, st, i, win);
-  Piece_values<double> pv;
-  piece_values(pb, st, i, win, 2, pv);
-  const double* X = win.X[2];
-  const std::vector<double> b = conic::eq4_coefficients<double>(pv.E0[0], pv.E0[1], X[0], X[1], pv.E2[0], pv.E2[1], w);
-  const double u = 1 - t;
-  // E'(t) / 4 in the Bernstein basis of degree 3.
-  const double d = (b[1] - b[0]) * u * u * u + 3 * (b[2] - b[1]) * u * u * t + 3 * (b[3] - b[2]) * u * t * t +
-                   (b[4] - b[3]) * t * t * t;
-  const auto sq = [](double x, double y) { return x * x + y * y; };
-  const double size = (w * w * w + w + 1) * (sq(pv.E0[0] - X[0], pv.E0[1] - X[1]) + sq(X[0] - pv.E2[0], X[1] - pv.E2[1]) +
-                                             sq(pv.E0[0] - pv.E2[0], pv.E0[1] - pv.E2[1]));
-  return d < -minimum_derivative_floor * size;
+  const Eq4_of_piece e = eq4_of_piece(pb, st, i);
+  return e.derivative(t) < -minimum_derivative_floor * e.size;
 }
 
 /// The outcome of a solve whose per-block residuals are F (4 per block, as evaluate()) and, with
@@ -481,8 +725,11 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
                      const std::vector<double>& F, const std::vector<double>& weight_error, Kappa_solve_report& res) {
   res.bounds_active = bounds_active(pb, st, &res.points_on_joins);
   res.points_at_minima.clear();
+  // A point on its face whose multiplier is negative (|kappa| of its piece falls towards the
+  // join) is at a minimum of |kappa| over its piece too, at the piece's end.
   for (std::size_t i = 0; i < pb.n; ++i)
-    if (point_at_minimum(pb, st, i)) res.points_at_minima.push_back(pb.point_index(i));
+    if (point_at_minimum(pb, st, i) || (t_on_face(st.t[i]) && face_multiplier_negative(pb, st, i)))
+      res.points_at_minima.push_back(pb.point_index(i));
   const bool solved = res.residual <= settings.tolerance;
   res.status = !solved || !res.points_at_minima.empty() ? Kappa_solve_status::UNSOLVED
                : res.bounds_active > 0                  ? Kappa_solve_status::ON_JOINS
@@ -494,6 +741,7 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
   std::vector<Kappa_point_residual> all(pb.n);
   for (std::size_t i = 0; i < pb.n; ++i) {
     double r = weight_error.empty() ? 0.0 : weight_error[i];
+    if (std::isnan(r)) r = std::numeric_limits<double>::infinity();  // NaN: the worst, and a valid sort key
     for (int c = 0; c < 4; ++c) {
       const double a = std::abs(F[4 * i + c]);
       r = std::isnan(a) ? std::numeric_limits<double>::infinity() : std::max(r, a);  // NaN: the worst
@@ -510,6 +758,10 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
 
 /// Iteration cap of the Newton phase before the Levenberg-Marquardt fallback takes over.
 constexpr std::size_t newton_iterations = 30;
+/// Iteration cap of Newton's method in each warm-start stage: from a nearby previous solution it
+/// converges in 2-5 Jacobians; more means it is outside the basin (an edit that moves points
+/// onto or off joins), where the cold start's Newton paths are cheaper than crawling on.
+constexpr std::size_t warm_newton_iterations = 8;
 /// Iteration cap of the Levenberg-Marquardt run of a local warm-start stage.
 constexpr std::size_t local_lm_iterations = 20;
 
@@ -551,10 +803,15 @@ inline Kappa_solve_report finish(const Problem& pb, Kappa_solver_state& st, cons
   return res;
 }
 
-/// An interior root: max |r| = fmax within the tolerance and no t_i, lambda_i on a bound.
-inline bool is_interior_root(const Problem& pb, const Kappa_solver_state& st, double fmax,
-                             const Solve_settings& settings) {
-  return fmax <= settings.tolerance && bounds_active(pb, st) == 0;
+/// A root of the box-constrained problem: max |r| = fmax of the equations that remain within the
+/// tolerance, and every t_i on its face with a non-negative multiplier (face_multiplier_negative:
+/// Q_i is where its piece's |kappa| is largest). Its t_i on their faces are the points on joins
+/// (Kappa_solve_status::ON_JOINS). O(n), eq. 4 evaluated only on the faces.
+inline bool is_root(const Problem& pb, const Kappa_solver_state& st, double fmax, const Solve_settings& settings) {
+  if (!(fmax <= settings.tolerance)) return false;
+  for (std::size_t i = 0; i < pb.n; ++i)
+    if (t_on_face(st.t[i]) && face_multiplier_negative(pb, st, i)) return false;
+  return true;
 }
 
 /// What is left of the iteration cap (Jacobians of the whole solve).
@@ -563,18 +820,24 @@ inline std::size_t remaining_iterations(const Solve_settings& settings, const Ka
 }
 
 /// Cold start, the Newton paths: initial guess, fast_passes alternating passes, Newton's
-/// method (the fast path: from a residual of ~0.05 it converges quadratically in two or three
-/// Jacobians on typical data). If that fails: the paper's way, up to `refinement_passes` passes
-/// from the initial guess, then Newton's method again (on random data in the unit square it then
-/// converges as often as Levenberg-Marquardt, and the union of both is larger).
-/// Returns true (fmax set) at an interior root; otherwise st is the state after the passes.
+/// method with the active set (the fast path: from a residual of ~0.05 it converges
+/// quadratically in two or three Jacobians on typical data). If that does not end at an
+/// interior root: the paper's way, up to `refinement_passes` passes from the initial guess, then
+/// Newton's method again (on random data in the unit square it then converges as often as
+/// Levenberg-Marquardt, and it finds an interior root for some sets whose fast path ended on
+/// joins). An interior root is preferred; else the first root on joins found.
+/// Returns true (fmax set) at a root; otherwise st is the state after the passes.
 inline bool cold_start_newton(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
                               Kappa_solve_report& res, double& fmax) {
   initial_guess(pb, st);
   const std::size_t first_passes = std::min<std::size_t>(fast_passes, settings.refinement_passes);
   refine(pb, st, first_passes, refinement_stop, res);
-  fmax = newton(pb, st, settings, res, std::min<std::size_t>(settings.max_iterations, newton_iterations));
-  if (is_interior_root(pb, st, fmax, settings)) return true;
+  fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), newton_iterations));
+  if (is_root(pb, st, fmax, settings) && bounds_active(pb, st) == 0) return true;
+  const bool on_joins = is_root(pb, st, fmax, settings);
+  Kappa_solver_state joins_root;
+  const double joins_fmax = fmax;
+  if (on_joins) joins_root = st;
   // The start is recomputed (deterministic) rather than kept: no copy of the state on the
   // fast path.
   initial_guess(pb, st);
@@ -584,10 +847,13 @@ inline bool cold_start_newton(const Problem& pb, Kappa_solver_state& st, const S
   if (res.iterations < settings.max_iterations && passes.refinement_passes > first_passes) {
     Kappa_solver_state after_passes = st;
     fmax = newton(pb, st, settings, res, std::min(settings.max_iterations - res.iterations, newton_iterations));
-    if (is_interior_root(pb, st, fmax, settings)) return true;
+    if (is_root(pb, st, fmax, settings) && (!on_joins || bounds_active(pb, st) == 0)) return true;
     st = after_passes;
   }
-  return false;
+  if (!on_joins) return false;
+  st = std::move(joins_root);
+  fmax = joins_fmax;
+  return true;
 }
 
 /// The blocks within distance R of block `moved` (cyclic for closed curves, clipped for open
@@ -627,14 +893,14 @@ inline bool local_warm_start(const Problem& pb, Kappa_solver_state& st, const So
     Block_range range;
     if (!local_range(pb, settings.moved, R, range)) break;
     Kappa_solver_state trial = st;
-    const std::size_t newton_cap = std::min(remaining_iterations(settings, res), newton_iterations);
+    const std::size_t newton_cap = std::min(remaining_iterations(settings, res), warm_newton_iterations);
     if (!(newton(pb, trial, settings, res, newton_cap, range) <= settings.tolerance)) {
       trial = st;
       const std::size_t lm_cap = std::min(remaining_iterations(settings, res), local_lm_iterations);
       levenberg_marquardt(pb, trial, settings, res, lm_cap, range);
     }
     const double fm = evaluate(pb, trial, F);
-    if (is_interior_root(pb, trial, fm, settings)) {
+    if (is_root(pb, trial, fm, settings)) {
       st = trial;
       fmax = fm;
       return true;
@@ -652,8 +918,8 @@ inline bool local_warm_start(const Problem& pb, Kappa_solver_state& st, const So
 inline bool global_warm_newton(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
                                Kappa_solve_report& res, double& fmax) {
   Kappa_solver_state start = st;
-  fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), newton_iterations));
-  if (is_interior_root(pb, st, fmax, settings)) return true;
+  fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), warm_newton_iterations));
+  if (is_root(pb, st, fmax, settings)) return true;
   st = start;
   return false;
 }
@@ -676,22 +942,34 @@ inline double levenberg_marquardt_with_restart(const Problem& pb, Kappa_solver_s
 /// Solves the kappa-curve system; `st` holds the initial state when settings.warm.
 /// Cold start: cold_start_newton, else (from the passes) levenberg_marquardt_with_restart.
 /// Warm start (st of size n): local_warm_start around the moved block, else global_warm_newton,
-/// else levenberg_marquardt_with_restart, from the previous solution.
+/// else cold_start_newton (report().warm_started false then), else
+/// levenberg_marquardt_with_restart from the previous solution.
 inline Kappa_solve_report solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings) {
   Kappa_solve_report res;
   const bool cold = !settings.warm || st.t.size() != pb.n;
   res.warm_started = !cold;
   double fmax = std::numeric_limits<double>::infinity();
-  const bool root = cold ? cold_start_newton(pb, st, settings, res, fmax)
-                         : local_warm_start(pb, st, settings, res, fmax) || global_warm_newton(pb, st, settings, res, fmax);
+  bool root = cold ? cold_start_newton(pb, st, settings, res, fmax)
+                   : local_warm_start(pb, st, settings, res, fmax) || global_warm_newton(pb, st, settings, res, fmax);
+  if (!root && !cold) {
+    // The Newton paths of a cold start (a few Jacobians) before Levenberg-Marquardt from the
+    // previous solution: an edit that moves points onto or off joins can leave the previous
+    // solution outside Newton's basin while the cold start's passes land inside it.
+    Kappa_solver_state fresh;
+    if (cold_start_newton(pb, fresh, settings, res, fmax)) {
+      st = std::move(fresh);
+      res.warm_started = false;
+      root = true;
+    }
+  }
   if (!root) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
   return finish(pb, st, settings, res, fmax);
 }
 
 /// The warm/cold start policy of Kappa_curve_2: with a `previous` solution of the same size
 /// (offsets already in pb's normalisation), a warm start after a change of input point
-/// `moved_point` (any value that is not an input point: unknown change), and if that does not
-/// converge a cold start as well, keeping the solve with the smaller residual
+/// `moved_point` (any value that is not an input point: unknown change), and if that ends
+/// UNSOLVED a cold start as well, keeping the better solve (by outcome, then residual)
 /// (report().warm_started says which); without one, a cold start. `st` receives the solution.
 inline Kappa_solve_report solve_with_warm_start(const Problem& pb, const Kappa_solver_state* previous,
                                                 std::size_t moved_point, Solve_settings settings,
@@ -704,10 +982,17 @@ inline Kappa_solve_report solve_with_warm_start(const Problem& pb, const Kappa_s
   warm.warm = true;
   warm.moved = pb.block_of_point(moved_point);
   const Kappa_solve_report warm_report = solve(pb, st, warm);
-  if (warm_report.status == Kappa_solve_status::INTERIOR) return warm_report;
+  // A warm root on joins is the constrained solution near the previous one: kept (a cold solve
+  // costs more than the whole warm one and would jump to another root far from the edit).
+  if (warm_report.status != Kappa_solve_status::UNSOLVED) return warm_report;
   Kappa_solver_state cold;
   Kappa_solve_report cold_report = solve(pb, cold, settings);
-  if (!(cold_report.residual < warm_report.residual)) return warm_report;
+  // Ranked by outcome (INTERIOR, ON_JOINS, UNSOLVED: the enum's order), then by residual (NaN last).
+  const auto rank = [](const Kappa_solve_report& r) { return static_cast<int>(r.status); };
+  const bool cold_better = rank(cold_report) < rank(warm_report) ||
+                           (rank(cold_report) == rank(warm_report) &&
+                            (cold_report.residual < warm_report.residual || (std::isnan(warm_report.residual) && !std::isnan(cold_report.residual))));
+  if (!cold_better) return warm_report;
   st = std::move(cold);
   return cold_report;
 }
