@@ -298,4 +298,65 @@ TEST(KappaRealOutcome, FeatherIcons) { expect_solved(solve_data_set("feather"));
 TEST(KappaRealOutcome, GlyphOutlines) { expect_solved(solve_data_set("glyphs")); }
 TEST(KappaRealOutcome, GlyphOutlinesDenseStress) { expect_solved(solve_data_set("glyphs-dense")); }
 
+// ---- the other interpolants on the same data: no crash, no NaN, interpolation ---------------
+
+/// Every set of the three small data sets through `make` (returns the pieces, and whether the
+/// curve interpolates all points or only its open ends); a typed Invalid_input_error is
+/// accepted only outside the method's documented domain (all points collinear, fewer points
+/// than min_open / min_closed).
+template <class Make>
+void expect_interpolant(const char* method, Make make, std::size_t min_open = 3, std::size_t min_closed = 3) {
+  std::size_t curves = 0, rejected = 0;
+  double worst = 0;
+  for (const char* name : {"quickdraw", "feather", "glyphs"})
+    for (const Point_set& set : data_set(name)) {
+      const std::vector<Point> q = to_points(set.points);
+      try {
+        bool interpolates = true;
+        const auto pieces = make(q, set.closed, interpolates);
+        const kappa_real::Interpolant_result r = kappa_real::check_interpolant(pieces, q, set.closed, interpolates);
+        ++curves;
+        worst = std::max(worst, r.worst_distance);
+        EXPECT_TRUE(r.finite) << method << " on " << set.data_set << ": " << set.name;
+        EXPECT_LE(r.worst_distance, 1e-12) << method << " on " << set.data_set << ": " << set.name;
+      } catch (const fair::Invalid_input_error& e) {
+        ++rejected;
+        EXPECT_TRUE(all_collinear(q) || q.size() < (set.closed ? min_closed : min_open))
+            << method << " rejected " << set.data_set << ": " << set.name << ": " << e.what();
+      }
+    }
+  std::cout << "[real data] " << method << ": " << curves << " curves, " << rejected
+            << " rejected (typed error), worst distance of a piece end from its point " << worst << "\n";
+}
+
+TEST(KappaRealInterpolants, CardinalSplineWithOptimalParameters) {
+  expect_interpolant("Cardinal_spline_2::optimal", [](const std::vector<Point>& q, bool closed, bool&) {
+    return fair::Cardinal_spline_2<K>::optimal(q, closed).pieces();
+  }, 4);  // optimal_cardinal_parameters: an open curve needs 4 points
+}
+
+TEST(KappaRealInterpolants, CsrSpline) {
+  // An approximant: only the ends of an open curve are at the data (Csr_spline_2.h).
+  expect_interpolant("Csr_spline_2", [](const std::vector<Point>& q, bool closed, bool& interpolates) {
+    interpolates = false;
+    const fair::Csr_spline_2<K> s(q, closed);
+    EXPECT_TRUE(std::isfinite(s.max_distance_to_samples()));
+    return s.pieces();
+  }, 3, 4);
+}
+
+TEST(KappaRealInterpolants, CatmullRomCentripetal) {
+  expect_interpolant("Catmull_rom_2 (centripetal)", [](const std::vector<Point>& q, bool closed, bool&) {
+    return fair::Catmull_rom_2<K>(q, closed, fair::Knot_spacing::CENTRIPETAL).pieces();
+  });
+}
+
+TEST(KappaRealInterpolants, CubicInterpolatingSplineChordal) {
+  expect_interpolant("Cubic_interpolating_spline_2 (chordal)", [](const std::vector<Point>& q, bool closed, bool&) {
+    return fair::Cubic_interpolating_spline_2<K>(
+               q, closed ? fair::Spline_end_condition::PERIODIC : fair::Spline_end_condition::NATURAL,
+               fair::Knot_spacing::CHORDAL).pieces();
+  });
+}
+
 } // namespace
