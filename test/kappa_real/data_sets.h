@@ -5,6 +5,8 @@
 //  - quickdraw: the strokes of hand-drawn Quick, Draw! sketches (quickdraw_angel.json, parsed
 //    here): open, or closed when the stroke returns to within 5 % of its size of its start;
 //  - feather: the SVG <polyline> (open) and <polygon> (closed) elements of the Feather icons;
+//  - coastlines: digitised coastlines of Natural Earth (LineStrings in longitude, latitude),
+//    closed where the line returns to its start (islands), open otherwise;
 //  - glyphs: TrueType contours of DejaVu glyphs (glyph_outlines.h), closed.
 // Strokes with fewer than 3 points are skipped (no kappa-curve); everything else is kept, also
 // sets the library must reject (all points collinear): the test asserts the typed error there.
@@ -128,6 +130,29 @@ inline std::vector<Point_set> quickdraw_strokes(const std::string& path) {
       Point_set ps = stroke_set("quickdraw", "drawing " + id + " stroke " + std::to_string(s), std::move(p), false);
       if (ps.points.size() >= 3) out.push_back(std::move(ps));
     }
+    at = i;
+  }
+  return out;
+}
+
+/// The LineString features of a GeoJSON file with one Feature per line (member "coordinates",
+/// [longitude, latitude] pairs, used as planar x, y).
+inline std::vector<Point_set> geojson_lines(const std::string& path, const std::string& data_set) {
+  const std::string text = read_text(path);
+  std::vector<Point_set> out;
+  std::size_t at = 0;
+  for (std::size_t feature = 0;; ++feature) {
+    std::size_t i = text.find("\"coordinates\":", at);
+    if (i == std::string::npos) break;
+    i += 14;
+    const Json_array line = parse_json_array(text, i);
+    std::vector<Xy> p;
+    for (const Json_array& xy : line.items) {
+      if (xy.items.size() < 2) throw std::runtime_error("geojson_lines: feature " + std::to_string(feature) + " malformed");
+      p.push_back(Xy{xy.items[0].number, xy.items[1].number});
+    }
+    Point_set ps = stroke_set(data_set, "feature " + std::to_string(feature), std::move(p), false);
+    if (ps.points.size() >= 3) out.push_back(std::move(ps));
     at = i;
   }
   return out;

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // Kappa-curves (and the other interpolants) on real designed data nobody in this project wrote
-// (issue 9 §5): hand-drawn Quick, Draw! strokes, Feather icon polylines, DejaVu glyph outlines
-// (test/data/real/SOURCES.md; doc/real_data.md). On every curve, with unit and automatic
+// (issue 9 §5): hand-drawn Quick, Draw! strokes, Feather icon polylines, Natural Earth
+// coastlines, DejaVu glyph outlines (test/data/real/SOURCES.md; doc/real_data.md). On every curve, with unit and automatic
 // weights, open where the data are open and closed where closed:
 //  - the independent property check of property_check.h (interpolation at the piece's
 //    curvature maximum, C0, G1, |kappa| continuity) from the returned pieces only;
@@ -75,11 +75,12 @@ std::vector<Point_set> glyph_sets(kappa_real::Glyph_sampling sampling, const std
   return out;
 }
 
-/// The data sets by name: "quickdraw", "feather", "glyphs" (on-curve and midpoint sampling),
-/// "glyphs-dense".
+/// The data sets by name: "quickdraw", "feather", "coastlines", "glyphs" (on-curve and midpoint
+/// sampling), "glyphs-dense".
 std::vector<Point_set> data_set(const std::string& name) {
   if (name == "quickdraw") return kappa_real::quickdraw_strokes(real_dir + "quickdraw_angel.json");
   if (name == "feather") return kappa_real::feather_polylines(real_dir + "feather_polylines.txt");
+  if (name == "coastlines") return kappa_real::geojson_lines(real_dir + "natural_earth_coastlines.ndjson", name);
   if (name == "glyphs") {
     std::vector<Point_set> a = glyph_sets(kappa_real::Glyph_sampling::ON_CURVE, name);
     const std::vector<Point_set> b = glyph_sets(kappa_real::Glyph_sampling::MIDPOINTS, name);
@@ -214,6 +215,7 @@ void expect_solved(const std::vector<Solve_record>& records) {
 TEST(KappaRealData, TheDataSetsAreThere) {
   const std::vector<Point_set> quickdraw = data_set("quickdraw");
   const std::vector<Point_set> feather = data_set("feather");
+  const std::vector<Point_set> coastlines = data_set("coastlines");
   std::vector<Point_set> glyphs;
   ASSERT_NO_THROW(glyphs = data_set("glyphs")) << "the DejaVu fonts are a declared test dependency";
   // 20 drawings in the file; every drawing has strokes of at least 3 points.
@@ -221,6 +223,10 @@ TEST(KappaRealData, TheDataSetsAreThere) {
   for (const Point_set& s : quickdraw) drawings[s.name.substr(0, s.name.find(" stroke"))] += 1;
   EXPECT_EQ(drawings.size(), 20u);
   EXPECT_GE(feather.size(), 100u);
+  // 16 features, 2 of them open coast segments, the largest (Greenland) 131 points.
+  ASSERT_EQ(coastlines.size(), 16u);
+  EXPECT_EQ(std::count_if(coastlines.begin(), coastlines.end(), [](const Point_set& s) { return !s.closed; }), 2);
+  EXPECT_EQ(coastlines.back().points.size(), 131u);
   // Both fonts, every character, and both samplings.
   for (const char* font : {"DejaVuSans '", "DejaVuSerif '"})
     for (const char* ch = glyph_characters; *ch; ++ch) {
@@ -228,7 +234,7 @@ TEST(KappaRealData, TheDataSetsAreThere) {
       EXPECT_TRUE(std::any_of(glyphs.begin(), glyphs.end(), [&](const Point_set& s) { return s.name.find(key) == 0; }))
           << key;
     }
-  for (const std::vector<Point_set>* sets : std::vector<const std::vector<Point_set>*>{&quickdraw, &feather, &glyphs})
+  for (const std::vector<Point_set>* sets : std::vector<const std::vector<Point_set>*>{&quickdraw, &feather, &coastlines, &glyphs})
     for (const Point_set& s : *sets) EXPECT_GE(s.points.size(), 3u) << s.name;
   // Open and closed among the hand-drawn strokes and the icons.
   for (const std::vector<Point_set>* sets : std::vector<const std::vector<Point_set>*>{&quickdraw, &feather}) {
@@ -290,11 +296,13 @@ TEST(KappaRealData, ThePropertyCheckPassesThePublishedCurveAndCatchesBrokenOnes)
 
 TEST(KappaRealProperties, QuickDrawStrokes) { expect_properties(solve_data_set("quickdraw")); }
 TEST(KappaRealProperties, FeatherIcons) { expect_properties(solve_data_set("feather")); }
+TEST(KappaRealProperties, NaturalEarthCoastlines) { expect_properties(solve_data_set("coastlines")); }
 TEST(KappaRealProperties, GlyphOutlines) { expect_properties(solve_data_set("glyphs")); }
 TEST(KappaRealProperties, GlyphOutlinesDenseStress) { expect_properties(solve_data_set("glyphs-dense")); }
 
 TEST(KappaRealOutcome, QuickDrawStrokes) { expect_solved(solve_data_set("quickdraw")); }
 TEST(KappaRealOutcome, FeatherIcons) { expect_solved(solve_data_set("feather")); }
+TEST(KappaRealOutcome, NaturalEarthCoastlines) { expect_solved(solve_data_set("coastlines")); }
 TEST(KappaRealOutcome, GlyphOutlines) { expect_solved(solve_data_set("glyphs")); }
 TEST(KappaRealOutcome, GlyphOutlinesDenseStress) { expect_solved(solve_data_set("glyphs-dense")); }
 
@@ -308,7 +316,7 @@ template <class Make>
 void expect_interpolant(const char* method, Make make, std::size_t min_open = 3, std::size_t min_closed = 3) {
   std::size_t curves = 0, rejected = 0;
   double worst = 0;
-  for (const char* name : {"quickdraw", "feather", "glyphs"})
+  for (const char* name : {"quickdraw", "feather", "coastlines", "glyphs"})
     for (const Point_set& set : data_set(name)) {
       const std::vector<Point> q = to_points(set.points);
       try {
