@@ -10,8 +10,8 @@
 //    that end UNSOLVED with the solver on main are listed in doc/real_data.md);
 //  - data the library must reject (all points collinear) throw Invalid_input_error.
 // Every test prints a per-data-set summary (counts per outcome, worst residual).
-// Kernel: EPICK (the solve runs in double whatever the kernel; the kernel-generic parts are
-// covered by test_kappa*).
+// Kernel: EPICK (the solve runs in double whatever the kernel), and the Feather icons in both
+// floating kernels (KappaRealKernels); the exact kernels are covered by test_kappa*.
 
 #include <fair/Cardinal_spline_2.h>
 #include <fair/Catmull_rom_2.h>
@@ -35,6 +35,7 @@
 #include "data_sets.h"
 #include "glyph_outlines.h"
 #include "property_check.h"
+#include "test_support.h"
 
 namespace {
 
@@ -305,6 +306,33 @@ TEST(KappaRealOutcome, FeatherIcons) { expect_solved(solve_data_set("feather"));
 TEST(KappaRealOutcome, NaturalEarthCoastlines) { expect_solved(solve_data_set("coastlines")); }
 TEST(KappaRealOutcome, GlyphOutlines) { expect_solved(solve_data_set("glyphs")); }
 TEST(KappaRealOutcome, GlyphOutlinesDenseStress) { expect_solved(solve_data_set("glyphs-dense")); }
+
+// ---- the same in each floating kernel ---------------------------------------------------------
+
+template <class Kernel>
+class KappaRealKernels : public ::testing::Test {};
+TYPED_TEST_SUITE(KappaRealKernels, fair_test::Floating_kernels);
+
+TYPED_TEST(KappaRealKernels, FeatherIconsSolvedAndCheckedWithUnitWeights) {
+  typedef typename TypeParam::Point_2 P;
+  std::size_t solved = 0;
+  for (const Point_set& set : data_set("feather")) {
+    std::vector<P> q;
+    for (const kappa_real::Xy& xy : set.points) q.emplace_back(xy.x, xy.y);
+    fair::Kappa_curve_options o;
+    o.closed = set.closed;
+    try {
+      const fair::Kappa_curve_2<TypeParam> curve(q, o);
+      const kappa_real::Curve_result r = kappa_real::check_kappa_curve(curve.pieces(), q, set.closed);
+      EXPECT_NE(curve.report().status, fair::Kappa_solve_status::UNSOLVED) << set.name << ": " << curve.report();
+      EXPECT_TRUE(r.passes()) << set.name << ": " << r.summary();
+      ++solved;
+    } catch (const fair::Invalid_input_error& e) {
+      EXPECT_TRUE(all_collinear(to_points(set.points))) << set.name << ": " << e.what();
+    }
+  }
+  EXPECT_GE(solved, 100u);
+}
 
 // ---- the other interpolants on the same data: no crash, no NaN, interpolation ---------------
 
