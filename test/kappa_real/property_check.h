@@ -45,6 +45,9 @@ constexpr std::size_t interpolant_samples = 32;
 /// Golden-section searches stop when the bracket is this short (in t), or after 200 steps.
 constexpr double golden_interval = 1e-13;
 constexpr std::size_t golden_cap = 200;
+/// The largest |kappa| of a piece is "at an end" when its parameter is within this of 0 or 1
+/// (golden section can stop a few golden_interval inside when |kappa| is flat at the end).
+constexpr double end_margin = 1e-9;
 
 /// The tolerances of the check (issue 9 §5 / brief K2): interpolation in units of the half
 /// size of the bounding box, unit tangents absolute, |kappa| relative.
@@ -219,7 +222,7 @@ Curve_result check_kappa_curve(const std::vector<Piece>& pieces, const std::vect
     const double kmax = abs_kappa(pr.t_max);
     pr.kappa_deficit = kmax > 0 ? (kmax - abs_kappa(pr.t_closest)) / kmax : 0.0;
     pr.max_offset = std::sqrt(-closeness(pr.t_max)) / r.scale;
-    pr.max_at_end = pr.t_max == 0.0 || pr.t_max == 1.0;
+    pr.max_at_end = pr.t_max <= end_margin || pr.t_max >= 1 - end_margin;
     if (!std::isfinite(pr.distance) || !std::isfinite(pr.kappa_deficit)) pr.finite = false;
     r.finite = r.finite && pr.finite;
     r.pieces.push_back(pr);
