@@ -76,10 +76,11 @@ struct Kappa_solve_report {
   std::vector<std::size_t> points_on_joins;
   /// Deprecated (kept one release): the same as points_on_joins.
   std::vector<std::size_t> boundary_points;
-  /// The input points (increasing) whose t_i is inside (0, 1) but where the curvature of the
-  /// piece has a MINIMUM instead of a maximum (the sign of the derivative of eq. 4's numerator
-  /// at t_i, in double; fair::certify() decides it exactly). Non-empty only with weights < 1;
-  /// the outcome is then UNSOLVED.
+  /// The input points (increasing) that are not at the maximum of |kappa| of their piece: t_i
+  /// inside (0, 1) at a curvature MINIMUM (the sign of the derivative of eq. 4's numerator at
+  /// t_i, in double; fair::certify() decides it exactly; possible with weights < 1), or t_i on a
+  /// join while |kappa| of the piece falls towards the join (the face multiplier) or is larger
+  /// elsewhere on the piece (64 samples; a sample above is a witness). The outcome is then UNSOLVED.
   std::vector<std::size_t> points_at_minima;
   /// UNSOLVED: up to worst_points_listed input points with the largest residuals, worst first.
   /// Empty otherwise.

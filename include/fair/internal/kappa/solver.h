@@ -44,6 +44,7 @@
 #include <fair/internal/kappa/jacobian.h>
 #include <fair/internal/kappa/refinement.h>
 #include <fair/internal/kappa/system.h>
+#include <fair/internal/common/curvature.h>
 #include <fair/internal/conic/curvature_extrema.h>
 
 #include <algorithm>
@@ -718,6 +719,50 @@ inline bool point_at_minimum(const Problem& pb, const Kappa_solver_state& st, st
   return e.derivative(t) < -minimum_derivative_floor * e.size;
 }
 
+/// |kappa| of the rational quadratic with control points P0, P1, P2 and weights (1, w, 1) at t:
+/// C = P / W with P = u^2 P0 + 2ut w P1 + t^2 P2, W = u^2 + 2ut w + t^2 (u = 1 - t), and
+/// C' = (P'W - PW') / W^2, C'' = (P''W - PW'') / W^2 - 2 W' (P'W - PW') / W^3.
+inline double rational_quadratic_abs_curvature(const double* P0, const double* P1, const double* P2, double w,
+                                               double t) {
+  const double u = 1 - t;
+  const double W = u * u + 2 * u * t * w + t * t, dW = 2 * (-u + (u - t) * w + t), ddW = 4 * (1 - w);
+  double d1[2], d2[2];
+  for (int c = 0; c < 2; ++c) {
+    const double P = u * u * P0[c] + 2 * u * t * w * P1[c] + t * t * P2[c];
+    const double dP = 2 * (-u * P0[c] + (u - t) * w * P1[c] + t * P2[c]), ddP = 2 * (P0[c] - 2 * w * P1[c] + P2[c]);
+    const double a = dP * W - P * dW;
+    d1[c] = a / (W * W);
+    d2[c] = (ddP * W - P * ddW) / (W * W) - 2 * dW * a / (W * W * W);
+  }
+  return std::fabs(common::signed_curvature(d1[0], d1[1], d2[0], d2[1]));
+}
+
+/// Samples per piece of the check below: enough to see that a maximum of |kappa| lies away from
+/// the join (a rational quadratic's |kappa| has at most two interior extrema).
+constexpr int join_maximum_samples = 64;
+
+/// Whether the point of block i, with t_i within bound_margin of 0 or 1 (Q_i on a join), fails
+/// to be the maximum of |kappa| over its piece: some sample of the piece exceeds |kappa| at t_i
+/// by more than a relative 1e-6. The face multiplier only looks at the join's side; a piece whose
+/// |kappa| rises towards the join but is larger still at its other end passes that test and not
+/// this one. Only demotes an outcome (a sample above the join's value is a witness).
+inline bool join_point_not_at_maximum(const Problem& pb, const Kappa_solver_state& st, std::size_t i) {
+  const double t = st.t[i];
+  if (t > bound_margin && t < 1 - bound_margin) return false;
+  Window<double> win;
+  build_window(pb, st, i, win);
+  Piece_values<double> pv;
+  piece_values(pb, st, i, win, 2, pv);
+  const double* X = win.X[2];
+  const double at_join = rational_quadratic_abs_curvature(pv.E0, X, pv.E2, pv.w, t);
+  if (!std::isfinite(at_join)) return false;
+  for (int k = 0; k <= join_maximum_samples; ++k) {
+    const double v = rational_quadratic_abs_curvature(pv.E0, X, pv.E2, pv.w, double(k) / join_maximum_samples);
+    if (std::isfinite(v) && v > at_join * (1 + 1e-6)) return true;
+  }
+  return false;
+}
+
 /// The outcome of a solve whose per-block residuals are F (4 per block, as evaluate()) and, with
 /// automatic weights, weight_error (|w_i - eq. 16|, per block; empty otherwise): status, points
 /// at minima, worst points, and the deprecated aliases converged and boundary_points.
@@ -726,9 +771,11 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
   res.bounds_active = bounds_active(pb, st, &res.points_on_joins);
   res.points_at_minima.clear();
   // A point on its face whose multiplier is negative (|kappa| of its piece falls towards the
-  // join) is at a minimum of |kappa| over its piece too, at the piece's end.
+  // join) is at a minimum of |kappa| over its piece too, at the piece's end; a point on a join
+  // whose piece has larger |kappa| elsewhere is not at the piece's maximum either.
   for (std::size_t i = 0; i < pb.n; ++i)
-    if (point_at_minimum(pb, st, i) || (t_on_face(st.t[i]) && face_multiplier_negative(pb, st, i)))
+    if (point_at_minimum(pb, st, i) || (t_on_face(st.t[i]) && face_multiplier_negative(pb, st, i)) ||
+        join_point_not_at_maximum(pb, st, i))
       res.points_at_minima.push_back(pb.point_index(i));
   const bool solved = res.residual <= settings.tolerance;
   res.status = !solved || !res.points_at_minima.empty() ? Kappa_solve_status::UNSOLVED
