@@ -81,10 +81,12 @@ inline double edge_error(double l, double phi) { return 0.5 * l * std::tan(0.25 
 
 /// Splits the edges whose error exceeds eps_max at their midpoints; updates the interpolation
 /// indices and the constraint vertices. Returns the number of edges split.
-inline std::size_t subdivide(std::vector<Vec2>& c, bool closed, double eps_max, std::vector<std::size_t>& interpolation,
-                             std::vector<Placed_constraint>& placed) {
+inline std::size_t subdivide(const Level_problem& p, std::vector<Vec2>& c, double eps_max,
+                             std::vector<std::size_t>& interpolation, std::vector<Placed_constraint>& placed) {
+  const bool closed = p.f.closed;
   const std::size_t n = c.size(), edges = closed ? n : n - 1;
-  const std::vector<double> phi = turning_angles(c, closed);
+  // Turning angles with the ghosts of clamped ends (the turn from the end tangent counts).
+  const std::vector<double> phi = p.ghosts() ? p.strip(turning_angles(p.extend(c), closed), n) : turning_angles(c, closed);
   std::vector<unsigned char> split(edges, 0);
   std::size_t count = 0;
   for (std::size_t j = 0; j < edges; ++j) {
@@ -177,7 +179,8 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Solve_options&
   Solve_result r;
   std::vector<Placed_constraint> placed = check_constraints(o.constraints, points, o.closed);
   std::vector<Vec2> c = initial_polygon(points, o.closed, placed, r.interpolation_indices);
-  Functional f;
+  Level_problem p;
+  Functional& f = p.f;
   f.closed = o.closed;
   f.reference_length = polygon_length(points, o.closed);
   f.curvature_exponent = o.curvature_exponent;
@@ -195,16 +198,22 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Solve_options&
   Status overall = Status::CONVERGED;
   for (std::size_t level = 0;; ++level) {
     const Vertex_roles roles = vertex_roles(c.size(), o.closed, r.interpolation_indices, placed);
-    f.zero_curvature = roles.zero_curvature;
-    weights(c, r.interpolation_indices, f.length_weight, f.curvature_weight);
+    p.f.zero_curvature = roles.zero_curvature;
+    weights(c, r.interpolation_indices, p.f.length_weight, p.f.curvature_weight);
+    p.ghost_front = roles.ghost_front;
+    p.ghost_back = roles.ghost_back;
+    p.front_tangent = roles.front_tangent;
+    p.back_tangent = roles.back_tangent;
+    p.prepare();
     std::size_t iterations = 0;
     if (derivative && level == 0) {
       // Continuation (Sec. 3.3): the k = 0 solution first, then the k-th derivative energy.
-      Functional f0 = f;
-      f0.derivative_weight = {{0, 0, 0, 0, 0}};
-      iterations += solve_level(f0, roles, s, c).iterations;
+      Level_problem p0 = p;
+      p0.f.derivative_weight = {{0, 0, 0, 0, 0}};
+      p0.prepare();
+      iterations += solve_level(p0, roles, s, c).iterations;
     }
-    Level_outcome out = solve_level(f, roles, s, c);
+    Level_outcome out = solve_level(p, roles, s, c);
     out.iterations += iterations;
     r.levels.push_back({c.size(), out.iterations, out.energy, out.gradient_norm, out.status});
     r.iterations += out.iterations;
@@ -215,7 +224,7 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Solve_options&
     std::vector<Vec2> d = c;
     std::vector<std::size_t> interpolation = r.interpolation_indices;
     std::vector<Placed_constraint> moved = placed;
-    const std::size_t split = subdivide(d, o.closed, polygon_extent(c) / o.resolution, interpolation, moved);
+    const std::size_t split = subdivide(p, d, polygon_extent(c) / o.resolution, interpolation, moved);
     if (split == 0) break;
     if (d.size() > o.max_vertices) { overall = worse(overall, Status::CAPPED); break; }
     c.swap(d);
@@ -224,7 +233,7 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Solve_options&
   }
   r.status = overall;
   r.polygon = c;
-  r.curvatures = discrete_curvatures(f, c);
+  r.curvatures = problem_curvatures(p, c);
   return r;
 }
 
