@@ -85,6 +85,13 @@ inline std::size_t subdivide(const Level_problem& p, std::vector<Vec2>& c, doubl
                              std::vector<std::size_t>& interpolation, std::vector<Placed_constraint>& placed) {
   const bool closed = p.f.closed;
   const std::size_t n = c.size(), edges = closed ? n : n - 1;
+  // The k-th derivative energies (k >= 1): new vertices by the four-point rule (Dyn, Levin,
+  // Gregory; weights -1, 9, 9, -1 over 16) instead of the paper's edge midpoints, so that the
+  // warm start is smooth (a midpoint on a straight edge makes kappa jump and kappa^(k) ~ h^-k);
+  // plain midpoints next to corners (their neighbours stay on the rays) and at open ends.
+  const std::vector<unsigned char>& zero = p.f.zero_curvature;
+  bool four_point = false;
+  for (int k = 1; k <= 4; ++k) four_point = four_point || p.f.derivative_weight[k] > 0;
   // Turning angles with the ghosts of clamped ends (the turn from the end tangent counts).
   const std::vector<double> phi = p.ghosts() ? p.strip(turning_angles(p.extend(c), closed), n) : turning_angles(c, closed);
   std::vector<unsigned char> split(edges, 0);
@@ -102,7 +109,15 @@ inline std::size_t subdivide(const Level_problem& p, std::vector<Vec2>& c, doubl
     d.push_back(c[j]);
     if (j < edges && split[j]) {
       const Vec2& q = c[(j + 1) % n];
-      d.push_back({{0.5 * (c[j][0] + q[0]), 0.5 * (c[j][1] + q[1])}});
+      Vec2 mid = {{0.5 * (c[j][0] + q[0]), 0.5 * (c[j][1] + q[1])}};
+      if (four_point && (closed || (j >= 1 && j + 2 < n))) {
+        const std::size_t a = (j + n - 1) % n, b = (j + 2) % n;
+        bool corner = false;
+        for (std::size_t v : {a, j, (j + 1) % n, b}) corner = corner || (!zero.empty() && zero[v]);
+        if (!corner)
+          for (int k = 0; k < 2; ++k) mid[k] = (9 * (c[j][k] + q[k]) - (c[a][k] + c[b][k])) / 16;
+      }
+      d.push_back(mid);
     }
   }
   for (std::size_t& i : interpolation) i = index[i];
@@ -230,6 +245,7 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Solve_options&
     c.swap(d);
     r.interpolation_indices.swap(interpolation);
     placed.swap(moved);
+    restore_ties(vertex_roles(c.size(), o.closed, r.interpolation_indices, placed), c);
   }
   r.status = overall;
   r.polygon = c;

@@ -59,6 +59,7 @@ struct Level_settings {
   std::size_t max_iterations = 100;
   double tolerance = 1e-10;
   double max_extent = std::numeric_limits<double>::infinity();  // divergence cap
+  bool fixed_normals = true;  // lines of motion fixed for the whole level (see solve_level)
 };
 
 struct Level_outcome {
@@ -174,12 +175,12 @@ struct Reduced_unknowns {
   bool cyclic = false;
 };
 
-inline Reduced_unknowns reduced_unknowns(const std::vector<Vec2>& c, bool closed, const Vertex_roles& roles) {
+inline Reduced_unknowns reduced_unknowns(const std::vector<Vec2>& c, const std::vector<Vec2>& normals,
+                                         const Vertex_roles& roles, bool closed) {
   const std::size_t n = c.size();
   Reduced_unknowns u;
   u.var.assign(n, -1);
   u.dir.assign(n, Vec2{{0, 0}});
-  const std::vector<Vec2> normals = vertex_normals(c, closed);
   std::vector<long> tie_of(n, -1);  // tie index of a tied neighbour
   for (std::size_t t = 0; t < roles.ties.size(); ++t) {
     const std::size_t j = roles.ties[t].centre;
@@ -352,11 +353,15 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
   Block_banded_hessian h;
   Banded_symmetric rh;
   std::vector<double> rg, x, previous_g, direction;
+  std::vector<Vec2> normals;
   const double inf = std::numeric_limits<double>::infinity();
   for (std::size_t it = 0;; ++it) {
     const double e = problem_energy_gradient_hessian(p, c, g, h);
     out.energy = e;
-    const Reduced_unknowns u = reduced_unknowns(c, f.closed, roles);
+    // The lines of motion: normals of the level's start polygon (s.fixed_normals) or of the
+    // current polygon (recomputed after every step, the paper's choice).
+    if (it == 0 || !s.fixed_normals) normals = vertex_normals(c, f.closed);
+    const Reduced_unknowns u = reduced_unknowns(c, normals, roles, f.closed);
     reduced_system(g, h, f.closed, u, rg, rh);
     out.gradient_norm = std::sqrt(dot_product(rg, rg));
     out.iterations = it;
