@@ -8,7 +8,7 @@
 // central angle phi, r = l / (2 sin(phi/2)) and eps = r (1 - cos(phi/2)) = (l/2) tan(phi/4) by the
 // half-angle identity (1 - cos x)/sin x = tan(x/2); the paper's printed
 // l (1 - cos(phi/2)) / (2 sin(phi/2)) is the same expression), eps_max = one pixel = extent / rho
-// of the current polygon's bounding box, warm start, until no edge is split (the target
+// of the current polygon (rotation_invariant_extent), warm start, until no edge is split (the target
 // resolution) or a cap (max_levels, max_vertices) stops it. Interpolation points stay fixed.
 
 #ifndef FAIR_INTERNAL_OPTIMAL_HIERARCHY_H
@@ -62,6 +62,20 @@ struct Solve_result {
   std::vector<double> eta;  // per segment, when the lambda design ran (eq. 11)
   bool eta_reference_guarded = false;  // lambda = 1 diverged: eta from the lambda = 0.99 curve
 };
+
+/// The extent that rho refers to: twice the largest distance of a vertex from the vertices'
+/// centroid. The paper's bounding-box extent depends on the orientation (a rotated input would
+/// be subdivided differently, and rigid motions would not commute with the solve); this one is
+/// invariant and between the bounding box's larger side and 2 sqrt(2) times it.
+inline double rotation_invariant_extent(const std::vector<Vec2>& c) {
+  double x = 0, y = 0;
+  for (const Vec2& p : c) { x += p[0]; y += p[1]; }
+  x /= static_cast<double>(c.size());
+  y /= static_cast<double>(c.size());
+  double r = 0;
+  for (const Vec2& p : c) r = std::max(r, std::hypot(p[0] - x, p[1] - y));
+  return 2 * r;
+}
 
 /// The turning angle phi_j at every vertex (0 at open ends).
 inline std::vector<double> turning_angles(const std::vector<Vec2>& c, bool closed) {
@@ -239,7 +253,7 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Solve_options&
     std::vector<Vec2> d = c;
     std::vector<std::size_t> interpolation = r.interpolation_indices;
     std::vector<Placed_constraint> moved = placed;
-    const std::size_t split = subdivide(p, d, polygon_extent(c) / o.resolution, interpolation, moved);
+    const std::size_t split = subdivide(p, d, rotation_invariant_extent(c) / o.resolution, interpolation, moved);
     if (split == 0) break;
     if (d.size() > o.max_vertices) { overall = worse(overall, Status::CAPPED); break; }
     c.swap(d);

@@ -51,6 +51,10 @@ constexpr double degenerate_edge_fraction = 1e-12;
 /// When no Armijo step decreases F any more, the level counts as converged if the predicted
 /// decrease is below this fraction of |F| (the rounding floor of F's evaluation at large n).
 constexpr double rounding_floor = 1e-8;
+/// Largest move of a vertex in one step, as a fraction of its shorter incident edge.
+constexpr double max_step_fraction = 0.5;
+/// A level ending on its iteration cap with its extent grown by this factor is DIVERGING.
+constexpr double runaway_growth = 4;
 /// Newton-Raphson steps of the CG line search (the paper: "a maximum of ten").
 constexpr int cg_line_search_steps = 10;
 
@@ -344,6 +348,22 @@ inline double reduced_form(const Banded_symmetric& rh, const std::vector<double>
   return s;
 }
 
+/// The largest t <= 1 (or more) with |t x_k v_a| <= max_step_fraction * min(l_{a-1}, l_a) at
+/// every moved vertex a.
+inline double step_cap(const std::vector<Vec2>& c, bool closed, const Reduced_unknowns& u, const std::vector<double>& x) {
+  const std::size_t n = c.size();
+  double cap = std::numeric_limits<double>::infinity();
+  for (std::size_t a = 0; a < n; ++a) {
+    if (u.var[a] < 0) continue;
+    double l = std::numeric_limits<double>::infinity();
+    if (closed || a > 0) l = std::min(l, vec::norm(vec::sub(c[a], c[(a + n - 1) % n])));
+    if (closed || a + 1 < n) l = std::min(l, vec::norm(vec::sub(c[(a + 1) % n], c[a])));
+    const double move = std::abs(x[u.var[a]]) * vec::norm(u.dir[a]);
+    if (move > 0) cap = std::min(cap, max_step_fraction * l / move);
+  }
+  return cap;
+}
+
 /// Minimises F over the free unknowns of `c` (in place).
 inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& roles, const Level_settings& s,
                                  std::vector<Vec2>& c) {
@@ -355,6 +375,7 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
   std::vector<double> rg, x, previous_g, direction;
   std::vector<Vec2> normals;
   const double inf = std::numeric_limits<double>::infinity();
+  const double start_extent = polygon_extent(c);
   for (std::size_t it = 0;; ++it) {
     const double e = problem_energy_gradient_hessian(p, c, g, h);
     out.energy = e;
@@ -367,7 +388,11 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
     out.iterations = it;
     const double scale = std::max(std::abs(e), std::numeric_limits<double>::min());
     if (u.count == 0 || out.gradient_norm == 0) { out.status = Status::CONVERGED; return out; }
-    if (it >= s.max_iterations) { out.status = Status::CAPPED; return out; }
+    if (it >= s.max_iterations) {
+      // A level that ends on the cap with its extent grown many times is running away.
+      out.status = polygon_extent(c) > runaway_growth * start_extent ? Status::DIVERGING : Status::CAPPED;
+      return out;
+    }
     double decrement;  // predicted decrease of a full step
     if (!s.conjugate_gradient) {
       x.assign(rg.size(), 0);
@@ -415,8 +440,12 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
       x = direction;
       decrement = -dot_product(rg, x);
     }
-    // Armijo backtracking.
-    double t = 1, et = inf;
+    // Armijo backtracking from the longest step that moves no vertex by more than
+    // max_step_fraction of its shorter incident edge (a trust region in the geometry: a full
+    // Newton step far from the minimiser must not throw vertices across the curve, which makes
+    // loops and cusps that the level then "converges" in; near the minimiser steps are tiny and
+    // the cap is inactive, so the quadratic convergence is kept).
+    double t = std::min(1.0, step_cap(c, f.closed, u, x)), et = inf;
     std::vector<Vec2> trial;
     int b = 0;
     for (; b <= max_backtracks; ++b, t *= 0.5) {
