@@ -478,6 +478,23 @@ TEST(OptimiserDerivative, FirstDerivativeEnergyMakesKappaPrimeContinuous) {
   EXPECT_LT(hi1, 2.5);
 }
 
+// k = 2, 3, 4 with the length term scaled like the k = 1 rule, beta = 0.03 L0^(2k+2) (eq. 5 weighs
+// |kappa^(k) L0^(k+1)|^2 = L0^(2k+2) kappa^(k)^2): every level converges (with beta = 0.03 L0^4
+// the k >= 2 solves end on the iteration cap with growing gradients, measured).
+TEST(OptimiserDerivative, HigherDerivativeEnergiesConvergeWithScaledLengthTerm) {
+  const double L0 = polygon_length(wave, false);
+  for (int k = 2; k <= 4; ++k) {
+    Optimal_curve_options o;
+    o.resolution = 200;
+    o.length_weight = 0.03 * std::pow(L0, 2 * k + 2);
+    o.curvature_weight = 0;
+    o.derivative_weight[k] = 1;
+    const Optimal_curve_2<K> c(wave, o);
+    EXPECT_EQ(c.report().status, Optimal_curve_status::CONVERGED) << "k = " << k;
+    for (const auto& level : c.report().levels) EXPECT_LE(level.iterations, 80u) << "k = " << k;
+  }
+}
+
 TEST(OptimiserSolver, ConjugateGradientReachesNoLowerEnergyAndNeedsMoreSteps) {
   Optimal_curve_options o;
   o.resolution = 200;
