@@ -581,6 +581,84 @@ TEST(OptimalBanded, OneEntryPerPairAcrossTheWrap) {
   EXPECT_THROW(open.at(0, 9), fair::Internal_error);
 }
 
+// --- Conditioning (issue 11, "What is known") ------------------------------------------------------
+
+/// y = A x over the band only.
+void band_multiply(const Banded_symmetric& a, const std::vector<double>& x, std::vector<double>& y) {
+  const std::size_t n = a.size(), w = a.half_bandwidth();
+  y.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t d = 0; d <= std::min(w, n - 1); ++d) {
+      const std::size_t j = a.cyclic() ? (i + d) % n : i + d;
+      if (j >= n || !a.in_band(i, j)) continue;
+      y[i] += a.at(i, j) * x[j];
+      if (j != i) y[j] += a.at(i, j) * x[i];
+    }
+}
+
+/// Condition number of the reduced Hessian on the regular n-gon of radius 1 with 8 equally spaced fixed
+/// vertices, F = sum l_j + beta_k |kappa^(k) L0^(k+1)|^2 (k = 0: beta_0 L0^2 = 1, so that the unit
+/// circle is the continuous minimiser; k = 1: beta_1 = 1): the largest eigenvalue by power iteration
+/// (Rayleigh quotient), the smallest by inverse iteration with the banded Cholesky.
+double reduced_condition_number(std::size_t n, int k) {
+  const std::vector<Vec2> c = regular_polygon(n, 1.0);
+  Functional f;
+  f.closed = true;
+  f.reference_length = 2 * pi;
+  f.length_weight.assign(n, 1.0);
+  f.curvature_weight.assign(n, k == 0 ? 1 / (4 * pi * pi) : 0.0);
+  if (k > 0) f.derivative_weight[k] = 1.0;
+  std::vector<Vec2> g;
+  Block_banded_hessian h;
+  energy_gradient_hessian(f, c, g, h);
+  std::vector<unsigned char> free(n, 1);
+  for (std::size_t q = 0; q < 8; ++q) free[q * n / 8] = 0;
+  std::vector<double> rg;
+  Banded_symmetric r;
+  normal_offset_system(g, h, vertex_normals(c, true), free, rg, r);
+  const std::size_t m = r.size();
+  std::vector<double> x(m), y;
+  for (std::size_t i = 0; i < m; ++i) x[i] = std::sin(0.37 * static_cast<double>(i)) + 1.1;
+  double largest = 0;
+  for (int it = 0; it < 400; ++it) {
+    double norm = 0;
+    for (double v : x) norm += v * v;
+    norm = std::sqrt(norm);
+    for (double& v : x) v /= norm;
+    band_multiply(r, x, y);
+    largest = 0;
+    for (std::size_t i = 0; i < m; ++i) largest += x[i] * y[i];
+    x = y;
+  }
+  std::vector<double> z(m);
+  for (std::size_t i = 0; i < m; ++i) z[i] = std::cos(0.11 * static_cast<double>(i)) + 1.2;
+  double smallest = 0;
+  for (int it = 0; it < 40; ++it) {
+    double norm = 0;
+    for (double v : z) norm += v * v;
+    norm = std::sqrt(norm);
+    for (double& v : z) v /= norm;
+    std::vector<double> w = z;
+    EXPECT_TRUE(solve_banded_positive_definite(r, w)) << "n " << n << " k " << k;
+    double t = 0;
+    for (std::size_t i = 0; i < m; ++i) t += w[i] * z[i];
+    smallest = 1 / t;
+    z = w;
+  }
+  return largest / smallest;
+}
+
+// The measured law (doc/optimal_curves.md, "Conditioning"): cond ~ 4.6e-5 n^4 for the kappa term and
+// ~ 2.9e-7 n^6 for the kappa' term in this setting (largest eigenvalue ~ n^(2k+3), smallest ~ 1/n):
+// the growth exponent 2k + 4, asserted between n = 100 and n = 400.
+TEST(OptimalConditioning, ReducedHessianGrowsLikeNToThe2kPlus4) {
+  for (int k : {0, 1}) {
+    const double c100 = reduced_condition_number(100, k), c400 = reduced_condition_number(400, k);
+    const double exponent = std::log(c400 / c100) / std::log(4.0);
+    EXPECT_NEAR(exponent, 2 * k + 4, 0.1) << "k " << k << ": cond(100) " << c100 << ", cond(400) " << c400;
+  }
+}
+
 // --- Errors ------------------------------------------------------------------------------------
 
 TEST(OptimalFunctional, TypedErrorsNameTheOffendingIndex) {
