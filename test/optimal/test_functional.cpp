@@ -387,6 +387,41 @@ TEST(OptimalFunctional, HessianMatchesDifferencesOfGradientAndBand) {
       }
 }
 
+// Closed polygons shorter than the stencils (n <= 2w + 1: the window wraps onto itself, the Hessian is
+// stored dense): the exact Hessian still matches differences of the gradient.
+TEST(OptimalFunctional, HessianOfTinyClosedPolygons) {
+  std::mt19937 rng(31);
+  for (std::size_t n : {3u, 4u, 5u, 7u, 13u}) {
+    const std::vector<Vec2> c = random_polygon(rng, n, true);
+    const Functional f = make_functional(c, true, -1, 2.0);
+    std::vector<Vec2> g;
+    Block_banded_hessian h;
+    energy_gradient_hessian(f, c, g, h);
+    double scale = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      for (int r = 0; r < 2; ++r) scale = std::max(scale, std::fabs(h.at(i, i, r, r)));
+    for (std::size_t i = 0; i < n; ++i)
+      for (int r = 0; r < 2; ++r) {
+        const double step = 1e-5;
+        std::vector<Vec2> p = c, m = c, p2 = c, m2 = c, gp, gm, gp2, gm2;
+        p[i][r] += step;
+        m[i][r] -= step;
+        p2[i][r] += 2 * step;
+        m2[i][r] -= 2 * step;
+        energy_and_gradient(f, p, gp);
+        energy_and_gradient(f, m, gm);
+        energy_and_gradient(f, p2, gp2);
+        energy_and_gradient(f, m2, gm2);
+        for (std::size_t j = 0; j < n; ++j)
+          for (int s = 0; s < 2; ++s) {
+            ASSERT_TRUE(h.in_band(i, j));  // n <= 13 = 2w + 1: every pair
+            const double fd = (8 * (gp[j][s] - gm[j][s]) - (gp2[j][s] - gm2[j][s])) / (12 * step);
+            EXPECT_TRUE(near_rel(h.at(i, j, r, s), fd, 1e-6, scale)) << "n " << n << " (" << i << "," << j << ")";
+          }
+      }
+  }
+}
+
 // A collinear polygon with exponents < 2: kappa = 0 everywhere, |x|^a at 0 gives a zero gradient and
 // a finite Hessian (no NaN).
 TEST(OptimalFunctional, StraightPolygonWithSmallExponentIsFinite) {
@@ -575,6 +610,12 @@ TEST(OptimalBanded, OneEntryPerPairAcrossTheWrap) {
     EXPECT_TRUE(a.in_band(0, n - 1));
     EXPECT_TRUE(a.in_band(n - 2, 0));
   }
+  // A large cyclic band is not stored dense: far pairs are outside it.
+  Banded_symmetric big;
+  big.reset(1000, 3, true);
+  EXPECT_TRUE(big.in_band(0, 997));
+  EXPECT_FALSE(big.in_band(0, 500));
+  EXPECT_THROW(big.at(0, 500), fair::Internal_error);
   Banded_symmetric open;
   open.reset(10, 2, false);
   EXPECT_FALSE(open.in_band(0, 9));

@@ -83,22 +83,26 @@ constexpr int primitive_count(int k) {
 }
 constexpr int max_window = max_derivative_order + 3;  // vertices
 
-/// kappa^(k) at offset o (vertex o for even k, edge o for odd k) from kap[o + 2], len[o + 2]
-/// (the recursion of Sec. 2.2.3).
-template <class T>
-T derivative(int k, int o, const T* kap, const T* len) {
-  if (k == 0) return kap[o + 2];
-  if (k % 2 == 1) return (derivative(k - 1, o + 1, kap, len) - derivative(k - 1, o, kap, len)) / len[o + 2];
-  const T s = 0.5 * (len[o + 1] + len[o + 2]);
-  return (derivative(k - 1, o, kap, len) - derivative(k - 1, o - 1, kap, len)) / s;
-}
-
-/// beta |kappa^(k) L0^(k+1)|^alpha times l_j (odd k) or s_j (even k): one term of Sec. 2.2.3.
-/// kap[o + 2] and len[o + 2] must be set on the stencil of k.
+/// beta |kappa^(k) L0^(k+1)|^alpha times l_j (odd k) or s_j (even k): one term of Sec. 2.2.3, at site 0.
+/// kap[o + 2] and len[o + 2] must be set on the stencil of k. The recursion is evaluated level by level
+/// (level m on the offsets it needs, shrinking by one per level: k(k+1)/2 differences, not 2^k).
 template <class T>
 T term_value(int k, double beta, double alpha, double scale, const T* kap, const T* len) {
+  int lo = stencils[k].klo, hi = stencils[k].khi;
+  T level[5];
+  for (int o = lo; o <= hi; ++o) level[o - lo] = kap[o + 2];
+  for (int m = 1; m <= k; ++m) {
+    if (m % 2 == 1) {  // on edge o: (D(o + 1) - D(o)) / l_o, o in [lo, hi - 1]
+      for (int o = lo; o < hi; ++o) level[o - lo] = (level[o + 1 - lo] - level[o - lo]) / len[o + 2];
+      --hi;
+    } else {  // at vertex o: (D(o) - D(o - 1)) / s_o, o in [lo + 1, hi]; stored shifted down by one
+      for (int o = lo + 1; o <= hi; ++o) level[o - 1 - lo] = (level[o - lo] - level[o - 1 - lo]) / (0.5 * (len[o + 1] + len[o + 2]));
+      ++lo;
+    }
+  }
+  // lo == hi == 0 now (the stencil table is built so).
   const T measure = k % 2 == 1 ? len[2] : 0.5 * (len[1] + len[2]);
-  return beta * abs_pow(derivative(k, 0, kap, len) * scale, alpha) * measure;
+  return beta * abs_pow(level[0] * scale, alpha) * measure;
 }
 
 /// The checks of every entry point: counts, finiteness, distinct neighbours, weights and exponents.
