@@ -151,10 +151,12 @@ inline void check_input(const Functional& f, const std::vector<Vec2>& c, const c
 enum class Order { VALUE, GRADIENT, HESSIAN };
 
 /// A primitive with its gradient and (HESSIAN) Hessian in its own coordinates (6 for kappa, 4 for l).
+/// Only the parts the evaluation order needs are written (v; g for GRADIENT; g and h for HESSIAN), and
+/// only those are read: no zeroing of 43 doubles per primitive.
 struct Primitive {
-  double v = 0;
-  double g[6] = {};
-  double h[36] = {};
+  double v;
+  double g[6];
+  double h[36];
 };
 
 inline Primitive edge_length(const Vec2& a, const Vec2& b, Order order) {
@@ -315,7 +317,7 @@ double evaluate_term(const Functional& f, Geometry& g, long j, Window& window) {
     // Primitive q: its value and derivatives, and the window vertex where its own coordinates start.
     // (The at most 5 curvatures of one term occupy distinct cache slots: the pointers stay valid.)
     const Primitive* prim[P];
-    Primitive lengths[4];
+    Primitive lengths[st.lhi - st.llo + 1];
     int start[P], dims[P];
     int p = 0;
     const long first = j + st.klo - 1;
