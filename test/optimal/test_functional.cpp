@@ -331,6 +331,31 @@ TEST(OptimalFunctional, GradientMatchesPaperFormula) {
 
 // --- Hessian ---------------------------------------------------------------------------------
 
+/// Differences of the exact gradient when coordinate r of vertex i moves by +-step and +-2 step:
+/// h1 = g(+step) - g(-step), h2 = g(+2 step) - g(-2 step), and the five-point derivative (error
+/// O(step^4); exponents like 1.5 make the third derivative large).
+struct Gradient_differences {
+  static constexpr double step = 1e-5;
+  std::vector<Vec2> h1, h2;
+  Gradient_differences(const Functional& f, const std::vector<Vec2>& c, std::size_t i, int r) {
+    std::vector<Vec2> gp, gm, gp2, gm2;
+    for (int m = 1; m <= 2; ++m) {
+      std::vector<Vec2> p = c, q = c;
+      p[i][r] += m * step;
+      q[i][r] -= m * step;
+      energy_and_gradient(f, p, m == 1 ? gp : gp2);
+      energy_and_gradient(f, q, m == 1 ? gm : gm2);
+    }
+    h1 = h2 = gp;
+    for (std::size_t j = 0; j < c.size(); ++j)
+      for (int s = 0; s < 2; ++s) {
+        h1[j][s] = gp[j][s] - gm[j][s];
+        h2[j][s] = gp2[j][s] - gm2[j][s];
+      }
+  }
+  double derivative(std::size_t j, int s) const { return (8 * h1[j][s] - h2[j][s]) / (12 * step); }
+};
+
 // The exact Hessian against central differences of the exact gradient; entries outside the band of
 // half_bandwidth() are exactly zero (the gradient at a vertex farther than w does not change at all).
 TEST(OptimalFunctional, HessianMatchesDifferencesOfGradientAndBand) {
@@ -361,26 +386,15 @@ TEST(OptimalFunctional, HessianMatchesDifferencesOfGradientAndBand) {
                 }
         for (std::size_t i = 0; i < n; ++i)
           for (int r = 0; r < 2; ++r) {
-            // Five-point differences (error O(step^4)): the exponent 1.5 makes the third derivative large.
-            const double step = 1e-5;
-            std::vector<Vec2> p = c, m = c, p2 = c, m2 = c, gp, gm, gp2, gm2;
-            p[i][r] += step;
-            m[i][r] -= step;
-            p2[i][r] += 2 * step;
-            m2[i][r] -= 2 * step;
-            energy_and_gradient(f, p, gp);
-            energy_and_gradient(f, m, gm);
-            energy_and_gradient(f, p2, gp2);
-            energy_and_gradient(f, m2, gm2);
+            const Gradient_differences d(f, c, i, r);
             for (std::size_t j = 0; j < n; ++j)
               for (int s = 0; s < 2; ++s) {
-                const double fd = (8 * (gp[j][s] - gm[j][s]) - (gp2[j][s] - gm2[j][s])) / (12 * step);
                 if (h.in_band(i, j)) {
-                  EXPECT_TRUE(near_rel(h.at(i, j, r, s), fd, 1e-6, scale))
+                  EXPECT_TRUE(near_rel(h.at(i, j, r, s), d.derivative(j, s), 1e-6, scale))
                       << "closed " << closed << " k " << k << " alpha " << alpha << " (" << i << "," << j << ")";
                 } else {
-                  EXPECT_EQ(gp[j][s] - gm[j][s], 0.0) << "coupling beyond the band: " << i << ", " << j;
-                  EXPECT_EQ(gp2[j][s] - gm2[j][s], 0.0) << "coupling beyond the band: " << i << ", " << j;
+                  EXPECT_EQ(d.h1[j][s], 0.0) << "coupling beyond the band: " << i << ", " << j;
+                  EXPECT_EQ(d.h2[j][s], 0.0) << "coupling beyond the band: " << i << ", " << j;
                 }
               }
           }
@@ -402,21 +416,11 @@ TEST(OptimalFunctional, HessianOfTinyClosedPolygons) {
       for (int r = 0; r < 2; ++r) scale = std::max(scale, std::fabs(h.at(i, i, r, r)));
     for (std::size_t i = 0; i < n; ++i)
       for (int r = 0; r < 2; ++r) {
-        const double step = 1e-5;
-        std::vector<Vec2> p = c, m = c, p2 = c, m2 = c, gp, gm, gp2, gm2;
-        p[i][r] += step;
-        m[i][r] -= step;
-        p2[i][r] += 2 * step;
-        m2[i][r] -= 2 * step;
-        energy_and_gradient(f, p, gp);
-        energy_and_gradient(f, m, gm);
-        energy_and_gradient(f, p2, gp2);
-        energy_and_gradient(f, m2, gm2);
+        const Gradient_differences d(f, c, i, r);
         for (std::size_t j = 0; j < n; ++j)
           for (int s = 0; s < 2; ++s) {
             ASSERT_TRUE(h.in_band(i, j));  // n <= 13 = 2w + 1: every pair
-            const double fd = (8 * (gp[j][s] - gm[j][s]) - (gp2[j][s] - gm2[j][s])) / (12 * step);
-            EXPECT_TRUE(near_rel(h.at(i, j, r, s), fd, 1e-6, scale)) << "n " << n << " (" << i << "," << j << ")";
+            EXPECT_TRUE(near_rel(h.at(i, j, r, s), d.derivative(j, s), 1e-6, scale)) << "n " << n << " (" << i << "," << j << ")";
           }
       }
   }
@@ -637,6 +641,24 @@ void band_multiply(const Banded_symmetric& a, const std::vector<double>& x, std:
     }
 }
 
+/// x <- apply(x / |x|) repeated; returns the last Rayleigh quotient x.apply(x) of a unit x (power
+/// iteration for apply = A, inverse iteration for apply = A^-1).
+template <class Apply>
+double rayleigh_iteration(std::vector<double> x, int iterations, Apply apply) {
+  double quotient = 0;
+  for (int it = 0; it < iterations; ++it) {
+    double norm = 0;
+    for (double v : x) norm += v * v;
+    norm = std::sqrt(norm);
+    for (double& v : x) v /= norm;
+    const std::vector<double> y = apply(x);
+    quotient = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) quotient += x[i] * y[i];
+    x = y;
+  }
+  return quotient;
+}
+
 /// Condition number of the reduced Hessian on the regular n-gon of radius 1 with 8 equally spaced fixed
 /// vertices, F = sum l_j + beta_k |kappa^(k) L0^(k+1)|^2 (k = 0: beta_0 L0^2 = 1, so that the unit
 /// circle is the continuous minimiser; k = 1: beta_1 = 1): the largest eigenvalue by power iteration
@@ -658,34 +680,21 @@ double reduced_condition_number(std::size_t n, int k) {
   Banded_symmetric r;
   normal_offset_system(g, h, vertex_normals(c, true), free, rg, r);
   const std::size_t m = r.size();
-  std::vector<double> x(m), y;
-  for (std::size_t i = 0; i < m; ++i) x[i] = std::sin(0.37 * static_cast<double>(i)) + 1.1;
-  double largest = 0;
-  for (int it = 0; it < 400; ++it) {
-    double norm = 0;
-    for (double v : x) norm += v * v;
-    norm = std::sqrt(norm);
-    for (double& v : x) v /= norm;
-    band_multiply(r, x, y);
-    largest = 0;
-    for (std::size_t i = 0; i < m; ++i) largest += x[i] * y[i];
-    x = y;
+  std::vector<double> x(m), z(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    x[i] = std::sin(0.37 * static_cast<double>(i)) + 1.1;
+    z[i] = std::cos(0.11 * static_cast<double>(i)) + 1.2;
   }
-  std::vector<double> z(m);
-  for (std::size_t i = 0; i < m; ++i) z[i] = std::cos(0.11 * static_cast<double>(i)) + 1.2;
-  double smallest = 0;
-  for (int it = 0; it < 40; ++it) {
-    double norm = 0;
-    for (double v : z) norm += v * v;
-    norm = std::sqrt(norm);
-    for (double& v : z) v /= norm;
-    std::vector<double> w = z;
+  const double largest = rayleigh_iteration(x, 400, [&](const std::vector<double>& v) {
+    std::vector<double> y;
+    band_multiply(r, v, y);
+    return y;
+  });
+  const double smallest = 1 / rayleigh_iteration(z, 40, [&](const std::vector<double>& v) {
+    std::vector<double> w = v;
     EXPECT_TRUE(solve_banded_positive_definite(r, w)) << "n " << n << " k " << k;
-    double t = 0;
-    for (std::size_t i = 0; i < m; ++i) t += w[i] * z[i];
-    smallest = 1 / t;
-    z = w;
-  }
+    return w;
+  });
   return largest / smallest;
 }
 
