@@ -754,6 +754,14 @@ TEST(OptimalFunctional, TypedErrorsNameTheOffendingIndex) {
   h = f;
   h.curvature_weight.pop_back();
   EXPECT_THROW(energy(h, c), fair::Precondition_error);
+  // Finite but overflowing: an edge of 1e-200 makes (kappa' L0^2)^2 ~ 1e400.
+  bad = c;
+  bad[2] = Vec2{{0, 0.3}};
+  bad[3] = Vec2{{1e-200, 0.3}};
+  EXPECT_THROW(energy(f, bad), fair::Invalid_input_error);
+  EXPECT_NE(message_of(f, bad).find("shortest edge 2"), std::string::npos);
+  Block_banded_hessian hb;
+  EXPECT_THROW(energy_gradient_hessian(f, bad, g, hb), fair::Invalid_input_error);
   h = f;
   h.closed = true;  // length_weight has n - 1 entries, a closed polygon needs n
   EXPECT_THROW(energy(h, c), fair::Precondition_error);

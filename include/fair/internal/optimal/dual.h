@@ -4,8 +4,8 @@
 // symmetric Hessian with respect to N local variables. The local terms of the optimal-curve functional
 // (functional.h) are written once, templated on their scalar, and evaluated with double (energy),
 // or with Dual<N> (exact gradient and Hessian, no truncation error) or Dual<N, false> (exact gradient
-// only). Only the operations those
-// terms use are provided. Every operation propagates the exact first and second derivatives:
+// only). Only the operations those terms use are provided. Every operation propagates the exact
+// first and second derivatives:
 //   (a b)'' = a'' b + a b'' + a' b'^T + b' a'^T,   f(a)'' = f'(a) a'' + f''(a) a' a'^T.
 
 #ifndef FAIR_INTERNAL_OPTIMAL_DUAL_H

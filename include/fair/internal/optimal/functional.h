@@ -410,6 +410,37 @@ double site_term(const Functional& f, Geometry& g, std::size_t j, Window& window
   return e;
 }
 
+/// Finite input can still overflow (an edge of 1e-200 gives kappa^2 ~ 1e400): then the polygon is
+/// unusable for this functional, reported as Invalid_input_error with its shortest edge, never as NaN.
+inline void check_finite_result(const Geometry& g, const std::vector<Vec2>& c, double energy,
+                                const std::vector<Vec2>* gradient, const Block_banded_hessian* hessian,
+                                const char* method) {
+  bool finite = std::isfinite(energy);
+  if (finite && gradient)
+    for (const Vec2& v : *gradient) finite = finite && std::isfinite(v[0]) && std::isfinite(v[1]);
+  if (finite && hessian)
+    for (std::size_t i = 0; i < g.n; ++i)
+      for (std::size_t d = 0; d <= std::min(hessian->half_bandwidth(), g.n - 1); ++d) {
+        const std::size_t j = (i + d) % g.n;
+        if ((!g.closed && i + d >= g.n) || !hessian->in_band(i, j)) continue;
+        for (int r = 0; r < 2; ++r)
+          for (int t = 0; t < 2; ++t) finite = finite && std::isfinite(hessian->at(i, j, r, t));
+      }
+  if (finite) return;
+  std::size_t shortest = 0;
+  double length = INFINITY;
+  for (std::size_t e = 0; e < g.edges; ++e) {
+    const double l = g.length(e).v;
+    if (l < length) {
+      length = l;
+      shortest = e;
+    }
+  }
+  throw Invalid_input_error(message(method, ": the functional overflows on this polygon (energy ", energy,
+                                    "; shortest edge ", shortest, " from (", c[shortest][0], ", ", c[shortest][1],
+                                    ") has length ", length, ")"));
+}
+
 template <Order O>
 double evaluate(const Functional& f, const std::vector<Vec2>& c, std::vector<Vec2>* gradient,
                 Block_banded_hessian* hessian, const char* method) {
@@ -444,7 +475,7 @@ double evaluate(const Functional& f, const std::vector<Vec2>& c, std::vector<Vec
     energy += site_term<3, O>(f, g, j, window, gradient, hessian);
     energy += site_term<4, O>(f, g, j, window, gradient, hessian);
   }
-  FAIR_ASSERT_MSG(std::isfinite(energy), method, ": energy ", energy);
+  check_finite_result(g, c, energy, gradient, hessian, method);
   return energy;
 }
 
