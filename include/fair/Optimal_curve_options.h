@@ -52,7 +52,7 @@ struct Optimal_curve_options {
   /// per segment (eqs. 11-12 x 4), overriding length_weight and curvature_weight; -1 = off.
   double lambda = -1;
   /// per input segment lambda_i (eq. 10 locally, blended with phi_4 as in Sec. 3.2); empty = off.
-  /// Size: points - 1 (open) or points (closed).
+  /// Size: points - 1 (open) or points (closed). Takes precedence over `lambda`.
   std::vector<double> segment_lambda;
   std::vector<Point_constraint> constraints;
   double resolution = 500;  ///< rho (> 0): pixels per extent (twice the largest distance from the centroid, doc)
