@@ -159,18 +159,17 @@ struct Primitive {
   double h[36];
 };
 
-inline Primitive edge_length(const Vec2& a, const Vec2& b, Order order) {
+inline void edge_length(const Vec2& a, const Vec2& b, Order order, Primitive& p) {
   // l = |b - a|, t = (b - a)/l: dl/da = -t, dl/db = t; d2l = [P -P; -P P] with P = (I - t t^T)/l.
-  Primitive p;
   const double dx = b[0] - a[0], dy = b[1] - a[1];
   p.v = std::sqrt(dx * dx + dy * dy);
-  if (order == Order::VALUE) return p;
+  if (order == Order::VALUE) return;
   const double t[2] = {dx / p.v, dy / p.v};
   for (int r = 0; r < 2; ++r) {
     p.g[r] = -t[r];
     p.g[2 + r] = t[r];
   }
-  if (order != Order::HESSIAN) return p;
+  if (order != Order::HESSIAN) return;
   for (int r = 0; r < 2; ++r)
     for (int c = 0; c < 2; ++c) {
       const double q = ((r == c ? 1.0 : 0.0) - t[r] * t[c]) / p.v;
@@ -179,7 +178,6 @@ inline Primitive edge_length(const Vec2& a, const Vec2& b, Order order) {
       p.h[r * 4 + 2 + c] = -q;
       p.h[(2 + r) * 4 + c] = -q;
     }
-  return p;
 }
 
 /// kappa with its derivatives in (a, b, c): evaluated as a dual over the 4 edge-vector coordinates
@@ -239,7 +237,12 @@ public:
     }
     return cache_[slot];
   }
-  Primitive length(std::size_t e) const { return edge_length(c_[e], c_[(e + 1) % n], order_); }
+  Primitive length(std::size_t e) const {
+    Primitive p;
+    length(e, p);
+    return p;
+  }
+  void length(std::size_t e, Primitive& p) const { edge_length(c_[e], c_[(e + 1) % n], order_, p); }
 
 private:
   static constexpr std::size_t cache_size = 8;
@@ -304,7 +307,8 @@ double evaluate_term(const Functional& f, Geometry& g, long j, Window& window) {
   constexpr Stencil st = stencils[K];
   const std::size_t site = g.vertex(j);
   const double beta = term_weight(f, K, site), alpha = term_exponent(f, K);
-  const double scale = std::pow(f.reference_length, K + 1);
+  double scale = f.reference_length;  // L0^(K+1)
+  for (int i = 0; i < K; ++i) scale *= f.reference_length;
   if constexpr (O == Order::VALUE) {
     double kap[5] = {1, 1, 1, 1, 1}, len[4] = {1, 1, 1, 1};
     for (int o = st.klo; o <= st.khi; ++o) kap[o + 2] = g.kappa(j + o).v;
@@ -328,7 +332,7 @@ double evaluate_term(const Functional& f, Geometry& g, long j, Window& window) {
       kap[o + 2] = D::variable(p, prim[p]->v);
     }
     for (int o = st.llo; o <= st.lhi; ++o, ++p) {
-      lengths[o - st.llo] = g.length(g.vertex(j + o));
+      g.length(g.vertex(j + o), lengths[o - st.llo]);
       prim[p] = &lengths[o - st.llo];
       start[p] = static_cast<int>(j + o - first);
       dims[p] = 4;
@@ -343,12 +347,12 @@ double evaluate_term(const Functional& f, Geometry& g, long j, Window& window) {
       for (int i = 0; i < dims[q]; ++i) window.g[2 * start[q] + i] += t.g[q] * prim[q]->g[i];
     if constexpr (S) {
       for (int i = 0; i < C * C; ++i) window.h[i] = 0;
-      // Jacobian of the primitives in the window coordinates (dense P x C; at most 9 x 14).
-      double jac[P][2 * max_window] = {};
+      // Jacobian of the primitives in the window coordinates (dense P x C, C = 2(K + 3); at most 9 x 14).
+      double jac[P][2 * (K + 3)] = {};
       for (int q = 0; q < P; ++q)
         for (int i = 0; i < dims[q]; ++i) jac[q][2 * start[q] + i] = prim[q]->g[i];
       // sum_{p,q} T_pq J_p J_q^T: first M = T'' J (P x C), then J^T M.
-      double m[P][2 * max_window] = {};
+      double m[P][2 * (K + 3)] = {};
       for (int a = 0; a < P; ++a)
         for (int b = 0; b < P; ++b) {
           const double tab = t.h[a * P + b];
