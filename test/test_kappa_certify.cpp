@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -95,6 +96,46 @@ TEST(KappaCertify, RandomConvergedCurves) {
     ++certified;
   }
   EXPECT_GE(certified, 9);
+}
+
+// An elliptic piece (w_i < 1, automatic weights) may hold a curvature maximum at t_i AND a
+// minimum elsewhere in (0,1) (the paper, after eq. 4): still a kappa-curve piece. The certificate
+// accepts it (maximum_at_t) while reporting that it is not unique_maximum; a sampled |kappa|
+// confirms the maximum at t_i and a real variation (not rounding noise).
+TEST(KappaCertify, EllipticPieceWithAMinimumElsewhereIsAccepted) {
+  std::mt19937 g(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  int elliptic = 0;
+  for (int trial = 0; trial < 40 && elliptic < 3; ++trial) {
+    std::vector<Kd::Point_2> p;
+    for (int k = 0; k < 4 + trial % 10; ++k) p.emplace_back(u(g), u(g));
+    fair::Kappa_curve_options o;
+    o.closed = trial % 2;
+    o.weights = fair::Kappa_weights::AUTOMATIC;
+    try {
+      const fair::Kappa_curve_2<Kd> c(p, o);
+      if (c.report().status != fair::Kappa_solve_status::INTERIOR) continue;
+      const fair::Kappa_certificate cert = fair::certify(c);
+      for (std::size_t j = 0; j < cert.pieces.size(); ++j) {
+        const fair::Kappa_certificate::Piece& pc = cert.pieces[j];
+        if (!(pc.extrema == 2 && pc.maxima == 1 && pc.root_distance < 1e-9)) continue;
+        double kmax = 0, kmin = std::numeric_limits<double>::infinity();
+        for (int s = 0; s <= 2000; ++s) {
+          const double k = std::fabs(c.piece(j).curvature(s / 2000.0));
+          kmax = std::max(kmax, k), kmin = std::min(kmin, k);
+        }
+        if ((kmax - kmin) / kmax < 1e-3) continue;  // nearly circular: its roots are noise
+        ++elliptic;
+        EXPECT_LT(c.weight(j), 1.0);
+        EXPECT_TRUE(pc.maximum_at_t) << cert;
+        EXPECT_FALSE(pc.unique_maximum);
+        // |kappa| at t_i is at least every sample (peaks can be narrower than the sampling).
+        EXPECT_GE(std::fabs(c.piece(j).curvature(c.t(j))), kmax * (1 - 1e-9)) << "trial " << trial << " piece " << j;
+      }
+    } catch (const fair::Error&) {
+    }
+  }
+  EXPECT_GE(elliptic, 1) << "the seeded sets must contain an elliptic piece with a maximum and a minimum";
 }
 
 TEST(KappaCertify, NonConvergedCurveFailsTheCertificate) {

@@ -41,6 +41,10 @@ struct Kappa_certificate {
     std::size_t extrema = 0;       ///< certified curvature extrema in (0,1) (roots of eq. 4)
     std::size_t maxima = 0;        ///< of which maxima of |kappa|
     bool unique_maximum = false;   ///< exactly one root in (0,1) and it is a maximum
+    /// The extremum nearest t_i is a maximum and the piece's only maximum. An elliptic piece
+    /// (w_i < 1, automatic weights) may also hold a minimum elsewhere in (0,1) (the paper, after
+    /// eq. 4): that is still a kappa-curve piece, but not unique_maximum.
+    bool maximum_at_t = false;
     double t = 0;                  ///< t_i (its exact value is this double)
     /// The certified extremum nearest to t_i: its kind, isolating interval (outward rounded)
     /// and an upper bound on |root - t_i| (infinity when the piece has no extremum). With
@@ -67,6 +71,9 @@ struct Kappa_certificate {
 
   bool all_points_on_pieces() const { for (const Piece& p : pieces) if (!p.point_on_piece) return false; return true; }
   bool all_unique_maxima() const { for (const Piece& p : pieces) if (!p.unique_maximum) return false; return true; }
+  /// Every piece's only maximum of |kappa| is the extremum nearest its t_i (maximum_at_t): what
+  /// valid() requires (a minimum elsewhere on an elliptic piece is allowed).
+  bool all_maxima_at_points() const { for (const Piece& p : pieces) if (!p.maximum_at_t) return false; return true; }
   bool all_g1() const { for (const Join& j : joins) if (!(j.c0 && j.g1)) return false; return true; }
   /// Largest certified upper bound on |c_i(t_i) - Q_i| over the pieces.
   double max_interpolation_error() const {
@@ -79,7 +86,7 @@ struct Kappa_certificate {
   /// Q_i up to the rounding of the solver's P_i.
   bool valid_within(double interpolation_tolerance, double kappa_tolerance = default_kappa_tolerance,
                     double t_tolerance = default_t_tolerance) const {
-    return max_interpolation_error() <= interpolation_tolerance && all_unique_maxima() && all_g1() &&
+    return max_interpolation_error() <= interpolation_tolerance && all_maxima_at_points() && all_g1() &&
            max_kappa_mismatch() <= kappa_tolerance && max_root_distance() <= t_tolerance;
   }
   /// Largest |relative |kappa| mismatch| over the joins (certified upper bound).
@@ -100,18 +107,18 @@ struct Kappa_certificate {
   /// Everything exact holds and |kappa| matches within `kappa_tolerance` and each maximum lies
   /// within `t_tolerance` of t_i.
   bool valid(double kappa_tolerance = default_kappa_tolerance, double t_tolerance = default_t_tolerance) const {
-    return all_points_on_pieces() && all_unique_maxima() && all_g1() && max_kappa_mismatch() <= kappa_tolerance &&
+    return all_points_on_pieces() && all_maxima_at_points() && all_g1() && max_kappa_mismatch() <= kappa_tolerance &&
            max_root_distance() <= t_tolerance;
   }
   /// The ON_JOINS properties: every Q_i on its piece, C0 and G1 exactly, |kappa| matching within
   /// `kappa_tolerance` at every join, and every piece whose point is NOT in points_on_joins with
-  /// a unique curvature maximum within `t_tolerance` of t_i; a piece of a listed point has either
+  /// its only curvature maximum within `t_tolerance` of t_i (maximum_at_t); a piece of a listed point has either
   /// its t_i within join_t_margin of 0 or 1 (the point on a join) or that same interior maximum
   /// (listed for a lambda at a bound).
   bool valid_on_joins(double kappa_tolerance = default_kappa_tolerance, double t_tolerance = default_t_tolerance) const {
     if (!(all_points_on_pieces() && all_g1() && max_kappa_mismatch() <= kappa_tolerance)) return false;
     for (const Piece& p : pieces) {
-      const bool interior_maximum = p.unique_maximum && p.root_distance <= t_tolerance;
+      const bool interior_maximum = p.maximum_at_t && p.root_distance <= t_tolerance;
       const bool listed = std::find(points_on_joins.begin(), points_on_joins.end(), p.point_index) != points_on_joins.end();
       const bool on_join = p.t <= join_t_margin || p.t >= 1 - join_t_margin;
       if (!(interior_maximum || (listed && on_join))) return false;
@@ -133,7 +140,7 @@ struct Kappa_certificate {
   }
   friend std::ostream& operator<<(std::ostream& out, const Kappa_certificate& c) {
     out << "Kappa_certificate{pieces " << c.pieces.size() << ", Q_i on pieces " << c.all_points_on_pieces()
-        << ", unique maxima " << c.all_unique_maxima() << ", G1 " << c.all_g1() << ", max |kappa| mismatch <= "
+        << ", maxima at points " << c.all_maxima_at_points() << ", G1 " << c.all_g1() << ", max |kappa| mismatch <= "
         << c.max_kappa_mismatch() << ", max |root - t_i| <= " << c.max_root_distance() << ", outcome " << c.status;
     if (!c.points_on_joins.empty()) {
       out << " (points on joins:";
@@ -142,7 +149,7 @@ struct Kappa_certificate {
     }
     out << "}";
     for (const Piece& p : c.pieces)
-      if (!(p.point_on_piece && p.unique_maximum))
+      if (!(p.point_on_piece && p.maximum_at_t))
         out << "\n  piece for point " << p.point_index << ": valid " << p.valid_piece << ", on piece "
             << p.point_on_piece << ", extrema " << p.extrema << ", maxima " << p.maxima << ", nearest extremum "
             << (p.has_extremum_at_t ? to_string(p.kind_at_t) : "none") << " at distance <= " << p.root_distance;

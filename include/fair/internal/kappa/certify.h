@@ -180,7 +180,8 @@ inline Kappa_certificate::Piece certify_piece(const Exact_pieces_data& d, const 
   if (!pc.valid_piece) return pc;
   certify_interpolation(d, j, inverse_scale_upper, pc);
   if (!(mode == Certify_mode::FILTERED && filtered_extremum_at_t(enc, j, d.t[j], pc))) exact_extremum_at_t(d, j, pc);
-  pc.unique_maximum = pc.extrema == 1 && pc.maxima == 1 && pc.kind_at_t == Curvature_extremum_kind::MAXIMUM;
+  pc.maximum_at_t = pc.has_extremum_at_t && pc.maxima == 1 && pc.kind_at_t == Curvature_extremum_kind::MAXIMUM;
+  pc.unique_maximum = pc.maximum_at_t && pc.extrema == 1;
   return pc;
 }
 
