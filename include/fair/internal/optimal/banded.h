@@ -1,0 +1,228 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// Symmetric banded matrices of the optimal-curve solver (issue 11; doc/optimal_curves.md, "Banded
+// solve"): the 2x2-block Hessian of the functional in the vertex coordinates, and the scalar system on
+// the normal offsets, both optionally cyclic (closed curves), with an O(n w^2) Cholesky solve.
+//
+// Storage. Row i keeps the blocks (i, i + d) for d = 0..w (i + d taken mod n when cyclic); the block
+// (i, j) with j "before" i is the transpose of the stored (j, i). A cyclic matrix with n <= 2w + 1 has
+// every pair within cyclic distance w, and the two directions round the cycle would both be within w:
+// it is stored dense (n <= 2w + 1 is tiny), which keeps at(i, j) and at(j, i) one entry.
+// Memory O(n w) in both cases (no n^2 storage).
+
+#ifndef FAIR_INTERNAL_OPTIMAL_BANDED_H
+#define FAIR_INTERNAL_OPTIMAL_BANDED_H
+
+#include <fair/Errors.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace fair {
+namespace internal {
+namespace optimal {
+
+namespace banded_detail {
+
+/// Where the entry (i, j) of a symmetric band matrix lives: slot (row, offset) and whether it is the
+/// transpose of the stored one. Shared by the block and the scalar matrix.
+struct Band_layout {
+  std::size_t n = 0, w = 0;
+  bool cyclic = false, dense = false;
+
+  void reset(std::size_t vertices, std::size_t half_bandwidth, bool is_cyclic) {
+    n = vertices;
+    w = half_bandwidth;
+    cyclic = is_cyclic;
+    dense = cyclic && n <= 2 * w + 1;
+  }
+  std::size_t slots() const { return dense ? n * n : n * (w + 1); }
+  /// Cyclic (or plain) distance of i and j.
+  std::size_t distance(std::size_t i, std::size_t j) const {
+    const std::size_t d = i > j ? i - j : j - i;
+    return cyclic ? std::min(d, n - d) : d;
+  }
+  bool in_band(std::size_t i, std::size_t j) const { return i < n && j < n && distance(i, j) <= w; }
+  /// The slot of (i, j); `transposed` tells whether the slot holds (j, i).
+  std::size_t slot(std::size_t i, std::size_t j, bool& transposed) const {
+    FAIR_ASSERT_MSG(in_band(i, j), "entry (", i, ", ", j, ") outside the band ", w, " of a matrix of size ", n,
+                    cyclic ? " (cyclic)" : "");
+    if (dense) {
+      transposed = i > j;
+      return transposed ? j * n + i : i * n + j;
+    }
+    std::size_t d;
+    if (cyclic) {
+      d = (j + n - i) % n;
+      transposed = d > w;
+      if (transposed) return j * (w + 1) + (n - d);
+      return i * (w + 1) + d;
+    }
+    transposed = j < i;
+    if (transposed) return j * (w + 1) + (i - j);
+    return i * (w + 1) + (j - i);
+  }
+};
+
+}  // namespace banded_detail
+
+/// Symmetric block-banded (cyclic if closed) matrix of 2x2 vertex blocks, half-bandwidth w in vertices:
+/// the Hessian of the functional in the coordinates (x_0, y_0, x_1, y_1, ...). Block (i, i) is stored in
+/// full (both off-diagonal entries); block (j, i) is the transpose of block (i, j).
+class Block_banded_hessian {
+public:
+  /// Zero matrix of `vertices` x `vertices` blocks.
+  void reset(std::size_t vertices, std::size_t half_bandwidth, bool cyclic) {
+    layout_.reset(vertices, half_bandwidth, cyclic);
+    data_.assign(layout_.slots() * 4, 0.0);
+  }
+  std::size_t vertices() const { return layout_.n; }
+  std::size_t half_bandwidth() const { return layout_.w; }
+  bool cyclic() const { return layout_.cyclic; }
+  /// Whether block (i, j) lies within the band (cyclic distance <= w).
+  bool in_band(std::size_t i, std::size_t j) const { return layout_.in_band(i, j); }
+  /// Entry (row, col) of block (i, j), i.e. d^2 F / d c_i[row] d c_j[col]; Internal_error outside the band.
+  double& at(std::size_t i, std::size_t j, int row, int col) {
+    bool t;
+    const std::size_t s = layout_.slot(i, j, t);
+    return data_[s * 4 + (t ? col * 2 + row : row * 2 + col)];
+  }
+  double at(std::size_t i, std::size_t j, int row, int col) const {
+    bool t;
+    const std::size_t s = layout_.slot(i, j, t);
+    return data_[s * 4 + (t ? col * 2 + row : row * 2 + col)];
+  }
+
+private:
+  banded_detail::Band_layout layout_;
+  std::vector<double> data_;
+};
+
+/// Scalar symmetric banded (cyclic if `cyclic`) matrix: the normal-offset system.
+class Banded_symmetric {
+public:
+  void reset(std::size_t n, std::size_t half_bandwidth, bool cyclic) {
+    layout_.reset(n, half_bandwidth, cyclic);
+    data_.assign(layout_.slots(), 0.0);
+  }
+  std::size_t size() const { return layout_.n; }
+  std::size_t half_bandwidth() const { return layout_.w; }
+  bool cyclic() const { return layout_.cyclic; }
+  bool in_band(std::size_t i, std::size_t j) const { return layout_.in_band(i, j); }
+  /// Entry (i, j) = entry (j, i) for cyclic distance |i - j| <= w; Internal_error outside the band.
+  double& at(std::size_t i, std::size_t j) {
+    bool t;
+    return data_[layout_.slot(i, j, t)];
+  }
+  double at(std::size_t i, std::size_t j) const {
+    bool t;
+    return data_[layout_.slot(i, j, t)];
+  }
+  void add_to_diagonal(double shift) {
+    for (std::size_t i = 0; i < layout_.n; ++i) at(i, i) += shift;
+  }
+
+private:
+  banded_detail::Band_layout layout_;
+  std::vector<double> data_;
+};
+
+namespace banded_detail {
+
+/// The folding order 0, n-1, 1, n-2, 2, ...: position -> original index. It turns a cyclic band of
+/// half-bandwidth w into a plain band of half-bandwidth <= 2w (doc/optimal_curves.md, "Banded solve":
+/// neighbours i, i+d at positions 2i, 2i+2d; across the wrap and across the fold |4m + 3 - 2d| <= 2d - 1).
+inline std::vector<std::size_t> folding_order(std::size_t n) {
+  std::vector<std::size_t> order;
+  order.reserve(n);
+  std::size_t lo = 0, hi = n;
+  while (lo < hi) {
+    order.push_back(lo++);
+    if (lo < hi) order.push_back(--hi);
+  }
+  return order;
+}
+
+}  // namespace banded_detail
+
+/// Solves A x = b for symmetric positive definite A by banded Cholesky A = L L^T: O(n w^2) time, O(n w)
+/// memory. A cyclic A is first reordered by the folding order (half-bandwidth <= 2w, still O(n w^2); a
+/// cyclic A with n <= 2w + 1 is dense and tiny). Returns false, leaving `rhs_in_solution_out` unchanged,
+/// if a pivot is <= 0 or not finite (A not positive definite to working precision), so that the caller
+/// can shift the diagonal and retry; never throws for that.
+inline bool solve_banded_positive_definite(const Banded_symmetric& a, std::vector<double>& rhs_in_solution_out) {
+  const std::size_t n = a.size();
+  require(rhs_in_solution_out.size() == n, "solve_banded_positive_definite: right-hand side of size ",
+          rhs_in_solution_out.size(), " for a matrix of size ", n);
+  if (n == 0) return true;
+  std::vector<std::size_t> order;  // position -> original index
+  std::size_t wb;                  // half-bandwidth of the reordered plain band
+  const std::size_t w = a.half_bandwidth();
+  if (!a.cyclic()) {
+    order.resize(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    wb = std::min(w, n - 1);
+  } else if (n <= 2 * w + 1) {
+    order.resize(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    wb = n - 1;
+  } else {
+    order = banded_detail::folding_order(n);
+    wb = std::min(2 * w, n - 1);
+  }
+  std::vector<std::size_t> position(n);
+  for (std::size_t p = 0; p < n; ++p) position[order[p]] = p;
+  // Lower band of the reordered matrix: L[p * (wb + 1) + (p - q)] = entry (p, q), q in [p - wb, p].
+  std::vector<double> l(n * (wb + 1), 0.0);
+  const std::size_t reach = a.cyclic() ? std::min(w, n - 1) : w;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t d = 0; d <= reach; ++d) {
+      if (!a.cyclic() && i + d >= n) break;
+      const std::size_t j = (i + d) % n;
+      if (!a.in_band(i, j)) continue;
+      std::size_t p = position[i], q = position[j];
+      if (p < q) std::swap(p, q);
+      FAIR_ASSERT_MSG(p - q <= wb, "reordered entry (", p, ", ", q, ") outside the band ", wb);
+      l[p * (wb + 1) + (p - q)] = a.at(i, j);
+    }
+  for (std::size_t p = 0; p < n; ++p) {
+    const std::size_t first = p >= wb ? p - wb : 0;
+    for (std::size_t q = first; q <= p; ++q) {
+      double sum = l[p * (wb + 1) + (p - q)];
+      const std::size_t k0 = std::max(first, q >= wb ? q - wb : 0);
+      for (std::size_t k = k0; k < q; ++k) sum -= l[p * (wb + 1) + (p - k)] * l[q * (wb + 1) + (q - k)];
+      if (q == p) {
+        if (!(sum > 0) || !std::isfinite(sum)) return false;
+        l[p * (wb + 1)] = std::sqrt(sum);
+      } else {
+        l[p * (wb + 1) + (p - q)] = sum / l[q * (wb + 1)];
+      }
+    }
+  }
+  std::vector<double> x(n);
+  for (std::size_t p = 0; p < n; ++p) x[p] = rhs_in_solution_out[order[p]];
+  for (std::size_t p = 0; p < n; ++p) {  // L y = b
+    const std::size_t first = p >= wb ? p - wb : 0;
+    double sum = x[p];
+    for (std::size_t k = first; k < p; ++k) sum -= l[p * (wb + 1) + (p - k)] * x[k];
+    x[p] = sum / l[p * (wb + 1)];
+  }
+  for (std::size_t p = n; p-- > 0;) {  // L^T x = y
+    double sum = x[p];
+    const std::size_t last = std::min(n - 1, p + wb);
+    for (std::size_t k = p + 1; k <= last; ++k) sum -= l[k * (wb + 1) + (k - p)] * x[k];
+    x[p] = sum / l[p * (wb + 1)];
+  }
+  for (std::size_t p = 0; p < n; ++p)
+    if (!std::isfinite(x[p])) return false;
+  for (std::size_t p = 0; p < n; ++p) rhs_in_solution_out[order[p]] = x[p];
+  return true;
+}
+
+}  // namespace optimal
+}  // namespace internal
+}  // namespace fair
+
+#endif  // FAIR_INTERNAL_OPTIMAL_BANDED_H

@@ -1,0 +1,134 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// A fixed-size second-order forward-mode dual number: a value, its gradient and its (symmetric)
+// Hessian with respect to N local variables. The local terms of the optimal-curve functional
+// (functional.h) are written once, templated on their scalar, and evaluated with double (energy),
+// or with Dual<N> (exact gradient and Hessian, no truncation error). Only the operations those
+// terms use are provided. Every operation propagates the exact first and second derivatives:
+//   (a b)'' = a'' b + a b'' + a' b'^T + b' a'^T,   f(a)'' = f'(a) a'' + f''(a) a' a'^T.
+
+#ifndef FAIR_INTERNAL_OPTIMAL_DUAL_H
+#define FAIR_INTERNAL_OPTIMAL_DUAL_H
+
+#include <cmath>
+
+namespace fair {
+namespace internal {
+namespace optimal {
+
+template <int N>
+struct Dual {
+  double v = 0;
+  double g[N] = {};
+  double h[N * N] = {};  // row-major, symmetric
+
+  Dual() = default;
+  Dual(double value) : v(value) {}  // a constant (implicit: mixes with double in the templated terms)
+  /// The independent variable number i (0-based) with the given value.
+  static Dual variable(int i, double value) {
+    Dual d(value);
+    d.g[i] = 1;
+    return d;
+  }
+};
+
+/// The result of a unary function f at a: f(a), f'(a) a', f'(a) a'' + f''(a) a' a'^T.
+template <int N>
+inline Dual<N> chain(const Dual<N>& a, double f, double df, double ddf) {
+  Dual<N> r(f);
+  for (int i = 0; i < N; ++i) r.g[i] = df * a.g[i];
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) r.h[i * N + j] = df * a.h[i * N + j] + ddf * a.g[i] * a.g[j];
+  return r;
+}
+
+template <int N> inline Dual<N> operator+(const Dual<N>& a, const Dual<N>& b) {
+  Dual<N> r(a.v + b.v);
+  for (int i = 0; i < N; ++i) r.g[i] = a.g[i] + b.g[i];
+  for (int i = 0; i < N * N; ++i) r.h[i] = a.h[i] + b.h[i];
+  return r;
+}
+template <int N> inline Dual<N> operator-(const Dual<N>& a, const Dual<N>& b) {
+  Dual<N> r(a.v - b.v);
+  for (int i = 0; i < N; ++i) r.g[i] = a.g[i] - b.g[i];
+  for (int i = 0; i < N * N; ++i) r.h[i] = a.h[i] - b.h[i];
+  return r;
+}
+template <int N> inline Dual<N> operator-(const Dual<N>& a) { return chain(a, -a.v, -1.0, 0.0); }
+template <int N> inline Dual<N> operator*(const Dual<N>& a, const Dual<N>& b) {
+  Dual<N> r(a.v * b.v);
+  for (int i = 0; i < N; ++i) r.g[i] = a.g[i] * b.v + a.v * b.g[i];
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j)
+      r.h[i * N + j] = a.h[i * N + j] * b.v + a.v * b.h[i * N + j] + a.g[i] * b.g[j] + b.g[i] * a.g[j];
+  return r;
+}
+template <int N> inline Dual<N> operator*(double s, const Dual<N>& a) {
+  Dual<N> r(s * a.v);
+  for (int i = 0; i < N; ++i) r.g[i] = s * a.g[i];
+  for (int i = 0; i < N * N; ++i) r.h[i] = s * a.h[i];
+  return r;
+}
+template <int N> inline Dual<N> operator*(const Dual<N>& a, double s) { return s * a; }
+template <int N> inline Dual<N> operator+(const Dual<N>& a, double s) { Dual<N> r = a; r.v += s; return r; }
+template <int N> inline Dual<N> operator+(double s, const Dual<N>& a) { return a + s; }
+template <int N> inline Dual<N> operator-(const Dual<N>& a, double s) { Dual<N> r = a; r.v -= s; return r; }
+template <int N> inline Dual<N> operator-(double s, const Dual<N>& a) { return (-a) + s; }
+/// 1/a: f' = -1/a^2, f'' = 2/a^3.
+template <int N> inline Dual<N> reciprocal(const Dual<N>& a) {
+  const double r = 1 / a.v;
+  return chain(a, r, -r * r, 2 * r * r * r);
+}
+template <int N> inline Dual<N> operator/(const Dual<N>& a, const Dual<N>& b) { return a * reciprocal(b); }
+template <int N> inline Dual<N> operator/(const Dual<N>& a, double s) { return (1 / s) * a; }
+template <int N> inline Dual<N> operator/(double s, const Dual<N>& a) { return s * reciprocal(a); }
+
+template <int N> inline Dual<N> sqrt(const Dual<N>& a) {
+  const double r = std::sqrt(a.v);
+  return chain(a, r, 0.5 / r, -0.25 / (r * a.v));
+}
+template <int N> inline Dual<N> sin(const Dual<N>& a) {
+  const double s = std::sin(a.v), c = std::cos(a.v);
+  return chain(a, s, c, -s);
+}
+template <int N> inline Dual<N> cos(const Dual<N>& a) {
+  const double s = std::sin(a.v), c = std::cos(a.v);
+  return chain(a, c, -s, -c);
+}
+/// atan2(y, x) for (x, y) != (0, 0): d = (x dy - y dx)/(x^2 + y^2), second order by the product rule
+/// of the dual arithmetic (u = x dy - y dx is not a dual, so it is spelled out on the derivatives).
+template <int N> inline Dual<N> atan2(const Dual<N>& y, const Dual<N>& x) {
+  // phi(x, y): phi_x = -y/r2, phi_y = x/r2, phi_xx = 2xy/r2^2, phi_yy = -2xy/r2^2, phi_xy = (y^2-x^2)/r2^2.
+  const double r2 = x.v * x.v + y.v * y.v, r4 = r2 * r2;
+  const double px = -y.v / r2, py = x.v / r2;
+  const double pxx = 2 * x.v * y.v / r4, pyy = -pxx, pxy = (y.v * y.v - x.v * x.v) / r4;
+  Dual<N> r(std::atan2(y.v, x.v));
+  for (int i = 0; i < N; ++i) r.g[i] = px * x.g[i] + py * y.g[i];
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j)
+      r.h[i * N + j] = px * x.h[i * N + j] + py * y.h[i * N + j] + pxx * x.g[i] * x.g[j] +
+                       pyy * y.g[i] * y.g[j] + pxy * (x.g[i] * y.g[j] + y.g[i] * x.g[j]);
+  return r;
+}
+
+/// |a|^alpha for alpha >= 1. At a = 0: value 0, derivative 0 (for alpha = 1 the minimal-norm
+/// subgradient), second derivative 2 for alpha = 2 and 0 otherwise (for 1 <= alpha < 2 the true second
+/// derivative is unbounded near 0; for alpha > 2 it is 0).
+inline double abs_pow(double a, double alpha) {
+  if (alpha == 2) return a * a;
+  return std::pow(std::fabs(a), alpha);
+}
+template <int N> inline Dual<N> abs_pow(const Dual<N>& a, double alpha) {
+  if (alpha == 2) return a * a;
+  const double m = std::fabs(a.v);
+  if (m == 0) return chain(a, 0.0, 0.0, 0.0);
+  const double sign = a.v > 0 ? 1.0 : -1.0;
+  const double p = std::pow(m, alpha - 2);  // |a|^(alpha-2)
+  return chain(a, p * m * m, alpha * p * m * sign, alpha * (alpha - 1) * p);
+}
+
+}  // namespace optimal
+}  // namespace internal
+}  // namespace fair
+
+#endif  // FAIR_INTERNAL_OPTIMAL_DUAL_H

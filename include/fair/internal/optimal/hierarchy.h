@@ -1,0 +1,283 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// The hierarchical, adaptive optimiser of Gumhold's Sec. 2.3 (doc/optimal_curves_solver.md,
+// "Hierarchy"): start from the input polygon (with the constrained edges split, constraints.h),
+// solve the level (solver.h), subdivide at edge midpoints where
+//   max(eps(l_j, phi_j), eps(l_j, phi_{j+1})) > eps_max,   eps(l, phi) = (l/2) tan(|phi|/4)
+// (the sagitta of the circle tangent to the vertex bisector through the chord of length l: with
+// central angle phi, r = l / (2 sin(phi/2)) and eps = r (1 - cos(phi/2)) = (l/2) tan(phi/4) by the
+// half-angle identity (1 - cos x)/sin x = tan(x/2); the paper's printed
+// l (1 - cos(phi/2)) / (2 sin(phi/2)) is the same expression), eps_max = one pixel = extent / rho
+// of the current polygon's bounding box, warm start, until no edge is split (the target
+// resolution) or a cap (max_levels, max_vertices) stops it. Interpolation points stay fixed.
+
+#ifndef FAIR_INTERNAL_OPTIMAL_HIERARCHY_H
+#define FAIR_INTERNAL_OPTIMAL_HIERARCHY_H
+
+#include <fair/Errors.h>
+#include <fair/internal/optimal/constraints.h>
+#include <fair/internal/optimal/functional.h>
+#include <fair/internal/optimal/lambda.h>
+#include <fair/internal/optimal/solver.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace fair {
+namespace internal {
+namespace optimal {
+
+struct Solve_options {
+  bool closed = false;
+  double length_weight = 1, curvature_weight = 1, curvature_exponent = 2;
+  std::array<double, 5> derivative_weight{{0, 0, 0, 0, 0}};
+  std::array<double, 5> derivative_exponent{{2, 2, 2, 2, 2}};
+  double lambda = -1;
+  std::vector<double> segment_lambda;
+  std::vector<Constraint> constraints;
+  double resolution = 500;
+  bool conjugate_gradient = false;
+  Discretisation discretisation = Discretisation::REGULARISED;
+  std::size_t max_levels = 30, max_iterations_per_level = 100, max_vertices = 1000000;
+  double tolerance = 1e-10;
+};
+
+struct Level_record {
+  std::size_t vertices, iterations;
+  double energy, gradient_norm;
+  Status status;
+};
+
+struct Solve_result {
+  std::vector<Vec2> polygon;
+  std::vector<std::size_t> interpolation_indices;
+  std::vector<double> curvatures;
+  Status status = Status::CAPPED;
+  double energy = 0;
+  std::size_t iterations = 0;
+  std::vector<Level_record> levels;
+  std::vector<double> eta;  // per segment, when the lambda design ran (eq. 11)
+  bool eta_reference_guarded = false;  // lambda = 1 diverged: eta from the lambda = 0.99 curve
+};
+
+/// The turning angle phi_j at every vertex (0 at open ends).
+inline std::vector<double> turning_angles(const std::vector<Vec2>& c, bool closed) {
+  const std::size_t n = c.size();
+  std::vector<double> phi(n, 0.0);
+  for (std::size_t j = 0; j < n; ++j) {
+    if (!closed && (j == 0 || j + 1 == n)) continue;
+    const Vec2 a = vec::sub(c[j], c[(j + n - 1) % n]), b = vec::sub(c[(j + 1) % n], c[j]);
+    phi[j] = std::atan2(vec::cross(a, b), vec::dot(a, b));
+  }
+  return phi;
+}
+
+/// eps(l, phi) = (l/2) tan(|phi|/4): the largest distance of the edge from the circle arc it
+/// approximates (file comment).
+inline double edge_error(double l, double phi) { return 0.5 * l * std::tan(0.25 * std::abs(phi)); }
+
+/// Splits the edges whose error exceeds eps_max at their midpoints; updates the interpolation
+/// indices and the constraint vertices. Returns the number of edges split.
+inline std::size_t subdivide(std::vector<Vec2>& c, bool closed, double eps_max, std::vector<std::size_t>& interpolation,
+                             std::vector<Placed_constraint>& placed) {
+  const std::size_t n = c.size(), edges = closed ? n : n - 1;
+  const std::vector<double> phi = turning_angles(c, closed);
+  std::vector<unsigned char> split(edges, 0);
+  std::size_t count = 0;
+  for (std::size_t j = 0; j < edges; ++j) {
+    const double l = vec::norm(vec::sub(c[(j + 1) % n], c[j]));
+    if (std::max(edge_error(l, phi[j]), edge_error(l, phi[(j + 1) % n])) > eps_max) { split[j] = 1; ++count; }
+  }
+  if (count == 0) return 0;
+  std::vector<Vec2> d;
+  d.reserve(n + count);
+  std::vector<std::size_t> index(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    index[j] = d.size();
+    d.push_back(c[j]);
+    if (j < edges && split[j]) {
+      const Vec2& q = c[(j + 1) % n];
+      d.push_back({{0.5 * (c[j][0] + q[0]), 0.5 * (c[j][1] + q[1])}});
+    }
+  }
+  for (std::size_t& i : interpolation) i = index[i];
+  for (Placed_constraint& p : placed) p.vertex = index[p.vertex];
+  c.swap(d);
+  return count;
+}
+
+inline double polygon_length(const std::vector<Vec2>& c, bool closed) {
+  const std::size_t n = c.size(), e = closed ? n : n - 1;
+  double s = 0;
+  for (std::size_t j = 0; j < e; ++j) s += vec::norm(vec::sub(c[(j + 1) % n], c[j]));
+  return s;
+}
+
+inline Status worse(Status a, Status b) {
+  if (a == Status::DIVERGING || b == Status::DIVERGING) return Status::DIVERGING;
+  if (a == Status::CAPPED || b == Status::CAPPED) return Status::CAPPED;
+  return Status::CONVERGED;
+}
+
+/// Checks the data and options (typed errors naming the value).
+inline void check_solve_input(const std::vector<Vec2>& p, const Solve_options& o) {
+  const char* fn = "fair::Optimal_curve_2";
+  const std::size_t minimum = o.closed ? 3 : 2;
+  if (p.size() < minimum)
+    throw Invalid_input_error(message(fn, ": needs at least ", minimum, " points for a", o.closed ? " closed" : "n open",
+                                      " curve, got ", p.size()));
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (!std::isfinite(p[i][0]) || !std::isfinite(p[i][1]))
+      throw Invalid_input_error(message(fn, ": point ", i, " = (", p[i][0], ", ", p[i][1], ") has a non-finite coordinate"));
+  const std::size_t pairs = o.closed ? p.size() : p.size() - 1;
+  for (std::size_t i = 0; i < pairs; ++i) {
+    const std::size_t j = (i + 1) % p.size();
+    if (p[i][0] == p[j][0] && p[i][1] == p[j][1])
+      throw Invalid_input_error(message(fn, ": consecutive points ", i, " and ", j, " coincide at (", p[i][0], ", ", p[i][1], ")"));
+  }
+  auto weight = [&](double w, const char* name) {
+    require(std::isfinite(w) && w >= 0, fn, ": ", name, " = ", w, " must be finite and >= 0");
+  };
+  weight(o.length_weight, "length_weight (beta)");
+  weight(o.curvature_weight, "curvature_weight (beta_0)");
+  require(std::isfinite(o.curvature_exponent) && o.curvature_exponent >= 1, fn, ": curvature_exponent (alpha_0) = ",
+          o.curvature_exponent, " must be >= 1");
+  bool derivative = false;
+  for (int k = 1; k <= 4; ++k) {
+    weight(o.derivative_weight[k], "derivative_weight (beta_k)");
+    require(std::isfinite(o.derivative_exponent[k]) && o.derivative_exponent[k] >= 1, fn, ": derivative_exponent[", k,
+            "] (alpha_k) = ", o.derivative_exponent[k], " must be >= 1");
+    derivative = derivative || o.derivative_weight[k] > 0;
+  }
+  require(o.lambda == -1 || (o.lambda >= 0 && o.lambda <= 1), fn, ": lambda = ", o.lambda, " must be in [0, 1] (or -1 = off)");
+  if (!o.segment_lambda.empty()) {
+    const std::size_t segments = o.closed ? p.size() : p.size() - 1;
+    require(o.segment_lambda.size() == segments, fn, ": segment_lambda has ", o.segment_lambda.size(),
+            " values, the curve has ", segments, " segments");
+    for (std::size_t i = 0; i < segments; ++i)
+      require(o.segment_lambda[i] >= 0 && o.segment_lambda[i] <= 1, fn, ": segment_lambda[", i, "] = ",
+              o.segment_lambda[i], " must be in [0, 1]");
+  }
+  const bool lambda_design = o.lambda != -1 || !o.segment_lambda.empty();
+  require(lambda_design || derivative || o.length_weight > 0 || o.curvature_weight > 0, fn,
+          ": every weight is zero (length_weight = curvature_weight = 0, no derivative_weight): F = 0 has no minimiser");
+  require(std::isfinite(o.resolution) && o.resolution > 0, fn, ": resolution = ", o.resolution, " must be > 0");
+  require(std::isfinite(o.tolerance) && o.tolerance > 0, fn, ": tolerance = ", o.tolerance, " must be > 0");
+  require(o.max_levels >= 1 && o.max_iterations_per_level >= 1, fn, ": max_levels = ", o.max_levels,
+          " and max_iterations_per_level = ", o.max_iterations_per_level, " must be >= 1");
+}
+
+/// The hierarchy with per-edge beta and per-vertex beta0 given by `weights(c, interpolation,
+/// edge_beta, vertex_beta0)` (re-evaluated on every level).
+template <class Weights>
+Solve_result run_hierarchy(const std::vector<Vec2>& points, const Solve_options& o, Weights weights) {
+  Solve_result r;
+  std::vector<Placed_constraint> placed = check_constraints(o.constraints, points, o.closed);
+  std::vector<Vec2> c = initial_polygon(points, o.closed, placed, r.interpolation_indices);
+  Functional f;
+  f.closed = o.closed;
+  f.reference_length = polygon_length(points, o.closed);
+  f.curvature_exponent = o.curvature_exponent;
+  f.derivative_weight = o.derivative_weight;
+  f.derivative_exponent = o.derivative_exponent;
+  f.derivative_weight[0] = 0;
+  f.discretisation = o.discretisation;
+  Level_settings s;
+  s.conjugate_gradient = o.conjugate_gradient;
+  s.max_iterations = o.max_iterations_per_level;
+  s.tolerance = o.tolerance;
+  s.max_extent = divergence_extent_factor * polygon_extent(points);
+  bool derivative = false;
+  for (int k = 1; k <= 4; ++k) derivative = derivative || o.derivative_weight[k] > 0;
+  Status overall = Status::CONVERGED;
+  for (std::size_t level = 0;; ++level) {
+    const Vertex_roles roles = vertex_roles(c.size(), o.closed, r.interpolation_indices, placed);
+    f.zero_curvature = roles.zero_curvature;
+    weights(c, r.interpolation_indices, f.length_weight, f.curvature_weight);
+    std::size_t iterations = 0;
+    if (derivative && level == 0) {
+      // Continuation (Sec. 3.3): the k = 0 solution first, then the k-th derivative energy.
+      Functional f0 = f;
+      f0.derivative_weight = {{0, 0, 0, 0, 0}};
+      iterations += solve_level(f0, roles, s, c).iterations;
+    }
+    Level_outcome out = solve_level(f, roles, s, c);
+    out.iterations += iterations;
+    r.levels.push_back({c.size(), out.iterations, out.energy, out.gradient_norm, out.status});
+    r.iterations += out.iterations;
+    r.energy = out.energy;
+    overall = worse(overall, out.status);
+    if (out.status == Status::DIVERGING) break;
+    if (level + 1 >= o.max_levels) { overall = worse(overall, Status::CAPPED); break; }
+    std::vector<Vec2> d = c;
+    std::vector<std::size_t> interpolation = r.interpolation_indices;
+    std::vector<Placed_constraint> moved = placed;
+    const std::size_t split = subdivide(d, o.closed, polygon_extent(c) / o.resolution, interpolation, moved);
+    if (split == 0) break;
+    if (d.size() > o.max_vertices) { overall = worse(overall, Status::CAPPED); break; }
+    c.swap(d);
+    r.interpolation_indices.swap(interpolation);
+    placed.swap(moved);
+  }
+  r.status = overall;
+  r.polygon = c;
+  r.curvatures = discrete_curvatures(f, c);
+  return r;
+}
+
+/// The whole solve of Optimal_curve_2 (checks, the lambda design, the hierarchy).
+inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const Solve_options& o) {
+  check_solve_input(points, o);
+  const bool lambda_design = o.lambda != -1 || !o.segment_lambda.empty();
+  if (!lambda_design) {
+    return run_hierarchy(points, o, [&](const std::vector<Vec2>& c, const std::vector<std::size_t>&,
+                                        std::vector<double>& beta, std::vector<double>& beta0) {
+      beta.assign(o.closed ? c.size() : c.size() - 1, o.length_weight);
+      beta0.assign(c.size(), o.curvature_weight);
+    });
+  }
+  const std::size_t m = points.size(), segments = o.closed ? m : m - 1;
+  std::vector<double> lambda = o.segment_lambda.empty() ? std::vector<double>(segments, o.lambda) : o.segment_lambda;
+  // The lambda = 1 reference curve (beta = 0, beta0 = 1) for eta of eq. 11; guarded by
+  // lambda = 0.99 with q(0) when it has no finite minimiser (diverges).
+  Solve_options ref = o;
+  ref.lambda = -1;
+  ref.segment_lambda.clear();
+  ref.derivative_weight = {{0, 0, 0, 0, 0}};
+  ref.length_weight = 0;
+  ref.curvature_weight = 1;
+  Solve_result reference = solve_optimal_curve(points, ref);
+  bool guarded = false;
+  if (reference.status == Status::DIVERGING) {
+    ref.length_weight = 0.01 * lambda_scale(0);
+    ref.curvature_weight = 0.99;
+    reference = solve_optimal_curve(points, ref);
+    guarded = true;
+  }
+  std::vector<double> eta(segments);
+  for (std::size_t i = 0; i < segments; ++i) {
+    const std::size_t a = reference.interpolation_indices[i];
+    const std::size_t b = i + 1 < m ? reference.interpolation_indices[i + 1] : reference.polygon.size();
+    double length = 0;
+    for (std::size_t v = a; v < b; ++v)
+      length += vec::norm(vec::sub(reference.polygon[(v + 1) % reference.polygon.size()], reference.polygon[v]));
+    const double chord = vec::norm(vec::sub(points[(i + 1) % m], points[i]));
+    eta[i] = std::min(1.0, chord / length);
+  }
+  Solve_result r = run_hierarchy(points, o, [&](const std::vector<Vec2>& c, const std::vector<std::size_t>& interpolation,
+                                                std::vector<double>& beta, std::vector<double>& beta0) {
+    lambda_weights(c, o.closed, interpolation, lambda, eta, beta, beta0);
+  });
+  r.eta = eta;
+  r.eta_reference_guarded = guarded;
+  return r;
+}
+
+} // namespace optimal
+} // namespace internal
+} // namespace fair
+
+#endif // FAIR_INTERNAL_OPTIMAL_HIERARCHY_H

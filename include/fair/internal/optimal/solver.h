@@ -1,0 +1,365 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// The level optimiser of Gumhold's optimal curves (Sec. 2.3.2, replaced by Newton as issue 11
+// asks; doc/optimal_curves_solver.md, "Level solve"). Unknowns: one scalar per free vertex (its
+// offset along the vertex normal n_j, fixed during a step and recomputed after it), one per SLIDE
+// vertex (its offset along the constrained ray) and one per TIE (the two neighbours of a single
+// tangent/normal constraint, see constraints.h). Every unknown u_k moves its vertices as
+// c_a += u_k v_a, so the reduced gradient is sum_a v_a . g_a and the reduced Hessian
+// sum_{a,b} v_a^T H_ab v_b (exact second derivative of u -> F(c + sum u_k v_k), a linear map).
+// Unknowns are numbered in vertex order. The reduced system of a closed curve stays CYCLIC even
+// though the interpolation points are fixed: kappa_j of a fixed vertex j still couples c_{j-1} and
+// c_{j+1} (and the kappa^(k) terms couple up to w vertices across it), so eliminating a fixed vertex
+// cuts the ring only where w consecutive vertices are fixed, which never happens here; the banded
+// Cholesky of functional.h/banded.h handles the cyclic band in O(n w^2) (folding order).
+//
+// Newton: solve (H + mu I) d = -g with mu = 0, else mu from 1e-10 max|H_kk| up by x10 until the
+// banded Cholesky succeeds (capped); stop when the Newton decrement g^T d / 2 (the predicted
+// decrease) is <= tolerance |F|; Armijo backtracking (c1 = 1e-4, halving, capped).
+// CONJUGATE_GRADIENT: Polak-Ribiere+ on the same unknowns, the step found by at most ten
+// Newton-Raphson steps on F(sigma) (the paper's line search), Armijo-guarded.
+
+#ifndef FAIR_INTERNAL_OPTIMAL_SOLVER_H
+#define FAIR_INTERNAL_OPTIMAL_SOLVER_H
+
+#include <fair/Errors.h>
+#include <fair/internal/optimal/constraints.h>
+#include <fair/internal/optimal/functional.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace fair {
+namespace internal {
+namespace optimal {
+
+enum class Status { CONVERGED, DIVERGING, CAPPED };
+
+/// Most diagonal shifts tried before giving up on a Newton step (mu grows x10 from 1e-10 max|H_kk|:
+/// 30 tries reach 1e20 max|H_kk|, far beyond any Hessian of a finite polygon).
+constexpr int max_shifts = 30;
+/// Most halvings of the Armijo line search (2^-60 ~ 1e-18: below rounding of any step).
+constexpr int max_backtracks = 60;
+/// Armijo sufficient-decrease constant.
+constexpr double armijo_c1 = 1e-4;
+/// A polygon whose bounding-box extent exceeds this multiple of the input's is diverging.
+constexpr double divergence_extent_factor = 1e3;
+/// An edge shorter than this fraction of the extent is degenerate (the curve collapses): diverging.
+constexpr double degenerate_edge_fraction = 1e-12;
+/// When no Armijo step decreases F any more, the level counts as converged if the predicted
+/// decrease is below this fraction of |F| (the rounding floor of F's evaluation at large n).
+constexpr double rounding_floor = 1e-8;
+/// Newton-Raphson steps of the CG line search (the paper: "a maximum of ten").
+constexpr int cg_line_search_steps = 10;
+
+struct Level_settings {
+  bool conjugate_gradient = false;
+  std::size_t max_iterations = 100;
+  double tolerance = 1e-10;
+  double max_extent = std::numeric_limits<double>::infinity();  // divergence cap
+};
+
+struct Level_outcome {
+  std::size_t iterations = 0;
+  double energy = 0, gradient_norm = 0;
+  Status status = Status::CAPPED;
+};
+
+inline double polygon_extent(const std::vector<Vec2>& c) {
+  double x0 = c[0][0], x1 = x0, y0 = c[0][1], y1 = y0;
+  for (const Vec2& p : c) {
+    x0 = std::min(x0, p[0]); x1 = std::max(x1, p[0]);
+    y0 = std::min(y0, p[1]); y1 = std::max(y1, p[1]);
+  }
+  return std::max(x1 - x0, y1 - y0);
+}
+
+inline double min_edge(const std::vector<Vec2>& c, bool closed) {
+  const std::size_t n = c.size(), e = closed ? n : n - 1;
+  double m = std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j < e; ++j) m = std::min(m, vec::norm(vec::sub(c[(j + 1) % n], c[j])));
+  return m;
+}
+
+/// The unknowns of one step: vertex a moves by u_{var[a]} dir[a] (var[a] = -1: fixed).
+struct Reduced_unknowns {
+  std::vector<long> var;
+  std::vector<Vec2> dir;
+  std::size_t count = 0;
+  bool cyclic = false;
+};
+
+inline Reduced_unknowns reduced_unknowns(const std::vector<Vec2>& c, bool closed, const Vertex_roles& roles) {
+  const std::size_t n = c.size();
+  Reduced_unknowns u;
+  u.var.assign(n, -1);
+  u.dir.assign(n, Vec2{{0, 0}});
+  const std::vector<Vec2> normals = vertex_normals(c, closed);
+  std::vector<long> tie_of(n, -1);  // tie index of a tied neighbour
+  for (std::size_t t = 0; t < roles.ties.size(); ++t) {
+    const std::size_t j = roles.ties[t].centre;
+    const std::size_t a = (j + n - 1) % n, b = (j + 1) % n;
+    FAIR_ASSERT(roles.role[a] == Vertex_role::FREE && roles.role[b] == Vertex_role::FREE);
+    tie_of[a] = tie_of[b] = static_cast<long>(t);
+    // Linearised constraint (see constraints.h): the bisector angle changes by
+    // (A delta_b + B delta_a)/2 with A = (u+ x n_b)/l+, B = -(u- x n_a)/l-.
+    const Vec2 dm = vec::sub(c[j], c[a]), dp = vec::sub(c[b], c[j]);
+    const double lm = vec::norm(dm), lp = vec::norm(dp);
+    const double A = vec::cross(dp, normals[b]) / (lp * lp), B = -vec::cross(dm, normals[a]) / (lm * lm);
+    const double N = std::hypot(A, B);
+    FAIR_ASSERT_MSG(N > 0, "tie at vertex ", j);
+    u.dir[b] = {{normals[b][0] * B / N, normals[b][1] * B / N}};
+    u.dir[a] = {{-normals[a][0] * A / N, -normals[a][1] * A / N}};
+  }
+  u.cyclic = closed;
+  std::vector<long> tie_var(roles.ties.size(), -1);
+  for (std::size_t v = 0; v < n; ++v) {
+    if (roles.role[v] == Vertex_role::FIXED) continue;
+    if (tie_of[v] >= 0) {
+      long& k = tie_var[tie_of[v]];
+      if (k < 0) k = static_cast<long>(u.count++);
+      u.var[v] = k;
+    } else {
+      u.var[v] = static_cast<long>(u.count++);
+      u.dir[v] = roles.role[v] == Vertex_role::SLIDE ? roles.slide[v] : normals[v];
+    }
+  }
+  return u;
+}
+
+/// Index distance of two unknowns in the reduced system.
+inline std::size_t unknown_distance(const Reduced_unknowns& u, long k, long l) {
+  const std::size_t d = static_cast<std::size_t>(k > l ? k - l : l - k);
+  return u.cyclic ? std::min(d, u.count - d) : d;
+}
+
+/// Calls f(a, b) for every ordered pair of vertices within the Hessian's band (each pair once).
+template <class Fn>
+void for_band_pairs(std::size_t n, std::size_t w, bool closed, Fn f) {
+  for (std::size_t a = 0; a < n; ++a) {
+    if (!closed || 2 * w + 1 >= n) {
+      const std::size_t lo = closed ? 0 : (a > w ? a - w : 0), hi = closed ? n - 1 : std::min(n - 1, a + w);
+      for (std::size_t b = lo; b <= hi; ++b) f(a, b);
+    } else {
+      for (std::size_t d = 0; d <= 2 * w; ++d) f(a, (a + n - w + d) % n);
+    }
+  }
+}
+
+/// The reduced gradient and Hessian (see the file comment).
+inline void reduced_system(const std::vector<Vec2>& g, const Block_banded_hessian& h, bool closed,
+                           const Reduced_unknowns& u, std::vector<double>& rg, Banded_symmetric& rh) {
+  const std::size_t n = g.size(), w = h.half_bandwidth();
+  rg.assign(u.count, 0);
+  for (std::size_t a = 0; a < n; ++a)
+    if (u.var[a] >= 0) rg[u.var[a]] += vec::dot(u.dir[a], g[a]);
+  auto block_form = [&](std::size_t a, std::size_t b) {
+    double s = 0;
+    for (int r = 0; r < 2; ++r)
+      for (int q = 0; q < 2; ++q) s += u.dir[a][r] * h.at(a, b, r, q) * u.dir[b][q];
+    return s;
+  };
+  std::size_t wr = 0;
+  for_band_pairs(n, w, closed, [&](std::size_t a, std::size_t b) {
+    if (u.var[a] >= 0 && u.var[b] >= 0) wr = std::max(wr, unknown_distance(u, u.var[a], u.var[b]));
+  });
+  if (u.count == 0) { rh.reset(0, 0, false); return; }
+  // Accumulate in a private band (rows k, offsets -wr..wr) so that the storage convention of
+  // Banded_symmetric (one or two triangles) does not matter.
+  const std::size_t width = 2 * wr + 1;
+  std::vector<double> band(u.count * width, 0.0);
+  auto offset = [&](long k, long l) -> std::size_t {
+    long d = l - k;
+    if (u.cyclic) {
+      const long m = static_cast<long>(u.count);
+      if (d > static_cast<long>(wr)) d -= m;
+      if (d < -static_cast<long>(wr)) d += m;
+      if (2 * (-d) == m) d = -d;  // the antipodal pair of an even ring: one slot
+    }
+    return static_cast<std::size_t>(d + static_cast<long>(wr));
+  };
+  for_band_pairs(n, w, closed, [&](std::size_t a, std::size_t b) {
+    if (u.var[a] >= 0 && u.var[b] >= 0) band[u.var[a] * width + offset(u.var[a], u.var[b])] += block_form(a, b);
+  });
+  rh.reset(u.count, wr, u.cyclic);
+  for (std::size_t k = 0; k < u.count; ++k)
+    for (std::size_t o = wr; o < width; ++o) {
+      const long l = static_cast<long>(k) + static_cast<long>(o - wr);
+      const std::size_t m = u.count;
+      if (!u.cyclic && l >= static_cast<long>(m)) break;
+      if (u.cyclic && o > wr && 2 * (o - wr) > m) break;  // each cyclic pair once
+      const std::size_t ll = static_cast<std::size_t>(l) % m;
+      if (u.cyclic && o > wr && 2 * (o - wr) == m && ll < k) continue;
+      rh.at(k, ll) = band[k * width + o];
+    }
+}
+
+/// c + t * (the displacement of the unknowns x), with the ties restored.
+inline std::vector<Vec2> displaced(const std::vector<Vec2>& c, const Reduced_unknowns& u, const std::vector<double>& x,
+                                   double t, const Vertex_roles& roles) {
+  std::vector<Vec2> d = c;
+  for (std::size_t a = 0; a < c.size(); ++a)
+    if (u.var[a] >= 0) {
+      const double s = t * x[u.var[a]];
+      d[a][0] += s * u.dir[a][0];
+      d[a][1] += s * u.dir[a][1];
+    }
+  restore_ties(roles, d);
+  return d;
+}
+
+/// F at c, +infinity where the functional rejects the polygon (coincident vertices after a step).
+inline double energy_or_infinity(const Functional& f, const std::vector<Vec2>& c) {
+  try {
+    const double e = energy(f, c);
+    return std::isfinite(e) ? e : std::numeric_limits<double>::infinity();
+  } catch (const Error&) {
+    return std::numeric_limits<double>::infinity();
+  }
+}
+
+/// Solves (rh + mu I) x = rhs with the smallest shift mu of the ladder that makes it positive
+/// definite; false if none does.
+inline bool shifted_solve(const Banded_symmetric& rh, std::vector<double>& x) {
+  double diag = 0;
+  for (std::size_t k = 0; k < x.size(); ++k) diag = std::max(diag, std::abs(rh.at(k, k)));
+  if (!(diag > 0)) diag = 1;
+  const std::vector<double> rhs = x;
+  double mu = 0;
+  for (int s = 0; s <= max_shifts; ++s) {
+    Banded_symmetric a = rh;
+    if (mu > 0) a.add_to_diagonal(mu);
+    x = rhs;
+    if (solve_banded_positive_definite(a, x)) return true;
+    mu = mu == 0 ? 1e-10 * diag : 10 * mu;
+  }
+  return false;
+}
+
+inline double dot_product(const std::vector<double>& a, const std::vector<double>& b) {
+  double s = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) s += a[k] * b[k];
+  return s;
+}
+
+/// x^T RH x for the reduced banded matrix.
+inline double reduced_form(const Banded_symmetric& rh, const std::vector<double>& x) {
+  const std::size_t m = x.size(), w = rh.half_bandwidth();
+  double s = 0;
+  for (std::size_t k = 0; k < m; ++k) {
+    s += rh.at(k, k) * x[k] * x[k];
+    for (std::size_t d = 1; d <= w; ++d) {
+      if (!rh.cyclic() && k + d >= m) break;
+      if (rh.cyclic() && 2 * d > m) break;
+      const std::size_t l = (k + d) % m;
+      s += (2 * d == m ? 1.0 : 2.0) * rh.at(k, l) * x[k] * x[l];
+    }
+  }
+  return s;
+}
+
+/// Minimises F over the free unknowns of `c` (in place).
+inline Level_outcome solve_level(const Functional& f, const Vertex_roles& roles, const Level_settings& s,
+                                 std::vector<Vec2>& c) {
+  Level_outcome out;
+  std::vector<Vec2> g;
+  Block_banded_hessian h;
+  Banded_symmetric rh;
+  std::vector<double> rg, x, previous_g, direction;
+  const double inf = std::numeric_limits<double>::infinity();
+  for (std::size_t it = 0;; ++it) {
+    const double e = energy_gradient_hessian(f, c, g, h);
+    out.energy = e;
+    const Reduced_unknowns u = reduced_unknowns(c, f.closed, roles);
+    reduced_system(g, h, f.closed, u, rg, rh);
+    out.gradient_norm = std::sqrt(dot_product(rg, rg));
+    out.iterations = it;
+    const double scale = std::max(std::abs(e), std::numeric_limits<double>::min());
+    if (u.count == 0 || out.gradient_norm == 0) { out.status = Status::CONVERGED; return out; }
+    if (it >= s.max_iterations) { out.status = Status::CAPPED; return out; }
+    double decrement;  // predicted decrease of a full step
+    if (!s.conjugate_gradient) {
+      x.assign(rg.size(), 0);
+      for (std::size_t k = 0; k < rg.size(); ++k) x[k] = -rg[k];
+      if (!shifted_solve(rh, x)) { out.status = Status::CAPPED; return out; }
+      decrement = -dot_product(rg, x);
+      if (0.5 * decrement <= s.tolerance * scale) { out.status = Status::CONVERGED; return out; }
+    } else {
+      // Polak-Ribiere+ direction (restart when the number of unknowns changed or it is not descent).
+      double beta = 0;
+      if (previous_g.size() == rg.size() && direction.size() == rg.size()) {
+        double num = 0;
+        for (std::size_t k = 0; k < rg.size(); ++k) num += rg[k] * (rg[k] - previous_g[k]);
+        beta = std::max(0.0, num / dot_product(previous_g, previous_g));
+      } else {
+        direction.assign(rg.size(), 0);
+      }
+      for (std::size_t k = 0; k < rg.size(); ++k) direction[k] = -rg[k] + beta * direction[k];
+      if (dot_product(direction, rg) >= 0)
+        for (std::size_t k = 0; k < rg.size(); ++k) direction[k] = -rg[k];
+      previous_g = rg;
+      // Newton-Raphson on phi(sigma) = F(c + sigma d): phi'(0) = g.d, phi''(0) = d^T H d; later
+      // steps use the secant of phi' (the gradient at the trial point).
+      const double d1 = dot_product(rg, direction), d2 = reduced_form(rh, direction);
+      double sigma = d2 > 0 ? -d1 / d2 : 1.0;
+      double sigma_prev = 0, slope_prev = d1;
+      for (int r = 1; r < cg_line_search_steps && std::isfinite(sigma); ++r) {
+        const std::vector<Vec2> trial = displaced(c, u, direction, sigma, roles);
+        std::vector<Vec2> gt;
+        double slope;
+        try {
+          energy_and_gradient(f, trial, gt);
+          slope = 0;
+          for (std::size_t a = 0; a < c.size(); ++a)
+            if (u.var[a] >= 0) slope += direction[u.var[a]] * vec::dot(u.dir[a], gt[a]);
+        } catch (const Error&) { break; }
+        if (!std::isfinite(slope) || std::abs(slope) <= 1e-3 * std::abs(d1)) break;
+        const double curvature = (slope - slope_prev) / (sigma - sigma_prev);
+        if (!(curvature > 0)) break;
+        sigma_prev = sigma; slope_prev = slope;
+        sigma -= slope / curvature;
+      }
+      if (!(std::isfinite(sigma) && sigma > 0)) sigma = 1.0;
+      for (std::size_t k = 0; k < rg.size(); ++k) direction[k] *= sigma;
+      x = direction;
+      decrement = -dot_product(rg, x);
+    }
+    // Armijo backtracking.
+    double t = 1, et = inf;
+    std::vector<Vec2> trial;
+    int b = 0;
+    for (; b <= max_backtracks; ++b, t *= 0.5) {
+      trial = displaced(c, u, x, t, roles);
+      et = energy_or_infinity(f, trial);
+      if (et <= e - armijo_c1 * t * decrement) break;
+    }
+    if (b > max_backtracks) {
+      out.status = 0.5 * decrement <= rounding_floor * scale ? Status::CONVERGED : Status::CAPPED;
+      return out;
+    }
+    const double extent = polygon_extent(trial);
+    if (extent > s.max_extent || min_edge(trial, f.closed) < degenerate_edge_fraction * extent) {
+      c = trial;
+      out.energy = et;
+      out.iterations = it + 1;
+      out.status = Status::DIVERGING;
+      return out;
+    }
+    c = trial;
+    if (s.conjugate_gradient && e - et <= s.tolerance * scale) {
+      out.energy = et;
+      out.iterations = it + 1;
+      out.status = Status::CONVERGED;
+      return out;
+    }
+  }
+}
+
+} // namespace optimal
+} // namespace internal
+} // namespace fair
+
+#endif // FAIR_INTERNAL_OPTIMAL_SOLVER_H
