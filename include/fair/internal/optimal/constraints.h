@@ -4,11 +4,14 @@
 // initial polygon that satisfies them (doc/optimal_curves_solver.md, "Constraints"):
 //  - an interpolation point is FIXED;
 //  - CORNER at point i: kappa_i = 0 (natural boundary, Sec. 3.1) and its two polygon neighbours
-//    SLIDE on the rays c_i - r t_in and c_i + r t_out (one unknown r each, a linear
-//    parametrisation: the in/out tangents hold exactly). The paper fixes the neighbours (Fig. 5a/b)
-//    and re-fixes the new ones after each subdivision; sliding keeps Fig. 5b's property (the new
-//    neighbour, an edge midpoint, is on the ray) without pinning the curve to an arbitrary point.
-//  - TANGENT/NORMAL at an open end: the end's neighbour SLIDEs on the tangent ray (clamped end).
+//    FIXED on the rays c_i - r t_in and c_i + r t_out (Fig. 5a). After a subdivision the new
+//    neighbours (edge midpoints, so on the rays again) are fixed and the old ones freed (Fig. 5b):
+//    the tangents hold exactly at every level; the curve is pinned to a point at distance h (the
+//    current neighbour edge) on the ray, which moves the curve by O(h^2), the discretisation order.
+//    (Letting the neighbours slide on the rays instead fails on coarse levels: an end neighbour
+//    slides into the end point, where an open curve has no curvature term, and the level degenerates.)
+//  - TANGENT/NORMAL (or a one-sided CORNER) at an open end: a clamped end, a fixed ghost vertex on
+//    the tangent behind the end gives the end its curvature term (solver.h, Level_problem).
 //  - TANGENT/NORMAL at an interior point j: a TIE. Both neighbours move along their normals with
 //    offsets tied by the linearised constraint "the bisector of the unit edge directions keeps
 //    its angle" (one unknown for the two), and after every step both are rotated about c_j so that
@@ -40,15 +43,16 @@ struct Constraint {
   Vec2 direction, outgoing;
 };
 
-enum class Vertex_role : unsigned char { FREE, FIXED, SLIDE };
+enum class Vertex_role : unsigned char { FREE, FIXED };
 
 /// Roles of the vertices of one level polygon.
 struct Vertex_roles {
   std::vector<Vertex_role> role;   // per vertex
-  std::vector<Vec2> slide;         // per vertex: unit direction of a SLIDE vertex
   std::vector<unsigned char> zero_curvature;  // per vertex (corner points)
   struct Tie { std::size_t centre; Vec2 tangent; };  // tangent: unit direction of travel at centre
   std::vector<Tie> ties;
+  bool ghost_front = false, ghost_back = false;  // clamped open ends
+  Vec2 front_tangent{{1, 0}}, back_tangent{{1, 0}};
 };
 
 // Small vector helpers of the solver (namespace vec: no clash with the functional's own).
@@ -126,12 +130,13 @@ inline std::vector<Vec2> initial_polygon(const std::vector<Vec2>& points, bool c
     const Vec2& p = points[i];
     const Vec2& q = points[(i + 1) % m];
     const double l = vec::norm(vec::sub(q, p));
-    if (at[i] >= 0) {
+    const bool inner_i = closed || i > 0, inner_next = closed || i + 2 < m;  // open ends are not split
+    if (at[i] >= 0 && inner_i) {
       const Vec2& t = placed[at[i]].out;
       c.push_back({{p[0] + t[0] * l / 3, p[1] + t[1] * l / 3}});
     }
     const int j = at[(i + 1) % m];
-    if (j >= 0) {
+    if (j >= 0 && inner_next) {
       const Vec2& t = placed[j].in;
       c.push_back({{q[0] - t[0] * l / 3, q[1] - t[1] * l / 3}});
     }
@@ -145,22 +150,21 @@ inline Vertex_roles vertex_roles(std::size_t n, bool closed, const std::vector<s
                                  const std::vector<Placed_constraint>& placed) {
   Vertex_roles r;
   r.role.assign(n, Vertex_role::FREE);
-  r.slide.assign(n, Vec2{{0, 0}});
   r.zero_curvature.assign(n, 0);
   for (std::size_t v : interpolation) r.role[v] = Vertex_role::FIXED;
   for (const Placed_constraint& p : placed) {
     const std::size_t v = p.vertex;
     const bool first = !closed && v == 0, last = !closed && v + 1 == n;
-    if (p.corner || first || last) {
-      if (p.corner && !first && !last) r.zero_curvature[v] = 1;
-      if (!last) {
-        const std::size_t w = (v + 1) % n;
-        if (r.role[w] == Vertex_role::FREE) { r.role[w] = Vertex_role::SLIDE; r.slide[w] = p.out; }
-      }
-      if (!first) {
-        const std::size_t w = (v + n - 1) % n;
-        if (r.role[w] == Vertex_role::FREE) { r.role[w] = Vertex_role::SLIDE; r.slide[w] = p.in; }
-      }
+    if (first) {
+      r.ghost_front = true;
+      r.front_tangent = p.out;
+    } else if (last) {
+      r.ghost_back = true;
+      r.back_tangent = p.in;
+    } else if (p.corner) {
+      r.zero_curvature[v] = 1;
+      r.role[(v + 1) % n] = Vertex_role::FIXED;
+      r.role[(v + n - 1) % n] = Vertex_role::FIXED;
     } else {
       r.ties.push_back({v, p.in});
     }

@@ -20,7 +20,7 @@ template <int N>
 struct Dual {
   double v = 0;
   double g[N] = {};
-  double h[N * N] = {};  // row-major, symmetric
+  double h[N * N] = {};  // row-major, symmetric (exactly: every update is symmetric in i, j)
 
   Dual() = default;
   Dual(double value) : v(value) {}  // a constant (implicit: mixes with double in the templated terms)
@@ -38,7 +38,7 @@ inline Dual<N> chain(const Dual<N>& a, double f, double df, double ddf) {
   Dual<N> r(f);
   for (int i = 0; i < N; ++i) r.g[i] = df * a.g[i];
   for (int i = 0; i < N; ++i)
-    for (int j = 0; j < N; ++j) r.h[i * N + j] = df * a.h[i * N + j] + ddf * a.g[i] * a.g[j];
+    for (int j = 0; j < N; ++j) r.h[i * N + j] = df * a.h[i * N + j] + ddf * (a.g[i] * a.g[j]);
   return r;
 }
 
@@ -106,8 +106,8 @@ template <int N> inline Dual<N> atan2(const Dual<N>& y, const Dual<N>& x) {
   for (int i = 0; i < N; ++i) r.g[i] = px * x.g[i] + py * y.g[i];
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j)
-      r.h[i * N + j] = px * x.h[i * N + j] + py * y.h[i * N + j] + pxx * x.g[i] * x.g[j] +
-                       pyy * y.g[i] * y.g[j] + pxy * (x.g[i] * y.g[j] + y.g[i] * x.g[j]);
+      r.h[i * N + j] = px * x.h[i * N + j] + py * y.h[i * N + j] + pxx * (x.g[i] * x.g[j]) +
+                       pyy * (y.g[i] * y.g[j]) + pxy * (x.g[i] * y.g[j] + y.g[i] * x.g[j]);
   return r;
 }
 

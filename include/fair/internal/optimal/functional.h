@@ -328,6 +328,9 @@ double evaluate_term(const Functional& f, const Geometry& g, long j, Window* win
     for (int r = 0; r < d; ++r)
       for (int s = 0; s < d; ++s) window->h[(o + r) * C + o + s] += t.g[q] * prim[q]->h[r * d + s];
   }
+  // J^T M is symmetric up to rounding: make it exactly symmetric, so that the stored diagonal blocks are.
+  for (int i = 0; i < C; ++i)
+    for (int k = i + 1; k < C; ++k) window->h[i * C + k] = window->h[k * C + i] = 0.5 * (window->h[i * C + k] + window->h[k * C + i]);
   return t.v;
 }
 

@@ -8,7 +8,7 @@
 // central angle phi, r = l / (2 sin(phi/2)) and eps = r (1 - cos(phi/2)) = (l/2) tan(phi/4) by the
 // half-angle identity (1 - cos x)/sin x = tan(x/2); the paper's printed
 // l (1 - cos(phi/2)) / (2 sin(phi/2)) is the same expression), eps_max = one pixel = extent / rho
-// of the current polygon's bounding box, warm start, until no edge is split (the target
+// of the current polygon (rotation_invariant_extent), warm start, until no edge is split (the target
 // resolution) or a cap (max_levels, max_vertices) stops it. Interpolation points stay fixed.
 
 #ifndef FAIR_INTERNAL_OPTIMAL_HIERARCHY_H
@@ -63,6 +63,20 @@ struct Solve_result {
   bool eta_reference_guarded = false;  // lambda = 1 diverged: eta from the lambda = 0.99 curve
 };
 
+/// The extent that rho refers to: twice the largest distance of a vertex from the vertices'
+/// centroid. The paper's bounding-box extent depends on the orientation (a rotated input would
+/// be subdivided differently, and rigid motions would not commute with the solve); this one is
+/// invariant and between the bounding box's larger side and 2 sqrt(2) times it.
+inline double rotation_invariant_extent(const std::vector<Vec2>& c) {
+  double x = 0, y = 0;
+  for (const Vec2& p : c) { x += p[0]; y += p[1]; }
+  x /= static_cast<double>(c.size());
+  y /= static_cast<double>(c.size());
+  double r = 0;
+  for (const Vec2& p : c) r = std::max(r, std::hypot(p[0] - x, p[1] - y));
+  return 2 * r;
+}
+
 /// The turning angle phi_j at every vertex (0 at open ends).
 inline std::vector<double> turning_angles(const std::vector<Vec2>& c, bool closed) {
   const std::size_t n = c.size();
@@ -81,10 +95,19 @@ inline double edge_error(double l, double phi) { return 0.5 * l * std::tan(0.25 
 
 /// Splits the edges whose error exceeds eps_max at their midpoints; updates the interpolation
 /// indices and the constraint vertices. Returns the number of edges split.
-inline std::size_t subdivide(std::vector<Vec2>& c, bool closed, double eps_max, std::vector<std::size_t>& interpolation,
-                             std::vector<Placed_constraint>& placed) {
+inline std::size_t subdivide(const Level_problem& p, std::vector<Vec2>& c, double eps_max,
+                             std::vector<std::size_t>& interpolation, std::vector<Placed_constraint>& placed) {
+  const bool closed = p.f.closed;
   const std::size_t n = c.size(), edges = closed ? n : n - 1;
-  const std::vector<double> phi = turning_angles(c, closed);
+  // The k-th derivative energies (k >= 1): new vertices by the four-point rule (Dyn, Levin,
+  // Gregory; weights -1, 9, 9, -1 over 16) instead of the paper's edge midpoints, so that the
+  // warm start is smooth (a midpoint on a straight edge makes kappa jump and kappa^(k) ~ h^-k);
+  // plain midpoints next to corners (their neighbours stay on the rays) and at open ends.
+  const std::vector<unsigned char>& zero = p.f.zero_curvature;
+  bool four_point = false;
+  for (int k = 1; k <= 4; ++k) four_point = four_point || p.f.derivative_weight[k] > 0;
+  // Turning angles with the ghosts of clamped ends (the turn from the end tangent counts).
+  const std::vector<double> phi = p.ghosts() ? p.strip(turning_angles(p.extend(c), closed), n) : turning_angles(c, closed);
   std::vector<unsigned char> split(edges, 0);
   std::size_t count = 0;
   for (std::size_t j = 0; j < edges; ++j) {
@@ -100,7 +123,15 @@ inline std::size_t subdivide(std::vector<Vec2>& c, bool closed, double eps_max, 
     d.push_back(c[j]);
     if (j < edges && split[j]) {
       const Vec2& q = c[(j + 1) % n];
-      d.push_back({{0.5 * (c[j][0] + q[0]), 0.5 * (c[j][1] + q[1])}});
+      Vec2 mid = {{0.5 * (c[j][0] + q[0]), 0.5 * (c[j][1] + q[1])}};
+      if (four_point && (closed || (j >= 1 && j + 2 < n))) {
+        const std::size_t a = (j + n - 1) % n, b = (j + 2) % n;
+        bool corner = false;
+        for (std::size_t v : {a, j, (j + 1) % n, b}) corner = corner || (!zero.empty() && zero[v]);
+        if (!corner)
+          for (int k = 0; k < 2; ++k) mid[k] = (9 * (c[j][k] + q[k]) - (c[a][k] + c[b][k])) / 16;
+      }
+      d.push_back(mid);
     }
   }
   for (std::size_t& i : interpolation) i = index[i];
@@ -177,7 +208,8 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Solve_options&
   Solve_result r;
   std::vector<Placed_constraint> placed = check_constraints(o.constraints, points, o.closed);
   std::vector<Vec2> c = initial_polygon(points, o.closed, placed, r.interpolation_indices);
-  Functional f;
+  Level_problem p;
+  Functional& f = p.f;
   f.closed = o.closed;
   f.reference_length = polygon_length(points, o.closed);
   f.curvature_exponent = o.curvature_exponent;
@@ -195,16 +227,22 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Solve_options&
   Status overall = Status::CONVERGED;
   for (std::size_t level = 0;; ++level) {
     const Vertex_roles roles = vertex_roles(c.size(), o.closed, r.interpolation_indices, placed);
-    f.zero_curvature = roles.zero_curvature;
-    weights(c, r.interpolation_indices, f.length_weight, f.curvature_weight);
+    p.f.zero_curvature = roles.zero_curvature;
+    weights(c, r.interpolation_indices, p.f.length_weight, p.f.curvature_weight);
+    p.ghost_front = roles.ghost_front;
+    p.ghost_back = roles.ghost_back;
+    p.front_tangent = roles.front_tangent;
+    p.back_tangent = roles.back_tangent;
+    p.prepare();
     std::size_t iterations = 0;
     if (derivative && level == 0) {
       // Continuation (Sec. 3.3): the k = 0 solution first, then the k-th derivative energy.
-      Functional f0 = f;
-      f0.derivative_weight = {{0, 0, 0, 0, 0}};
-      iterations += solve_level(f0, roles, s, c).iterations;
+      Level_problem p0 = p;
+      p0.f.derivative_weight = {{0, 0, 0, 0, 0}};
+      p0.prepare();
+      iterations += solve_level(p0, roles, s, c).iterations;
     }
-    Level_outcome out = solve_level(f, roles, s, c);
+    Level_outcome out = solve_level(p, roles, s, c);
     out.iterations += iterations;
     r.levels.push_back({c.size(), out.iterations, out.energy, out.gradient_norm, out.status});
     r.iterations += out.iterations;
@@ -215,16 +253,17 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Solve_options&
     std::vector<Vec2> d = c;
     std::vector<std::size_t> interpolation = r.interpolation_indices;
     std::vector<Placed_constraint> moved = placed;
-    const std::size_t split = subdivide(d, o.closed, polygon_extent(c) / o.resolution, interpolation, moved);
+    const std::size_t split = subdivide(p, d, rotation_invariant_extent(c) / o.resolution, interpolation, moved);
     if (split == 0) break;
     if (d.size() > o.max_vertices) { overall = worse(overall, Status::CAPPED); break; }
     c.swap(d);
     r.interpolation_indices.swap(interpolation);
     placed.swap(moved);
+    restore_ties(vertex_roles(c.size(), o.closed, r.interpolation_indices, placed), c);
   }
   r.status = overall;
   r.polygon = c;
-  r.curvatures = discrete_curvatures(f, c);
+  r.curvatures = problem_curvatures(p, c);
   return r;
 }
 

@@ -2,9 +2,8 @@
 //
 // The level optimiser of Gumhold's optimal curves (Sec. 2.3.2, replaced by Newton as issue 11
 // asks; doc/optimal_curves_solver.md, "Level solve"). Unknowns: one scalar per free vertex (its
-// offset along the vertex normal n_j, fixed during a step and recomputed after it), one per SLIDE
-// vertex (its offset along the constrained ray) and one per TIE (the two neighbours of a single
-// tangent/normal constraint, see constraints.h). Every unknown u_k moves its vertices as
+// offset along the vertex normal n_j, fixed during a step and recomputed after it) and one per TIE
+// (the two neighbours of a single tangent/normal constraint, see constraints.h). Every unknown u_k moves its vertices as
 // c_a += u_k v_a, so the reduced gradient is sum_a v_a . g_a and the reduced Hessian
 // sum_{a,b} v_a^T H_ab v_b (exact second derivative of u -> F(c + sum u_k v_k), a linear map).
 // Unknowns are numbered in vertex order. The reduced system of a closed curve stays CYCLIC even
@@ -52,6 +51,10 @@ constexpr double degenerate_edge_fraction = 1e-12;
 /// When no Armijo step decreases F any more, the level counts as converged if the predicted
 /// decrease is below this fraction of |F| (the rounding floor of F's evaluation at large n).
 constexpr double rounding_floor = 1e-8;
+/// Largest move of a vertex in one step, as a fraction of its shorter incident edge.
+constexpr double max_step_fraction = 0.5;
+/// A level ending on its iteration cap with its extent grown by this factor is DIVERGING.
+constexpr double runaway_growth = 4;
 /// Newton-Raphson steps of the CG line search (the paper: "a maximum of ten").
 constexpr int cg_line_search_steps = 10;
 
@@ -60,6 +63,7 @@ struct Level_settings {
   std::size_t max_iterations = 100;
   double tolerance = 1e-10;
   double max_extent = std::numeric_limits<double>::infinity();  // divergence cap
+  bool fixed_normals = true;  // lines of motion fixed for the whole level (see solve_level)
 };
 
 struct Level_outcome {
@@ -67,6 +71,89 @@ struct Level_outcome {
   double energy = 0, gradient_norm = 0;
   Status status = Status::CAPPED;
 };
+
+/// Distance of the ghost vertex behind a clamped open end, as a fraction of L0 (see Level_problem):
+/// small enough that its half-edge adds a negligible 1e-6 L0 / l_end to the end's arc element, large
+/// enough that the ghost edge direction is exact to ~1e-10 for data of extent ~ L0.
+constexpr double ghost_fraction = 1e-6;
+
+/// The functional of one level, with the clamped open ends of constraints.h: a tangent t at an
+/// open end p_0 adds a FIXED ghost vertex p_0 - eps t (eps = ghost_fraction L0) before it (after
+/// it at the last end), its edge weighted 0 and the ghost itself without curvature. The end vertex
+/// then carries the curvature term phi_0 / (s_0 cos(phi_0/2.1)) with phi_0 the angle between t and
+/// the first edge and s_0 = (eps + l_0)/2 ~ l_0/2: a consistent discretisation of kappa at a clamped
+/// end (for a smooth curve phi_0 = kappa l_0/2 + O(l_0^2)), where fixing the end's neighbour on
+/// the tangent (as for corners) would force kappa = 0 on the first edge and cost O(h) in F. The
+/// derivative terms whose stencil reaches the ghost are absent (it has no curvature), so the tiny
+/// ghost edge never enters a difference quotient.
+struct Level_problem {
+  Functional f;  // on the level polygon (n vertices)
+  bool ghost_front = false, ghost_back = false;
+  Vec2 front_tangent{{1, 0}}, back_tangent{{1, 0}};
+  Functional augmented;  // f on the polygon with the ghosts (prepare())
+
+  bool ghosts() const { return ghost_front || ghost_back; }
+  /// Builds `augmented` from f (call after setting f's weights).
+  void prepare() {
+    if (!ghosts()) return;
+    augmented = f;
+    const double zero = 0;
+    if (ghost_front) {
+      augmented.length_weight.insert(augmented.length_weight.begin(), zero);
+      augmented.curvature_weight.insert(augmented.curvature_weight.begin(), zero);
+      if (!augmented.zero_curvature.empty()) augmented.zero_curvature.insert(augmented.zero_curvature.begin(), 0);
+    }
+    if (ghost_back) {
+      augmented.length_weight.push_back(zero);
+      augmented.curvature_weight.push_back(zero);
+      if (!augmented.zero_curvature.empty()) augmented.zero_curvature.push_back(0);
+    }
+  }
+  std::size_t offset() const { return ghost_front ? 1 : 0; }
+  std::vector<Vec2> extend(const std::vector<Vec2>& c) const {
+    if (!ghosts()) return c;
+    const double e = ghost_fraction * f.reference_length;
+    std::vector<Vec2> d;
+    d.reserve(c.size() + 2);
+    if (ghost_front) d.push_back({{c.front()[0] - e * front_tangent[0], c.front()[1] - e * front_tangent[1]}});
+    d.insert(d.end(), c.begin(), c.end());
+    if (ghost_back) d.push_back({{c.back()[0] + e * back_tangent[0], c.back()[1] + e * back_tangent[1]}});
+    return d;
+  }
+  std::vector<double> strip(const std::vector<double>& v, std::size_t n) const {
+    return std::vector<double>(v.begin() + offset(), v.begin() + offset() + n);
+  }
+};
+
+inline double problem_energy(const Level_problem& p, const std::vector<Vec2>& c) {
+  return p.ghosts() ? energy(p.augmented, p.extend(c)) : energy(p.f, c);
+}
+inline double problem_energy_and_gradient(const Level_problem& p, const std::vector<Vec2>& c, std::vector<Vec2>& g) {
+  if (!p.ghosts()) return energy_and_gradient(p.f, c, g);
+  std::vector<Vec2> ga;
+  const double e = energy_and_gradient(p.augmented, p.extend(c), ga);
+  g.assign(ga.begin() + p.offset(), ga.begin() + p.offset() + c.size());
+  return e;
+}
+inline double problem_energy_gradient_hessian(const Level_problem& p, const std::vector<Vec2>& c, std::vector<Vec2>& g,
+                                              Block_banded_hessian& h) {
+  if (!p.ghosts()) return energy_gradient_hessian(p.f, c, g, h);
+  std::vector<Vec2> ga;
+  Block_banded_hessian ha;
+  const double e = energy_gradient_hessian(p.augmented, p.extend(c), ga, ha);
+  const std::size_t n = c.size(), o = p.offset(), w = ha.half_bandwidth();
+  g.assign(ga.begin() + o, ga.begin() + o + n);
+  h.reset(n, w, false);  // ghosts only on open curves
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i; j < n && j <= i + w; ++j)
+      for (int r = 0; r < 2; ++r)
+        for (int q = 0; q < 2; ++q) h.at(i, j, r, q) = ha.at(i + o, j + o, r, q);
+  return e;
+}
+/// The discrete curvature at every vertex of the level polygon (clamped ends: their kappa).
+inline std::vector<double> problem_curvatures(const Level_problem& p, const std::vector<Vec2>& c) {
+  return p.ghosts() ? p.strip(discrete_curvatures(p.augmented, p.extend(c)), c.size()) : discrete_curvatures(p.f, c);
+}
 
 inline double polygon_extent(const std::vector<Vec2>& c) {
   double x0 = c[0][0], x1 = x0, y0 = c[0][1], y1 = y0;
@@ -92,12 +179,12 @@ struct Reduced_unknowns {
   bool cyclic = false;
 };
 
-inline Reduced_unknowns reduced_unknowns(const std::vector<Vec2>& c, bool closed, const Vertex_roles& roles) {
+inline Reduced_unknowns reduced_unknowns(const std::vector<Vec2>& c, const std::vector<Vec2>& normals,
+                                         const Vertex_roles& roles, bool closed) {
   const std::size_t n = c.size();
   Reduced_unknowns u;
   u.var.assign(n, -1);
   u.dir.assign(n, Vec2{{0, 0}});
-  const std::vector<Vec2> normals = vertex_normals(c, closed);
   std::vector<long> tie_of(n, -1);  // tie index of a tied neighbour
   for (std::size_t t = 0; t < roles.ties.size(); ++t) {
     const std::size_t j = roles.ties[t].centre;
@@ -124,7 +211,7 @@ inline Reduced_unknowns reduced_unknowns(const std::vector<Vec2>& c, bool closed
       u.var[v] = k;
     } else {
       u.var[v] = static_cast<long>(u.count++);
-      u.dir[v] = roles.role[v] == Vertex_role::SLIDE ? roles.slide[v] : normals[v];
+      u.dir[v] = normals[v];
     }
   }
   return u;
@@ -212,9 +299,9 @@ inline std::vector<Vec2> displaced(const std::vector<Vec2>& c, const Reduced_unk
 }
 
 /// F at c, +infinity where the functional rejects the polygon (coincident vertices after a step).
-inline double energy_or_infinity(const Functional& f, const std::vector<Vec2>& c) {
+inline double energy_or_infinity(const Level_problem& p, const std::vector<Vec2>& c) {
   try {
-    const double e = energy(f, c);
+    const double e = problem_energy(p, c);
     return std::isfinite(e) ? e : std::numeric_limits<double>::infinity();
   } catch (const Error&) {
     return std::numeric_limits<double>::infinity();
@@ -261,25 +348,51 @@ inline double reduced_form(const Banded_symmetric& rh, const std::vector<double>
   return s;
 }
 
+/// The largest t <= 1 (or more) with |t x_k v_a| <= max_step_fraction * min(l_{a-1}, l_a) at
+/// every moved vertex a.
+inline double step_cap(const std::vector<Vec2>& c, bool closed, const Reduced_unknowns& u, const std::vector<double>& x) {
+  const std::size_t n = c.size();
+  double cap = std::numeric_limits<double>::infinity();
+  for (std::size_t a = 0; a < n; ++a) {
+    if (u.var[a] < 0) continue;
+    double l = std::numeric_limits<double>::infinity();
+    if (closed || a > 0) l = std::min(l, vec::norm(vec::sub(c[a], c[(a + n - 1) % n])));
+    if (closed || a + 1 < n) l = std::min(l, vec::norm(vec::sub(c[(a + 1) % n], c[a])));
+    const double move = std::abs(x[u.var[a]]) * vec::norm(u.dir[a]);
+    if (move > 0) cap = std::min(cap, max_step_fraction * l / move);
+  }
+  return cap;
+}
+
 /// Minimises F over the free unknowns of `c` (in place).
-inline Level_outcome solve_level(const Functional& f, const Vertex_roles& roles, const Level_settings& s,
+inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& roles, const Level_settings& s,
                                  std::vector<Vec2>& c) {
+  const Functional& f = p.f;
   Level_outcome out;
   std::vector<Vec2> g;
   Block_banded_hessian h;
   Banded_symmetric rh;
   std::vector<double> rg, x, previous_g, direction;
+  std::vector<Vec2> normals;
   const double inf = std::numeric_limits<double>::infinity();
+  const double start_extent = polygon_extent(c);
   for (std::size_t it = 0;; ++it) {
-    const double e = energy_gradient_hessian(f, c, g, h);
+    const double e = problem_energy_gradient_hessian(p, c, g, h);
     out.energy = e;
-    const Reduced_unknowns u = reduced_unknowns(c, f.closed, roles);
+    // The lines of motion: normals of the level's start polygon (s.fixed_normals) or of the
+    // current polygon (recomputed after every step, the paper's choice).
+    if (it == 0 || !s.fixed_normals) normals = vertex_normals(c, f.closed);
+    const Reduced_unknowns u = reduced_unknowns(c, normals, roles, f.closed);
     reduced_system(g, h, f.closed, u, rg, rh);
     out.gradient_norm = std::sqrt(dot_product(rg, rg));
     out.iterations = it;
     const double scale = std::max(std::abs(e), std::numeric_limits<double>::min());
     if (u.count == 0 || out.gradient_norm == 0) { out.status = Status::CONVERGED; return out; }
-    if (it >= s.max_iterations) { out.status = Status::CAPPED; return out; }
+    if (it >= s.max_iterations) {
+      // A level that ends on the cap with its extent grown many times is running away.
+      out.status = polygon_extent(c) > runaway_growth * start_extent ? Status::DIVERGING : Status::CAPPED;
+      return out;
+    }
     double decrement;  // predicted decrease of a full step
     if (!s.conjugate_gradient) {
       x.assign(rg.size(), 0);
@@ -311,7 +424,7 @@ inline Level_outcome solve_level(const Functional& f, const Vertex_roles& roles,
         std::vector<Vec2> gt;
         double slope;
         try {
-          energy_and_gradient(f, trial, gt);
+          problem_energy_and_gradient(p, trial, gt);
           slope = 0;
           for (std::size_t a = 0; a < c.size(); ++a)
             if (u.var[a] >= 0) slope += direction[u.var[a]] * vec::dot(u.dir[a], gt[a]);
@@ -327,13 +440,17 @@ inline Level_outcome solve_level(const Functional& f, const Vertex_roles& roles,
       x = direction;
       decrement = -dot_product(rg, x);
     }
-    // Armijo backtracking.
-    double t = 1, et = inf;
+    // Armijo backtracking from the longest step that moves no vertex by more than
+    // max_step_fraction of its shorter incident edge (a trust region in the geometry: a full
+    // Newton step far from the minimiser must not throw vertices across the curve, which makes
+    // loops and cusps that the level then "converges" in; near the minimiser steps are tiny and
+    // the cap is inactive, so the quadratic convergence is kept).
+    double t = std::min(1.0, step_cap(c, f.closed, u, x)), et = inf;
     std::vector<Vec2> trial;
     int b = 0;
     for (; b <= max_backtracks; ++b, t *= 0.5) {
       trial = displaced(c, u, x, t, roles);
-      et = energy_or_infinity(f, trial);
+      et = energy_or_infinity(p, trial);
       if (et <= e - armijo_c1 * t * decrement) break;
     }
     if (b > max_backtracks) {
