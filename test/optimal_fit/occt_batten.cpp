@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace {
@@ -90,6 +91,10 @@ TEST(Occt_batten, FreeLengthElasticaMatchesOptimalCurve) {
     for (const auto& q : occt) h_occt = std::max(h_occt, polyline_distance(q[0], q[1], polygon));
     for (const auto& v : polygon) h_polygon = std::max(h_polygon, polyline_distance(v[0], v[1], occt));
     const double extent = 1; // the chord; the arch is lower than it is wide
+    ::testing::Test::RecordProperty("hausdorff_" + std::to_string(static_cast<int>(100 * a[0])) + "_" +
+                                        std::to_string(static_cast<int>(100 * a[1])),
+                                    std::to_string(std::max(h_occt, h_polygon)) + " with " +
+                                        std::to_string(polygon.size()) + " vertices");
     EXPECT_LE(std::max(h_occt, h_polygon), 2 * extent / rho)
         << "angles " << a[0] << ", " << a[1] << ": H(OCCT -> polygon) = " << h_occt
         << ", H(polygon -> OCCT) = " << h_polygon << ", " << polygon.size() << " vertices";

@@ -126,8 +126,9 @@ void add_fig3(fair_curves::Gallery& gallery) {
   c.title = "Fig. 3: the curvature gradient of the three discretisations against phi";
   c.caption = "d kappa_j / dx at the symmetric vertex of Fig. 3a (edges of length 1, turning angle phi from 0 to 0.98 pi; "
               "x along the bisector), in the true-curvature convention kappa = f(phi)/s: the circumcircle and the "
-              "turning-angle curvature lose their restoring gradient (it changes sign) as the corner sharpens, the "
-              "regularised curvature phi/(s cos(phi/2.1)) of eq. 9 keeps it negative. Drawn as the graphs "
+              "turning-angle curvature lose their restoring gradient (it changes sign) near phi = pi/2, the "
+              "regularised curvature phi/(s cos(phi/2.1)) of eq. 9 keeps it negative much longer (with 2 instead of "
+              "2.1 it would be the constant -2; 2.1 keeps kappa finite at phi = pi). Drawn as the graphs "
               "(phi, gradient/4), one after the other; the plot below is their curvature, of no meaning here.";
   c.control_polygons = false;
   c.comb = false;
