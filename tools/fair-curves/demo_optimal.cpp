@@ -31,12 +31,6 @@ std::vector<Point_2> heart() {
   return {Point_2(0, -2), Point_2(1.5, 0.5), Point_2(1, 1.5), Point_2(0, 1), Point_2(-1, 1.5), Point_2(-1.5, 0.5)};
 }
 
-std::vector<fair::io::Xy> as_xy(const std::vector<Point_2>& p) {
-  std::vector<fair::io::Xy> out;
-  for (const Point_2& q : p) out.push_back(fair::io::Xy{q.x(), q.y()});
-  return out;
-}
-
 fair::Point_constraint constraint(std::size_t i, fair::Point_constraint_kind kind, double x, double y, double ox = 1,
                                   double oy = 0) {
   fair::Point_constraint c;
@@ -68,7 +62,7 @@ void add_solve(fair_curves::Gallery& gallery, const std::vector<Point_2>& points
   fair_curves::Curve_case c;
   c.title = title;
   c.caption = caption;
-  c.input_points = as_xy(show_vertices ? curve.polygon() : points);
+  c.input_points = fair::io::to_xy(show_vertices ? curve.polygon() : points);
   c.control_polygons = false;
   c.samples_per_piece = 8;
   solve_figures(curve, fit.max_distance, c);
@@ -84,7 +78,7 @@ void add_family(fair_curves::Gallery& gallery, const std::vector<Point_2>& point
   fair_curves::Curve_case c;
   c.title = title;
   c.caption = caption;
-  c.input_points = as_xy(points);
+  c.input_points = fair::io::to_xy(points);
   c.control_polygons = false;
   c.comb = false;
   c.samples_per_piece = 8;
