@@ -331,6 +331,31 @@ TEST(OptimalFunctional, GradientMatchesPaperFormula) {
 
 // --- Hessian ---------------------------------------------------------------------------------
 
+/// Differences of the exact gradient when coordinate r of vertex i moves by +-step and +-2 step:
+/// h1 = g(+step) - g(-step), h2 = g(+2 step) - g(-2 step), and the five-point derivative (error
+/// O(step^4); exponents like 1.5 make the third derivative large).
+struct Gradient_differences {
+  static constexpr double step = 1e-5;
+  std::vector<Vec2> h1, h2;
+  Gradient_differences(const Functional& f, const std::vector<Vec2>& c, std::size_t i, int r) {
+    std::vector<Vec2> gp, gm, gp2, gm2;
+    for (int m = 1; m <= 2; ++m) {
+      std::vector<Vec2> p = c, q = c;
+      p[i][r] += m * step;
+      q[i][r] -= m * step;
+      energy_and_gradient(f, p, m == 1 ? gp : gp2);
+      energy_and_gradient(f, q, m == 1 ? gm : gm2);
+    }
+    h1 = h2 = gp;
+    for (std::size_t j = 0; j < c.size(); ++j)
+      for (int s = 0; s < 2; ++s) {
+        h1[j][s] = gp[j][s] - gm[j][s];
+        h2[j][s] = gp2[j][s] - gm2[j][s];
+      }
+  }
+  double derivative(std::size_t j, int s) const { return (8 * h1[j][s] - h2[j][s]) / (12 * step); }
+};
+
 // The exact Hessian against central differences of the exact gradient; entries outside the band of
 // half_bandwidth() are exactly zero (the gradient at a vertex farther than w does not change at all).
 TEST(OptimalFunctional, HessianMatchesDifferencesOfGradientAndBand) {
@@ -361,30 +386,44 @@ TEST(OptimalFunctional, HessianMatchesDifferencesOfGradientAndBand) {
                 }
         for (std::size_t i = 0; i < n; ++i)
           for (int r = 0; r < 2; ++r) {
-            // Five-point differences (error O(step^4)): the exponent 1.5 makes the third derivative large.
-            const double step = 1e-5;
-            std::vector<Vec2> p = c, m = c, p2 = c, m2 = c, gp, gm, gp2, gm2;
-            p[i][r] += step;
-            m[i][r] -= step;
-            p2[i][r] += 2 * step;
-            m2[i][r] -= 2 * step;
-            energy_and_gradient(f, p, gp);
-            energy_and_gradient(f, m, gm);
-            energy_and_gradient(f, p2, gp2);
-            energy_and_gradient(f, m2, gm2);
+            const Gradient_differences d(f, c, i, r);
             for (std::size_t j = 0; j < n; ++j)
               for (int s = 0; s < 2; ++s) {
-                const double fd = (8 * (gp[j][s] - gm[j][s]) - (gp2[j][s] - gm2[j][s])) / (12 * step);
                 if (h.in_band(i, j)) {
-                  EXPECT_TRUE(near_rel(h.at(i, j, r, s), fd, 1e-6, scale))
+                  EXPECT_TRUE(near_rel(h.at(i, j, r, s), d.derivative(j, s), 1e-6, scale))
                       << "closed " << closed << " k " << k << " alpha " << alpha << " (" << i << "," << j << ")";
                 } else {
-                  EXPECT_EQ(gp[j][s] - gm[j][s], 0.0) << "coupling beyond the band: " << i << ", " << j;
-                  EXPECT_EQ(gp2[j][s] - gm2[j][s], 0.0) << "coupling beyond the band: " << i << ", " << j;
+                  EXPECT_EQ(d.h1[j][s], 0.0) << "coupling beyond the band: " << i << ", " << j;
+                  EXPECT_EQ(d.h2[j][s], 0.0) << "coupling beyond the band: " << i << ", " << j;
                 }
               }
           }
       }
+}
+
+// Closed polygons shorter than the stencils (n <= 2w + 1: the window wraps onto itself, the Hessian is
+// stored dense): the exact Hessian still matches differences of the gradient.
+TEST(OptimalFunctional, HessianOfTinyClosedPolygons) {
+  std::mt19937 rng(31);
+  for (std::size_t n : {3u, 4u, 5u, 7u, 13u}) {
+    const std::vector<Vec2> c = random_polygon(rng, n, true);
+    const Functional f = make_functional(c, true, -1, 2.0);
+    std::vector<Vec2> g;
+    Block_banded_hessian h;
+    energy_gradient_hessian(f, c, g, h);
+    double scale = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      for (int r = 0; r < 2; ++r) scale = std::max(scale, std::fabs(h.at(i, i, r, r)));
+    for (std::size_t i = 0; i < n; ++i)
+      for (int r = 0; r < 2; ++r) {
+        const Gradient_differences d(f, c, i, r);
+        for (std::size_t j = 0; j < n; ++j)
+          for (int s = 0; s < 2; ++s) {
+            ASSERT_TRUE(h.in_band(i, j));  // n <= 13 = 2w + 1: every pair
+            EXPECT_TRUE(near_rel(h.at(i, j, r, s), d.derivative(j, s), 1e-6, scale)) << "n " << n << " (" << i << "," << j << ")";
+          }
+      }
+  }
 }
 
 // A collinear polygon with exponents < 2: kappa = 0 everywhere, |x|^a at 0 gives a zero gradient and
@@ -575,10 +614,99 @@ TEST(OptimalBanded, OneEntryPerPairAcrossTheWrap) {
     EXPECT_TRUE(a.in_band(0, n - 1));
     EXPECT_TRUE(a.in_band(n - 2, 0));
   }
+  // A large cyclic band is not stored dense: far pairs are outside it.
+  Banded_symmetric big;
+  big.reset(1000, 3, true);
+  EXPECT_TRUE(big.in_band(0, 997));
+  EXPECT_FALSE(big.in_band(0, 500));
+  EXPECT_THROW(big.at(0, 500), fair::Internal_error);
   Banded_symmetric open;
   open.reset(10, 2, false);
   EXPECT_FALSE(open.in_band(0, 9));
   EXPECT_THROW(open.at(0, 9), fair::Internal_error);
+}
+
+// --- Conditioning (issue 11, "What is known") ------------------------------------------------------
+
+/// y = A x over the band only.
+void band_multiply(const Banded_symmetric& a, const std::vector<double>& x, std::vector<double>& y) {
+  const std::size_t n = a.size(), w = a.half_bandwidth();
+  y.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t d = 0; d <= std::min(w, n - 1); ++d) {
+      const std::size_t j = a.cyclic() ? (i + d) % n : i + d;
+      if (j >= n || !a.in_band(i, j)) continue;
+      y[i] += a.at(i, j) * x[j];
+      if (j != i) y[j] += a.at(i, j) * x[i];
+    }
+}
+
+/// x <- apply(x / |x|) repeated; returns the last Rayleigh quotient x.apply(x) of a unit x (power
+/// iteration for apply = A, inverse iteration for apply = A^-1).
+template <class Apply>
+double rayleigh_iteration(std::vector<double> x, int iterations, Apply apply) {
+  double quotient = 0;
+  for (int it = 0; it < iterations; ++it) {
+    double norm = 0;
+    for (double v : x) norm += v * v;
+    norm = std::sqrt(norm);
+    for (double& v : x) v /= norm;
+    const std::vector<double> y = apply(x);
+    quotient = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) quotient += x[i] * y[i];
+    x = y;
+  }
+  return quotient;
+}
+
+/// Condition number of the reduced Hessian on the regular n-gon of radius 1 with 8 equally spaced fixed
+/// vertices, F = sum l_j + beta_k |kappa^(k) L0^(k+1)|^2 (k = 0: beta_0 L0^2 = 1, so that the unit
+/// circle is the continuous minimiser; k = 1: beta_1 = 1): the largest eigenvalue by power iteration
+/// (Rayleigh quotient), the smallest by inverse iteration with the banded Cholesky.
+double reduced_condition_number(std::size_t n, int k) {
+  const std::vector<Vec2> c = regular_polygon(n, 1.0);
+  Functional f;
+  f.closed = true;
+  f.reference_length = 2 * pi;
+  f.length_weight.assign(n, 1.0);
+  f.curvature_weight.assign(n, k == 0 ? 1 / (4 * pi * pi) : 0.0);
+  if (k > 0) f.derivative_weight[k] = 1.0;
+  std::vector<Vec2> g;
+  Block_banded_hessian h;
+  energy_gradient_hessian(f, c, g, h);
+  std::vector<unsigned char> free(n, 1);
+  for (std::size_t q = 0; q < 8; ++q) free[q * n / 8] = 0;
+  std::vector<double> rg;
+  Banded_symmetric r;
+  normal_offset_system(g, h, vertex_normals(c, true), free, rg, r);
+  const std::size_t m = r.size();
+  std::vector<double> x(m), z(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    x[i] = std::sin(0.37 * static_cast<double>(i)) + 1.1;
+    z[i] = std::cos(0.11 * static_cast<double>(i)) + 1.2;
+  }
+  const double largest = rayleigh_iteration(x, 400, [&](const std::vector<double>& v) {
+    std::vector<double> y;
+    band_multiply(r, v, y);
+    return y;
+  });
+  const double smallest = 1 / rayleigh_iteration(z, 40, [&](const std::vector<double>& v) {
+    std::vector<double> w = v;
+    EXPECT_TRUE(solve_banded_positive_definite(r, w)) << "n " << n << " k " << k;
+    return w;
+  });
+  return largest / smallest;
+}
+
+// The measured law (doc/optimal_curves.md, "Conditioning"): cond ~ 4.6e-5 n^4 for the kappa term and
+// ~ 2.9e-7 n^6 for the kappa' term in this setting (largest eigenvalue ~ n^(2k+3), smallest ~ 1/n):
+// the growth exponent 2k + 4, asserted between n = 100 and n = 400.
+TEST(OptimalConditioning, ReducedHessianGrowsLikeNToThe2kPlus4) {
+  for (int k : {0, 1}) {
+    const double c100 = reduced_condition_number(100, k), c400 = reduced_condition_number(400, k);
+    const double exponent = std::log(c400 / c100) / std::log(4.0);
+    EXPECT_NEAR(exponent, 2 * k + 4, 0.1) << "k " << k << ": cond(100) " << c100 << ", cond(400) " << c400;
+  }
 }
 
 // --- Errors ------------------------------------------------------------------------------------
@@ -626,6 +754,14 @@ TEST(OptimalFunctional, TypedErrorsNameTheOffendingIndex) {
   h = f;
   h.curvature_weight.pop_back();
   EXPECT_THROW(energy(h, c), fair::Precondition_error);
+  // Finite but overflowing: an edge of 1e-200 makes (kappa' L0^2)^2 ~ 1e400.
+  bad = c;
+  bad[2] = Vec2{{0, 0.3}};
+  bad[3] = Vec2{{1e-200, 0.3}};
+  EXPECT_THROW(energy(f, bad), fair::Invalid_input_error);
+  EXPECT_NE(message_of(f, bad).find("shortest edge 2"), std::string::npos);
+  Block_banded_hessian hb;
+  EXPECT_THROW(energy_gradient_hessian(f, bad, g, hb), fair::Invalid_input_error);
   h = f;
   h.closed = true;  // length_weight has n - 1 entries, a closed polygon needs n
   EXPECT_THROW(energy(h, c), fair::Precondition_error);

@@ -134,15 +134,14 @@ namespace banded_detail {
 /// The folding order 0, n-1, 1, n-2, 2, ...: position -> original index. It turns a cyclic band of
 /// half-bandwidth w into a plain band of half-bandwidth <= 2w (doc/optimal_curves.md, "Banded solve":
 /// neighbours i, i+d at positions 2i, 2i+2d; across the wrap and across the fold |4m + 3 - 2d| <= 2d - 1).
-inline std::vector<std::size_t> folding_order(std::size_t n) {
-  std::vector<std::size_t> order;
+inline void folding_order(std::size_t n, std::vector<std::size_t>& order) {
+  order.clear();
   order.reserve(n);
   std::size_t lo = 0, hi = n;
   while (lo < hi) {
     order.push_back(lo++);
     if (lo < hi) order.push_back(--hi);
   }
-  return order;
 }
 
 }  // namespace banded_detail
@@ -157,8 +156,12 @@ inline bool solve_banded_positive_definite(const Banded_symmetric& a, std::vecto
   require(rhs_in_solution_out.size() == n, "solve_banded_positive_definite: right-hand side of size ",
           rhs_in_solution_out.size(), " for a matrix of size ", n);
   if (n == 0) return true;
-  std::vector<std::size_t> order;  // position -> original index
-  std::size_t wb;                  // half-bandwidth of the reordered plain band
+  // Workspace kept per thread across calls: a Newton iteration solves systems of the same size
+  // repeatedly, and fresh multi-megabyte buffers cost a page fault per 4 KiB each time (more than the
+  // factorisation itself at n = 1e5). It holds O(n w) doubles of the largest system solved so far.
+  thread_local std::vector<std::size_t> order, position;  // position -> original index, and back
+  thread_local std::vector<double> l, x;
+  std::size_t wb;  // half-bandwidth of the reordered plain band
   const std::size_t w = a.half_bandwidth();
   if (!a.cyclic()) {
     order.resize(n);
@@ -169,13 +172,13 @@ inline bool solve_banded_positive_definite(const Banded_symmetric& a, std::vecto
     for (std::size_t i = 0; i < n; ++i) order[i] = i;
     wb = n - 1;
   } else {
-    order = banded_detail::folding_order(n);
+    banded_detail::folding_order(n, order);
     wb = std::min(2 * w, n - 1);
   }
-  std::vector<std::size_t> position(n);
+  position.resize(n);
   for (std::size_t p = 0; p < n; ++p) position[order[p]] = p;
   // Lower band of the reordered matrix: L[p * (wb + 1) + (p - q)] = entry (p, q), q in [p - wb, p].
-  std::vector<double> l(n * (wb + 1), 0.0);
+  l.assign(n * (wb + 1), 0.0);
   const std::size_t reach = a.cyclic() ? std::min(w, n - 1) : w;
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t d = 0; d <= reach; ++d) {
@@ -201,7 +204,7 @@ inline bool solve_banded_positive_definite(const Banded_symmetric& a, std::vecto
       }
     }
   }
-  std::vector<double> x(n);
+  x.resize(n);
   for (std::size_t p = 0; p < n; ++p) x[p] = rhs_in_solution_out[order[p]];
   for (std::size_t p = 0; p < n; ++p) {  // L y = b
     const std::size_t first = p >= wb ? p - wb : 0;

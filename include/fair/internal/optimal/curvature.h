@@ -11,7 +11,7 @@
 //   CIRCUMCIRCLE  kappa = 2 sin(phi) / |c - a|
 //                       = 2 Y / (l_0 l_1 |c - a|)         (kappa° of eq. 6 times 2: 1/circumradius)
 // kappa > 0 for a left turn (counter-clockwise). Written once, templated on the scalar (double or
-// Dual<N>, dual.h).
+// Dual<N>, dual.h), as a function of the two edge vectors.
 
 #ifndef FAIR_INTERNAL_OPTIMAL_CURVATURE_H
 #define FAIR_INTERNAL_OPTIMAL_CURVATURE_H
@@ -34,18 +34,17 @@ enum class Discretisation {
 /// [-pi, pi] (the paper's 21.1 is f/2 at s = 1).
 constexpr double regularisation_divisor = 2.1;
 
-/// kappa_j of the three vertices (ax, ay), (bx, by), (cx, cy); the caller guarantees a != b != c.
+/// kappa_j from the edge vectors u = Delta_{j-1} = c_j - c_{j-1} and v = Delta_j = c_{j+1} - c_j (it
+/// depends on the vertices only through them); the caller guarantees u != 0 != v.
 template <class T>
-T local_curvature(Discretisation d, const T& ax, const T& ay, const T& bx, const T& by, const T& cx,
-                  const T& cy) {
+T local_curvature(Discretisation d, const T& ux, const T& uy, const T& vx, const T& vy) {
   using std::atan2;
   using std::cos;
   using std::sqrt;
-  const T ux = bx - ax, uy = by - ay, vx = cx - bx, vy = cy - by;
   const T l0 = sqrt(ux * ux + uy * uy), l1 = sqrt(vx * vx + vy * vy);
   const T y = ux * vy - uy * vx;
   if (d == Discretisation::CIRCUMCIRCLE) {
-    const T wx = cx - ax, wy = cy - ay;
+    const T wx = ux + vx, wy = uy + vy;
     return 2.0 * y / (l0 * l1 * sqrt(wx * wx + wy * wy));
   }
   const T x = ux * vx + uy * vy;

@@ -1,10 +1,11 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// A fixed-size second-order forward-mode dual number: a value, its gradient and its (symmetric)
-// Hessian with respect to N local variables. The local terms of the optimal-curve functional
+// A fixed-size forward-mode dual number: a value, its gradient and (if S, second order) its
+// symmetric Hessian with respect to N local variables. The local terms of the optimal-curve functional
 // (functional.h) are written once, templated on their scalar, and evaluated with double (energy),
-// or with Dual<N> (exact gradient and Hessian, no truncation error). Only the operations those
-// terms use are provided. Every operation propagates the exact first and second derivatives:
+// or with Dual<N> (exact gradient and Hessian, no truncation error) or Dual<N, false> (exact gradient
+// only). Only the operations those terms use are provided. Every operation propagates the exact
+// first and second derivatives:
 //   (a b)'' = a'' b + a b'' + a' b'^T + b' a'^T,   f(a)'' = f'(a) a'' + f''(a) a' a'^T.
 
 #ifndef FAIR_INTERNAL_OPTIMAL_DUAL_H
@@ -16,94 +17,109 @@ namespace fair {
 namespace internal {
 namespace optimal {
 
-template <int N>
-struct Dual {
-  double v = 0;
-  double g[N] = {};
-  double h[N * N] = {};  // row-major, symmetric (exactly: every update is symmetric in i, j)
+/// Tag of the constructor that leaves the derivatives uninitialised, for results whose every entry is
+/// written next (zeroing ~100 doubles per operation showed in profiles).
+struct No_init {};
 
-  Dual() = default;
-  Dual(double value) : v(value) {}  // a constant (implicit: mixes with double in the templated terms)
+template <int N, bool S = true>
+struct Dual {
+  static constexpr bool second = S;
+  double v;
+  double g[N];
+  double h[S ? N * N : 1];  // row-major, symmetric (exactly: every update is symmetric in i, j)
+
+  Dual() : v(0) { zero(); }
+  Dual(double value) : v(value) { zero(); }  // a constant (implicit: mixes with double in the templated terms)
+  Dual(No_init, double value) : v(value) {}
   /// The independent variable number i (0-based) with the given value.
   static Dual variable(int i, double value) {
     Dual d(value);
     d.g[i] = 1;
     return d;
   }
+
+private:
+  void zero() {
+    for (int i = 0; i < N; ++i) g[i] = 0;
+    for (double& x : h) x = 0;
+  }
 };
 
 /// The result of a unary function f at a: f(a), f'(a) a', f'(a) a'' + f''(a) a' a'^T.
-template <int N>
-inline Dual<N> chain(const Dual<N>& a, double f, double df, double ddf) {
-  Dual<N> r(f);
+template <int N, bool S>
+inline Dual<N, S> chain(const Dual<N, S>& a, double f, double df, double ddf) {
+  Dual<N, S> r(No_init(), f);
   for (int i = 0; i < N; ++i) r.g[i] = df * a.g[i];
+  if constexpr (S)
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j) r.h[i * N + j] = df * a.h[i * N + j] + ddf * (a.g[i] * a.g[j]);
   return r;
 }
 
-template <int N> inline Dual<N> operator+(const Dual<N>& a, const Dual<N>& b) {
-  Dual<N> r(a.v + b.v);
+template <int N, bool S> inline Dual<N, S> operator+(const Dual<N, S>& a, const Dual<N, S>& b) {
+  Dual<N, S> r(No_init(), a.v + b.v);
   for (int i = 0; i < N; ++i) r.g[i] = a.g[i] + b.g[i];
-  for (int i = 0; i < N * N; ++i) r.h[i] = a.h[i] + b.h[i];
+  if constexpr (S) for (int i = 0; i < N * N; ++i) r.h[i] = a.h[i] + b.h[i];
   return r;
 }
-template <int N> inline Dual<N> operator-(const Dual<N>& a, const Dual<N>& b) {
-  Dual<N> r(a.v - b.v);
+template <int N, bool S> inline Dual<N, S> operator-(const Dual<N, S>& a, const Dual<N, S>& b) {
+  Dual<N, S> r(No_init(), a.v - b.v);
   for (int i = 0; i < N; ++i) r.g[i] = a.g[i] - b.g[i];
-  for (int i = 0; i < N * N; ++i) r.h[i] = a.h[i] - b.h[i];
+  if constexpr (S) for (int i = 0; i < N * N; ++i) r.h[i] = a.h[i] - b.h[i];
   return r;
 }
-template <int N> inline Dual<N> operator-(const Dual<N>& a) { return chain(a, -a.v, -1.0, 0.0); }
-template <int N> inline Dual<N> operator*(const Dual<N>& a, const Dual<N>& b) {
-  Dual<N> r(a.v * b.v);
+template <int N, bool S> inline Dual<N, S> operator-(const Dual<N, S>& a) { return chain(a, -a.v, -1.0, 0.0); }
+template <int N, bool S> inline Dual<N, S> operator*(const Dual<N, S>& a, const Dual<N, S>& b) {
+  Dual<N, S> r(No_init(), a.v * b.v);
   for (int i = 0; i < N; ++i) r.g[i] = a.g[i] * b.v + a.v * b.g[i];
+  if constexpr (S)
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j)
       r.h[i * N + j] = a.h[i * N + j] * b.v + a.v * b.h[i * N + j] + a.g[i] * b.g[j] + b.g[i] * a.g[j];
   return r;
 }
-template <int N> inline Dual<N> operator*(double s, const Dual<N>& a) {
-  Dual<N> r(s * a.v);
+template <int N, bool S> inline Dual<N, S> operator*(double s, const Dual<N, S>& a) {
+  Dual<N, S> r(No_init(), s * a.v);
   for (int i = 0; i < N; ++i) r.g[i] = s * a.g[i];
-  for (int i = 0; i < N * N; ++i) r.h[i] = s * a.h[i];
+  if constexpr (S) for (int i = 0; i < N * N; ++i) r.h[i] = s * a.h[i];
   return r;
 }
-template <int N> inline Dual<N> operator*(const Dual<N>& a, double s) { return s * a; }
-template <int N> inline Dual<N> operator+(const Dual<N>& a, double s) { Dual<N> r = a; r.v += s; return r; }
-template <int N> inline Dual<N> operator+(double s, const Dual<N>& a) { return a + s; }
-template <int N> inline Dual<N> operator-(const Dual<N>& a, double s) { Dual<N> r = a; r.v -= s; return r; }
-template <int N> inline Dual<N> operator-(double s, const Dual<N>& a) { return (-a) + s; }
+template <int N, bool S> inline Dual<N, S> operator*(const Dual<N, S>& a, double s) { return s * a; }
+template <int N, bool S> inline Dual<N, S> operator+(const Dual<N, S>& a, double s) { Dual<N, S> r = a; r.v += s; return r; }
+template <int N, bool S> inline Dual<N, S> operator+(double s, const Dual<N, S>& a) { return a + s; }
+template <int N, bool S> inline Dual<N, S> operator-(const Dual<N, S>& a, double s) { Dual<N, S> r = a; r.v -= s; return r; }
+template <int N, bool S> inline Dual<N, S> operator-(double s, const Dual<N, S>& a) { return (-a) + s; }
 /// 1/a: f' = -1/a^2, f'' = 2/a^3.
-template <int N> inline Dual<N> reciprocal(const Dual<N>& a) {
+template <int N, bool S> inline Dual<N, S> reciprocal(const Dual<N, S>& a) {
   const double r = 1 / a.v;
   return chain(a, r, -r * r, 2 * r * r * r);
 }
-template <int N> inline Dual<N> operator/(const Dual<N>& a, const Dual<N>& b) { return a * reciprocal(b); }
-template <int N> inline Dual<N> operator/(const Dual<N>& a, double s) { return (1 / s) * a; }
-template <int N> inline Dual<N> operator/(double s, const Dual<N>& a) { return s * reciprocal(a); }
+template <int N, bool S> inline Dual<N, S> operator/(const Dual<N, S>& a, const Dual<N, S>& b) { return a * reciprocal(b); }
+template <int N, bool S> inline Dual<N, S> operator/(const Dual<N, S>& a, double s) { return (1 / s) * a; }
+template <int N, bool S> inline Dual<N, S> operator/(double s, const Dual<N, S>& a) { return s * reciprocal(a); }
 
-template <int N> inline Dual<N> sqrt(const Dual<N>& a) {
+template <int N, bool S> inline Dual<N, S> sqrt(const Dual<N, S>& a) {
   const double r = std::sqrt(a.v);
   return chain(a, r, 0.5 / r, -0.25 / (r * a.v));
 }
-template <int N> inline Dual<N> sin(const Dual<N>& a) {
+template <int N, bool S> inline Dual<N, S> sin(const Dual<N, S>& a) {
   const double s = std::sin(a.v), c = std::cos(a.v);
   return chain(a, s, c, -s);
 }
-template <int N> inline Dual<N> cos(const Dual<N>& a) {
+template <int N, bool S> inline Dual<N, S> cos(const Dual<N, S>& a) {
   const double s = std::sin(a.v), c = std::cos(a.v);
   return chain(a, c, -s, -c);
 }
 /// atan2(y, x) for (x, y) != (0, 0): d = (x dy - y dx)/(x^2 + y^2), second order by the product rule
 /// of the dual arithmetic (u = x dy - y dx is not a dual, so it is spelled out on the derivatives).
-template <int N> inline Dual<N> atan2(const Dual<N>& y, const Dual<N>& x) {
+template <int N, bool S> inline Dual<N, S> atan2(const Dual<N, S>& y, const Dual<N, S>& x) {
   // phi(x, y): phi_x = -y/r2, phi_y = x/r2, phi_xx = 2xy/r2^2, phi_yy = -2xy/r2^2, phi_xy = (y^2-x^2)/r2^2.
   const double r2 = x.v * x.v + y.v * y.v, r4 = r2 * r2;
   const double px = -y.v / r2, py = x.v / r2;
   const double pxx = 2 * x.v * y.v / r4, pyy = -pxx, pxy = (y.v * y.v - x.v * x.v) / r4;
-  Dual<N> r(std::atan2(y.v, x.v));
+  Dual<N, S> r(No_init(), std::atan2(y.v, x.v));
   for (int i = 0; i < N; ++i) r.g[i] = px * x.g[i] + py * y.g[i];
+  if constexpr (S)
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j)
       r.h[i * N + j] = px * x.h[i * N + j] + py * y.h[i * N + j] + pxx * (x.g[i] * x.g[j]) +
@@ -118,7 +134,7 @@ inline double abs_pow(double a, double alpha) {
   if (alpha == 2) return a * a;
   return std::pow(std::fabs(a), alpha);
 }
-template <int N> inline Dual<N> abs_pow(const Dual<N>& a, double alpha) {
+template <int N, bool S> inline Dual<N, S> abs_pow(const Dual<N, S>& a, double alpha) {
   if (alpha == 2) return a * a;
   const double m = std::fabs(a.v);
   if (m == 0) return chain(a, 0.0, 0.0, 0.0);

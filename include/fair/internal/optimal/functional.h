@@ -83,79 +83,29 @@ constexpr int primitive_count(int k) {
 }
 constexpr int max_window = max_derivative_order + 3;  // vertices
 
-/// kappa^(k) at offset o (vertex o for even k, edge o for odd k) from kap[o + 2], len[o + 2]
-/// (the recursion of Sec. 2.2.3).
-template <class T>
-T derivative(int k, int o, const T* kap, const T* len) {
-  if (k == 0) return kap[o + 2];
-  if (k % 2 == 1) return (derivative(k - 1, o + 1, kap, len) - derivative(k - 1, o, kap, len)) / len[o + 2];
-  const T s = 0.5 * (len[o + 1] + len[o + 2]);
-  return (derivative(k - 1, o, kap, len) - derivative(k - 1, o - 1, kap, len)) / s;
-}
-
-/// beta |kappa^(k) L0^(k+1)|^alpha times l_j (odd k) or s_j (even k): one term of Sec. 2.2.3.
-/// kap[o + 2] and len[o + 2] must be set on the stencil of k.
+/// beta |kappa^(k) L0^(k+1)|^alpha times l_j (odd k) or s_j (even k): one term of Sec. 2.2.3, at site 0.
+/// kap[o + 2] and len[o + 2] must be set on the stencil of k. The recursion is evaluated level by level
+/// (level m on the offsets it needs, shrinking by one per level: k(k+1)/2 differences, not 2^k).
 template <class T>
 T term_value(int k, double beta, double alpha, double scale, const T* kap, const T* len) {
-  const T measure = k % 2 == 1 ? len[2] : 0.5 * (len[1] + len[2]);
-  return beta * abs_pow(derivative(k, 0, kap, len) * scale, alpha) * measure;
-}
-
-/// A primitive with its gradient and Hessian in its own coordinates (6 for kappa, 4 for l).
-struct Primitive {
-  double v = 0;
-  double g[6] = {};
-  double h[36] = {};
-};
-
-inline Primitive edge_length(const Vec2& a, const Vec2& b) {
-  // l = |b - a|, t = (b - a)/l: dl/da = -t, dl/db = t; d2l = [P -P; -P P] with P = (I - t t^T)/l.
-  Primitive p;
-  const double dx = b[0] - a[0], dy = b[1] - a[1];
-  p.v = std::sqrt(dx * dx + dy * dy);
-  const double t[2] = {dx / p.v, dy / p.v};
-  for (int r = 0; r < 2; ++r) {
-    p.g[r] = -t[r];
-    p.g[2 + r] = t[r];
-  }
-  for (int r = 0; r < 2; ++r)
-    for (int c = 0; c < 2; ++c) {
-      const double q = ((r == c ? 1.0 : 0.0) - t[r] * t[c]) / p.v;
-      p.h[r * 4 + c] = q;
-      p.h[(2 + r) * 4 + 2 + c] = q;
-      p.h[r * 4 + 2 + c] = -q;
-      p.h[(2 + r) * 4 + c] = -q;
+  int lo = stencils[k].klo, hi = stencils[k].khi;
+  T level[5];
+  for (int o = lo; o <= hi; ++o) level[o - lo] = kap[o + 2];
+  for (int m = 1; m <= k; ++m) {
+    if (m % 2 == 1) {  // on edge o: (D(o + 1) - D(o)) / l_o, o in [lo, hi - 1]
+      for (int o = lo; o < hi; ++o) level[o - lo] = (level[o + 1 - lo] - level[o - lo]) / len[o + 2];
+      --hi;
+    } else {  // at vertex o: (D(o) - D(o - 1)) / s_o, o in [lo + 1, hi]; stored shifted down by one
+      for (int o = lo + 1; o <= hi; ++o) level[o - 1 - lo] = (level[o - lo] - level[o - 1 - lo]) / (0.5 * (len[o + 1] + len[o + 2]));
+      ++lo;
     }
-  return p;
+  }
+  // lo == hi == 0 now (the stencil table is built so).
+  const T measure = k % 2 == 1 ? len[2] : 0.5 * (len[1] + len[2]);
+  return beta * abs_pow(level[0] * scale, alpha) * measure;
 }
 
-inline Primitive vertex_curvature(Discretisation d, const Vec2& a, const Vec2& b, const Vec2& c) {
-  typedef Dual<6> D;
-  const D k = local_curvature(d, D::variable(0, a[0]), D::variable(1, a[1]), D::variable(2, b[0]),
-                              D::variable(3, b[1]), D::variable(4, c[0]), D::variable(5, c[1]));
-  Primitive p;
-  p.v = k.v;
-  for (int i = 0; i < 6; ++i) p.g[i] = k.g[i];
-  for (int i = 0; i < 36; ++i) p.h[i] = k.h[i];
-  return p;
-}
-
-/// The polygon's primitives and which vertices are active.
-struct Geometry {
-  std::size_t n = 0, edges = 0;
-  bool closed = false;
-  std::vector<unsigned char> active;
-  std::vector<Primitive> kappa, length;  // kappa[j] only meaningful where active[j]
-  std::size_t vertex(long j) const {  // offset index -> vertex (mod n when closed)
-    const long m = static_cast<long>(n);
-    return static_cast<std::size_t>(closed ? ((j % m) + m) % m : j);
-  }
-  bool kappa_active(long j) const {
-    if (!closed && (j < 0 || j >= static_cast<long>(n))) return false;
-    return active[vertex(j)] != 0;
-  }
-};
-
+/// The checks of every entry point: counts, finiteness, distinct neighbours, weights and exponents.
 inline void check_input(const Functional& f, const std::vector<Vec2>& c, const char* method) {
   const std::size_t n = c.size();
   const std::size_t minimum = f.closed ? 3 : 2;
@@ -197,47 +147,130 @@ inline void check_input(const Functional& f, const std::vector<Vec2>& c, const c
   }
 }
 
-/// Active vertices and the primitives; `derivatives`: also their gradients and Hessians.
-inline Geometry geometry(const Functional& f, const std::vector<Vec2>& c, bool derivatives, const char* method) {
-  check_input(f, c, method);
-  Geometry g;
-  g.n = c.size();
-  g.closed = f.closed;
-  g.edges = f.closed ? g.n : g.n - 1;
-  g.active.assign(g.n, 1);
-  if (!f.closed) g.active[0] = g.active[g.n - 1] = 0;
-  for (std::size_t i = 0; i < f.zero_curvature.size(); ++i)
-    if (f.zero_curvature[i]) g.active[i] = 0;
-  g.length.resize(g.edges);
-  for (std::size_t e = 0; e < g.edges; ++e) {
-    if (derivatives) {
-      g.length[e] = edge_length(c[e], c[(e + 1) % g.n]);
-    } else {
-      const double dx = c[(e + 1) % g.n][0] - c[e][0], dy = c[(e + 1) % g.n][1] - c[e][1];
-      g.length[e].v = std::sqrt(dx * dx + dy * dy);
-    }
+/// What an evaluation computes.
+enum class Order { VALUE, GRADIENT, HESSIAN };
+
+/// A primitive with its gradient and (HESSIAN) Hessian in its own coordinates (6 for kappa, 4 for l).
+/// Only the parts the evaluation order needs are written (v; g for GRADIENT; g and h for HESSIAN), and
+/// only those are read: no zeroing of 43 doubles per primitive.
+struct Primitive {
+  double v;
+  double g[6];
+  double h[36];
+};
+
+inline Primitive edge_length(const Vec2& a, const Vec2& b, Order order) {
+  // l = |b - a|, t = (b - a)/l: dl/da = -t, dl/db = t; d2l = [P -P; -P P] with P = (I - t t^T)/l.
+  Primitive p;
+  const double dx = b[0] - a[0], dy = b[1] - a[1];
+  p.v = std::sqrt(dx * dx + dy * dy);
+  if (order == Order::VALUE) return p;
+  const double t[2] = {dx / p.v, dy / p.v};
+  for (int r = 0; r < 2; ++r) {
+    p.g[r] = -t[r];
+    p.g[2 + r] = t[r];
   }
-  g.kappa.resize(g.n);
-  for (std::size_t j = 0; j < g.n; ++j) {
-    if (!g.active[j]) continue;
-    const Vec2& a = c[(j + g.n - 1) % g.n];
-    const Vec2& b = c[j];
-    const Vec2& d = c[(j + 1) % g.n];
-    if (f.discretisation == Discretisation::CIRCUMCIRCLE && a[0] == d[0] && a[1] == d[1])
-      throw Invalid_input_error(message(method, ": vertices ", (j + g.n - 1) % g.n, " and ", (j + 1) % g.n,
+  if (order != Order::HESSIAN) return p;
+  for (int r = 0; r < 2; ++r)
+    for (int c = 0; c < 2; ++c) {
+      const double q = ((r == c ? 1.0 : 0.0) - t[r] * t[c]) / p.v;
+      p.h[r * 4 + c] = q;
+      p.h[(2 + r) * 4 + 2 + c] = q;
+      p.h[r * 4 + 2 + c] = -q;
+      p.h[(2 + r) * 4 + c] = -q;
+    }
+  return p;
+}
+
+/// kappa with its derivatives in (a, b, c): evaluated as a dual over the 4 edge-vector coordinates
+/// (u = b - a, v = c - b), then mapped by the constant Jacobian d(u, v)/d(a, b, c): the block of vertex
+/// X in {a, b, c} is sum_P coef[X][P] d/dP with coef a = (-1, 0), b = (1, -1), c = (0, 1).
+template <bool S>
+Primitive dual_curvature(Discretisation d, const Vec2& a, const Vec2& b, const Vec2& c) {
+  typedef Dual<4, S> D;
+  const D k = local_curvature(d, D::variable(0, b[0] - a[0]), D::variable(1, b[1] - a[1]), D::variable(2, c[0] - b[0]),
+                              D::variable(3, c[1] - b[1]));
+  static constexpr double coef[3][2] = {{-1, 0}, {1, -1}, {0, 1}};
+  Primitive p;
+  p.v = k.v;
+  for (int x = 0; x < 3; ++x)
+    for (int r = 0; r < 2; ++r) p.g[2 * x + r] = coef[x][0] * k.g[r] + coef[x][1] * k.g[2 + r];
+  if constexpr (S)
+    for (int x = 0; x < 3; ++x)
+      for (int y = 0; y < 3; ++y)
+        for (int r = 0; r < 2; ++r)
+          for (int s = 0; s < 2; ++s) {
+            double v = 0;
+            for (int P = 0; P < 2; ++P)
+              for (int Q = 0; Q < 2; ++Q) v += coef[x][P] * coef[y][Q] * k.h[(2 * P + r) * 4 + 2 * Q + s];
+            p.h[(2 * x + r) * 6 + 2 * y + s] = v;
+          }
+  return p;
+}
+
+/// The polygon, which vertices are active, and the primitives computed on demand. The curvature of a
+/// vertex is used by up to 5 consecutive terms; a cache of 8 slots (tagged by vertex) holds the ones of
+/// the current window of the single pass over the sites (no O(n) storage of primitives).
+class Geometry {
+public:
+  std::size_t n = 0, edges = 0;
+  bool closed = false;
+
+  Geometry(const Functional& f, const std::vector<Vec2>& c, Order order, const char* method)
+    : n(c.size()), edges(f.closed ? c.size() : c.size() - 1), closed(f.closed), f_(f), c_(c), order_(order),
+      method_(method) {
+    for (long& t : tag_) t = -1000;  // no offset index: they start at -2
+  }
+  std::size_t vertex(long j) const {  // offset index -> vertex (mod n when closed)
+    const long m = static_cast<long>(n);
+    return static_cast<std::size_t>(closed ? ((j % m) + m) % m : j);
+  }
+  bool kappa_active(long j) const {
+    if (!closed && (j <= 0 || j >= static_cast<long>(n) - 1)) return false;
+    return f_.zero_curvature.empty() || !f_.zero_curvature[vertex(j)];
+  }
+  /// kappa at the active vertex of offset index j (cached by j, not by vertex, so that the consecutive
+  /// offsets of one term, also across the wrap of a closed polygon, occupy distinct slots).
+  const Primitive& kappa(long j) {
+    const std::size_t slot = static_cast<std::size_t>(((j % cache_size_l) + cache_size_l) % cache_size_l);
+    if (tag_[slot] != j) {
+      cache_[slot] = compute_kappa(vertex(j));
+      tag_[slot] = j;
+    }
+    return cache_[slot];
+  }
+  Primitive length(std::size_t e) const { return edge_length(c_[e], c_[(e + 1) % n], order_); }
+
+private:
+  static constexpr std::size_t cache_size = 8;
+  static constexpr long cache_size_l = 8;
+  Primitive compute_kappa(std::size_t j) const {
+    const Vec2& a = c_[(j + n - 1) % n];
+    const Vec2& b = c_[j];
+    const Vec2& d = c_[(j + 1) % n];
+    if (f_.discretisation == Discretisation::CIRCUMCIRCLE && a[0] == d[0] && a[1] == d[1])
+      throw Invalid_input_error(message(method_, ": vertices ", (j + n - 1) % n, " and ", (j + 1) % n,
                                         " around vertex ", j, " coincide at (", a[0], ", ", a[1],
                                         "): the circumcircle curvature is infinite"));
-    if (derivatives) {
-      g.kappa[j] = vertex_curvature(f.discretisation, a, b, d);
-    } else {
-      g.kappa[j].v = local_curvature(f.discretisation, a[0], a[1], b[0], b[1], d[0], d[1]);
-    }
-    if (!std::isfinite(g.kappa[j].v))
-      throw Invalid_input_error(message(method, ": the curvature at vertex ", j, " = (", b[0], ", ", b[1],
-                                        ") is not finite (", g.kappa[j].v, ")"));
+    Primitive p;
+    if (order_ == Order::HESSIAN)
+      p = dual_curvature<true>(f_.discretisation, a, b, d);
+    else if (order_ == Order::GRADIENT)
+      p = dual_curvature<false>(f_.discretisation, a, b, d);
+    else
+      p.v = local_curvature(f_.discretisation, b[0] - a[0], b[1] - a[1], d[0] - b[0], d[1] - b[1]);
+    if (!std::isfinite(p.v))
+      throw Invalid_input_error(message(method_, ": the curvature at vertex ", j, " = (", b[0], ", ", b[1],
+                                        ") is not finite (", p.v, ")"));
+    return p;
   }
-  return g;
-}
+  const Functional& f_;
+  const std::vector<Vec2>& c_;
+  Order order_;
+  const char* method_;
+  Primitive cache_[cache_size];
+  long tag_[cache_size];
+};
 
 /// Whether the kappa^(k) term at site j exists (every kappa of its stencil active; for an open polygon
 /// the site must be a vertex/edge, which that implies).
@@ -263,75 +296,85 @@ struct Window {
   double h[4 * max_window * max_window] = {};
 };
 
-/// The kappa^(k) term at site j: value, and (if `window`) its exact gradient and Hessian on its window.
-template <int K>
-double evaluate_term(const Functional& f, const Geometry& g, long j, Window* window) {
+/// The kappa^(k) term at site j: its value, and (GRADIENT, HESSIAN) its exact gradient and Hessian on
+/// its window of k + 3 vertices.
+template <int K, Order O>
+double evaluate_term(const Functional& f, Geometry& g, long j, Window& window) {
   constexpr int P = primitive_count(K);
   constexpr Stencil st = stencils[K];
   const std::size_t site = g.vertex(j);
   const double beta = term_weight(f, K, site), alpha = term_exponent(f, K);
   const double scale = std::pow(f.reference_length, K + 1);
-  if (!window) {
+  if constexpr (O == Order::VALUE) {
     double kap[5] = {1, 1, 1, 1, 1}, len[4] = {1, 1, 1, 1};
-    for (int o = st.klo; o <= st.khi; ++o) kap[o + 2] = g.kappa[g.vertex(j + o)].v;
-    for (int o = st.llo; o <= st.lhi; ++o) len[o + 2] = g.length[g.vertex(j + o)].v;
+    for (int o = st.klo; o <= st.khi; ++o) kap[o + 2] = g.kappa(j + o).v;
+    for (int o = st.llo; o <= st.lhi; ++o) len[o + 2] = g.length(g.vertex(j + o)).v;
     return term_value(K, beta, alpha, scale, kap, len);
-  }
-  typedef Dual<P> D;
-  D kap[5] = {1, 1, 1, 1, 1}, len[4] = {1, 1, 1, 1};
-  // Primitive p: its value, and the window vertex where its own coordinates start.
-  const Primitive* prim[P];
-  int start[P], dims[P];
-  int p = 0;
-  const long first = j + st.klo - 1;
-  for (int o = st.klo; o <= st.khi; ++o, ++p) {
-    prim[p] = &g.kappa[g.vertex(j + o)];
-    start[p] = static_cast<int>(j + o - 1 - first);
-    dims[p] = 6;
-    kap[o + 2] = D::variable(p, prim[p]->v);
-  }
-  for (int o = st.llo; o <= st.lhi; ++o, ++p) {
-    prim[p] = &g.length[g.vertex(j + o)];
-    start[p] = static_cast<int>(j + o - first);
-    dims[p] = 4;
-    len[o + 2] = D::variable(p, prim[p]->v);
-  }
-  const D t = term_value(K, beta, alpha, scale, kap, len);
-  const int W = K + 3, C = 2 * W;
-  window->first = first;
-  window->size = W;
-  for (int i = 0; i < C; ++i) window->g[i] = 0;
-  for (int i = 0; i < C * C; ++i) window->h[i] = 0;
-  // Jacobian of the primitives in the window coordinates (dense P x C; at most 9 x 14).
-  double jac[P][2 * max_window] = {};
-  for (int q = 0; q < P; ++q)
-    for (int i = 0; i < dims[q]; ++i) jac[q][2 * start[q] + i] = prim[q]->g[i];
-  for (int q = 0; q < P; ++q)
-    for (int i = 0; i < C; ++i) window->g[i] += t.g[q] * jac[q][i];
-  // sum_{p,q} T_pq J_p J_q^T: first M = T'' J (P x C), then J^T M.
-  double m[P][2 * max_window] = {};
-  for (int a = 0; a < P; ++a)
-    for (int b = 0; b < P; ++b) {
-      const double tab = t.h[a * P + b];
-      if (tab == 0) continue;
-      for (int i = 0; i < C; ++i) m[a][i] += tab * jac[b][i];
+  } else {
+    constexpr bool S = O == Order::HESSIAN;
+    typedef Dual<P, S> D;
+    D kap[5] = {1, 1, 1, 1, 1}, len[4] = {1, 1, 1, 1};
+    // Primitive q: its value and derivatives, and the window vertex where its own coordinates start.
+    // (The at most 5 curvatures of one term occupy distinct cache slots: the pointers stay valid.)
+    const Primitive* prim[P];
+    Primitive lengths[st.lhi - st.llo + 1];
+    int start[P], dims[P];
+    int p = 0;
+    const long first = j + st.klo - 1;
+    for (int o = st.klo; o <= st.khi; ++o, ++p) {
+      prim[p] = &g.kappa(j + o);
+      start[p] = static_cast<int>(j + o - 1 - first);
+      dims[p] = 6;
+      kap[o + 2] = D::variable(p, prim[p]->v);
     }
-  for (int a = 0; a < P; ++a)
-    for (int i = 0; i < C; ++i) {
-      const double ja = jac[a][i];
-      if (ja == 0) continue;
-      for (int k = 0; k < C; ++k) window->h[i * C + k] += ja * m[a][k];
+    for (int o = st.llo; o <= st.lhi; ++o, ++p) {
+      lengths[o - st.llo] = g.length(g.vertex(j + o));
+      prim[p] = &lengths[o - st.llo];
+      start[p] = static_cast<int>(j + o - first);
+      dims[p] = 4;
+      len[o + 2] = D::variable(p, prim[p]->v);
     }
-  // sum_p T_p d2p/dc2 on the primitive's own coordinates.
-  for (int q = 0; q < P; ++q) {
-    const int o = 2 * start[q], d = dims[q];
-    for (int r = 0; r < d; ++r)
-      for (int s = 0; s < d; ++s) window->h[(o + r) * C + o + s] += t.g[q] * prim[q]->h[r * d + s];
+    const D t = term_value(K, beta, alpha, scale, kap, len);
+    const int W = K + 3, C = 2 * W;
+    window.first = first;
+    window.size = W;
+    for (int i = 0; i < C; ++i) window.g[i] = 0;
+    for (int q = 0; q < P; ++q)
+      for (int i = 0; i < dims[q]; ++i) window.g[2 * start[q] + i] += t.g[q] * prim[q]->g[i];
+    if constexpr (S) {
+      for (int i = 0; i < C * C; ++i) window.h[i] = 0;
+      // Jacobian of the primitives in the window coordinates (dense P x C; at most 9 x 14).
+      double jac[P][2 * max_window] = {};
+      for (int q = 0; q < P; ++q)
+        for (int i = 0; i < dims[q]; ++i) jac[q][2 * start[q] + i] = prim[q]->g[i];
+      // sum_{p,q} T_pq J_p J_q^T: first M = T'' J (P x C), then J^T M.
+      double m[P][2 * max_window] = {};
+      for (int a = 0; a < P; ++a)
+        for (int b = 0; b < P; ++b) {
+          const double tab = t.h[a * P + b];
+          if (tab == 0) continue;
+          for (int i = 0; i < C; ++i) m[a][i] += tab * jac[b][i];
+        }
+      for (int a = 0; a < P; ++a)
+        for (int i = 0; i < C; ++i) {
+          const double ja = jac[a][i];
+          if (ja == 0) continue;
+          for (int k = 0; k < C; ++k) window.h[i * C + k] += ja * m[a][k];
+        }
+      // sum_q T_q d2q/dc2 on the primitive's own coordinates.
+      for (int q = 0; q < P; ++q) {
+        const int o = 2 * start[q], d = dims[q];
+        for (int r = 0; r < d; ++r)
+          for (int s = 0; s < d; ++s) window.h[(o + r) * C + o + s] += t.g[q] * prim[q]->h[r * d + s];
+      }
+      // J^T M is symmetric up to rounding: make it exactly symmetric, so that the stored diagonal
+      // blocks are.
+      for (int i = 0; i < C; ++i)
+        for (int k = i + 1; k < C; ++k)
+          window.h[i * C + k] = window.h[k * C + i] = 0.5 * (window.h[i * C + k] + window.h[k * C + i]);
+    }
+    return t.v;
   }
-  // J^T M is symmetric up to rounding: make it exactly symmetric, so that the stored diagonal blocks are.
-  for (int i = 0; i < C; ++i)
-    for (int k = i + 1; k < C; ++k) window->h[i * C + k] = window->h[k * C + i] = 0.5 * (window->h[i * C + k] + window->h[k * C + i]);
-  return t.v;
 }
 
 /// Adds a window's gradient (and Hessian, if given) into the global ones.
@@ -354,57 +397,85 @@ inline void scatter(const Geometry& g, const Window& w, std::vector<Vec2>& gradi
   }
 }
 
-/// Sites of the kappa^(k) terms: vertices (even k) or edges (odd k) where the term is present.
-template <int K>
-double accumulate_terms(const Functional& f, const Geometry& g, std::vector<Vec2>* gradient,
-                        Block_banded_hessian* hessian) {
-  if (K > 0 && !(f.derivative_weight[K] > 0)) return 0;
-  double energy = 0;
-  Window window;
-  const std::size_t sites = K % 2 == 1 ? g.edges : g.n;
-  for (std::size_t j = 0; j < sites; ++j) {
-    if (K == 0 && !(f.curvature_weight[j] > 0)) continue;
-    if (!term_present(g, K, static_cast<long>(j))) continue;
-    if (gradient) {
-      energy += evaluate_term<K>(f, g, static_cast<long>(j), &window);
-      scatter(g, window, *gradient, hessian);
-    } else {
-      energy += evaluate_term<K>(f, g, static_cast<long>(j), nullptr);
-    }
-  }
-  return energy;
+/// The kappa^(K) term at site j (vertex j for even K, edge j for odd K), if present: its value, and
+/// its derivatives added into gradient/hessian.
+template <int K, Order O>
+double site_term(const Functional& f, Geometry& g, std::size_t j, Window& window, std::vector<Vec2>* gradient,
+                 Block_banded_hessian* hessian) {
+  if (j >= (K % 2 == 1 ? g.edges : g.n)) return 0;
+  if (!(term_weight(f, K, j) > 0)) return 0;
+  if (!term_present(g, K, static_cast<long>(j))) return 0;
+  const double e = evaluate_term<K, O>(f, g, static_cast<long>(j), window);
+  if constexpr (O != Order::VALUE) scatter(g, window, *gradient, hessian);
+  return e;
 }
 
-inline double evaluate(const Functional& f, const std::vector<Vec2>& c, std::vector<Vec2>* gradient,
-                       Block_banded_hessian* hessian, const char* method) {
-  const Geometry g = geometry(f, c, gradient != nullptr, method);
+/// Finite input can still overflow (an edge of 1e-200 gives kappa^2 ~ 1e400): then the polygon is
+/// unusable for this functional, reported as Invalid_input_error with its shortest edge, never as NaN.
+inline void check_finite_result(const Geometry& g, const std::vector<Vec2>& c, double energy,
+                                const std::vector<Vec2>* gradient, const Block_banded_hessian* hessian,
+                                const char* method) {
+  bool finite = std::isfinite(energy);
+  if (finite && gradient)
+    for (const Vec2& v : *gradient) finite = finite && std::isfinite(v[0]) && std::isfinite(v[1]);
+  if (finite && hessian)
+    for (std::size_t i = 0; i < g.n; ++i)
+      for (std::size_t d = 0; d <= std::min(hessian->half_bandwidth(), g.n - 1); ++d) {
+        const std::size_t j = (i + d) % g.n;
+        if ((!g.closed && i + d >= g.n) || !hessian->in_band(i, j)) continue;
+        for (int r = 0; r < 2; ++r)
+          for (int t = 0; t < 2; ++t) finite = finite && std::isfinite(hessian->at(i, j, r, t));
+      }
+  if (finite) return;
+  std::size_t shortest = 0;
+  double length = INFINITY;
+  for (std::size_t e = 0; e < g.edges; ++e) {
+    const double l = g.length(e).v;
+    if (l < length) {
+      length = l;
+      shortest = e;
+    }
+  }
+  throw Invalid_input_error(message(method, ": the functional overflows on this polygon (energy ", energy,
+                                    "; shortest edge ", shortest, " from (", c[shortest][0], ", ", c[shortest][1],
+                                    ") has length ", length, ")"));
+}
+
+template <Order O>
+double evaluate(const Functional& f, const std::vector<Vec2>& c, std::vector<Vec2>* gradient,
+                Block_banded_hessian* hessian, const char* method) {
+  check_input(f, c, method);
+  Geometry g(f, c, O, method);
   if (gradient) gradient->assign(g.n, Vec2{{0, 0}});
   if (hessian) hessian->reset(g.n, f.half_bandwidth(), f.closed);
   double energy = 0;
-  // Length term: sum beta_j l_j.
-  for (std::size_t e = 0; e < g.edges; ++e) {
-    const double beta = f.length_weight[e];
-    if (!(beta > 0)) continue;
-    const Primitive& l = g.length[e];
-    energy += beta * l.v;
-    if (!gradient) continue;
-    const std::size_t v[2] = {e, (e + 1) % g.n};
-    for (int a = 0; a < 2; ++a)
-      for (int r = 0; r < 2; ++r) (*gradient)[v[a]][r] += beta * l.g[2 * a + r];
-    if (!hessian) continue;
-    for (int a = 0; a < 2; ++a)
-      for (int b = 0; b < 2; ++b) {
-        if (v[a] > v[b]) continue;
-        for (int r = 0; r < 2; ++r)
-          for (int s = 0; s < 2; ++s) hessian->at(v[a], v[b], r, s) += beta * l.h[(2 * a + r) * 4 + 2 * b + s];
+  Window window;
+  // One pass over the sites in order, so that the curvature cache serves every term of a window.
+  for (std::size_t j = 0; j < g.n; ++j) {
+    if (j < g.edges && f.length_weight[j] > 0) {  // length term beta_j l_j
+      const double beta = f.length_weight[j];
+      const Primitive l = g.length(j);
+      energy += beta * l.v;
+      if constexpr (O != Order::VALUE) {
+        const std::size_t v[2] = {j, (j + 1) % g.n};
+        for (int a = 0; a < 2; ++a)
+          for (int r = 0; r < 2; ++r) (*gradient)[v[a]][r] += beta * l.g[2 * a + r];
+        if constexpr (O == Order::HESSIAN)
+          for (int a = 0; a < 2; ++a)
+            for (int b = 0; b < 2; ++b) {
+              if (v[a] > v[b]) continue;
+              for (int r = 0; r < 2; ++r)
+                for (int s = 0; s < 2; ++s) hessian->at(v[a], v[b], r, s) += beta * l.h[(2 * a + r) * 4 + 2 * b + s];
+            }
       }
+    }
+    energy += site_term<0, O>(f, g, j, window, gradient, hessian);
+    energy += site_term<1, O>(f, g, j, window, gradient, hessian);
+    energy += site_term<2, O>(f, g, j, window, gradient, hessian);
+    energy += site_term<3, O>(f, g, j, window, gradient, hessian);
+    energy += site_term<4, O>(f, g, j, window, gradient, hessian);
   }
-  energy += accumulate_terms<0>(f, g, gradient, hessian);
-  energy += accumulate_terms<1>(f, g, gradient, hessian);
-  energy += accumulate_terms<2>(f, g, gradient, hessian);
-  energy += accumulate_terms<3>(f, g, gradient, hessian);
-  energy += accumulate_terms<4>(f, g, gradient, hessian);
-  FAIR_ASSERT_MSG(std::isfinite(energy), method, ": energy ", energy);
+  check_finite_result(g, c, energy, gradient, hessian, method);
   return energy;
 }
 
@@ -415,19 +486,22 @@ inline double evaluate(const Functional& f, const std::vector<Vec2>& c, std::vec
 /// consecutive vertices (naming the indices). Precondition_error: weights of the wrong size,
 /// negative or non-finite weights, exponents < 1, L0 <= 0.
 inline double energy(const Functional& f, const std::vector<Vec2>& c) {
-  return functional_detail::evaluate(f, c, nullptr, nullptr, "fair::internal::optimal::energy");
+  return functional_detail::evaluate<functional_detail::Order::VALUE>(f, c, nullptr, nullptr,
+                                                                    "fair::internal::optimal::energy");
 }
 
 /// Energy and its exact gradient dF/dc_j (size n).
 inline double energy_and_gradient(const Functional& f, const std::vector<Vec2>& c, std::vector<Vec2>& gradient) {
-  return functional_detail::evaluate(f, c, &gradient, nullptr, "fair::internal::optimal::energy_and_gradient");
+  return functional_detail::evaluate<functional_detail::Order::GRADIENT>(f, c, &gradient, nullptr,
+                                                                       "fair::internal::optimal::energy_and_gradient");
 }
 
 /// Energy, gradient and exact Hessian; `hessian` is reset to n vertices, half-bandwidth
 /// f.half_bandwidth(), cyclic iff f.closed.
 inline double energy_gradient_hessian(const Functional& f, const std::vector<Vec2>& c, std::vector<Vec2>& gradient,
                                       Block_banded_hessian& hessian) {
-  return functional_detail::evaluate(f, c, &gradient, &hessian, "fair::internal::optimal::energy_gradient_hessian");
+  return functional_detail::evaluate<functional_detail::Order::HESSIAN>(f, c, &gradient, &hessian,
+                                                                      "fair::internal::optimal::energy_gradient_hessian");
 }
 
 /// Normals n_j of Sec. 2.3.2, unit: the LEFT normal (-t_y, t_x) of the bisector t_{j-1} + t_j of the unit
@@ -477,11 +551,12 @@ inline std::vector<Vec2> vertex_normals(const std::vector<Vec2>& c, bool closed)
 
 /// The discrete true curvature kappa_j per vertex (0 at open ends and zero_curvature vertices).
 inline std::vector<double> discrete_curvatures(const Functional& f, const std::vector<Vec2>& c) {
-  const functional_detail::Geometry g =
-      functional_detail::geometry(f, c, false, "fair::internal::optimal::discrete_curvatures");
+  const char* method = "fair::internal::optimal::discrete_curvatures";
+  functional_detail::check_input(f, c, method);
+  functional_detail::Geometry g(f, c, functional_detail::Order::VALUE, method);
   std::vector<double> kappa(g.n, 0.0);
   for (std::size_t j = 0; j < g.n; ++j)
-    if (g.active[j]) kappa[j] = g.kappa[j].v;
+    if (g.kappa_active(static_cast<long>(j))) kappa[j] = g.kappa(static_cast<long>(j)).v;
   return kappa;
 }
 

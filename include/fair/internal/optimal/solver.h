@@ -399,7 +399,15 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
       for (std::size_t k = 0; k < rg.size(); ++k) x[k] = -rg[k];
       if (!shifted_solve(rh, x)) { out.status = Status::CAPPED; return out; }
       decrement = -dot_product(rg, x);
-      if (0.5 * decrement <= s.tolerance * scale) { out.status = Status::CONVERGED; return out; }
+      if (0.5 * decrement <= s.tolerance * scale) {
+        // Converged: still take this last (tiny) Newton step when it does not raise F beyond
+        // rounding: it is free (already solved) and squares the remaining error.
+        const std::vector<Vec2> last = displaced(c, u, x, 1.0, roles);
+        const double el = energy_or_infinity(p, last);
+        if (el <= e + 1e-14 * scale) { c = last; out.energy = el; out.iterations = it + 1; }
+        out.status = Status::CONVERGED;
+        return out;
+      }
     } else {
       // Polak-Ribiere+ direction (restart when the number of unknowns changed or it is not descent).
       double beta = 0;
