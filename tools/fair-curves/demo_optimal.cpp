@@ -204,15 +204,18 @@ void add_optimal_cases(fair_curves::Gallery& gallery) {
              "Per-segment lambda_i (Sec. 3.2, blended along the curve with phi_4): all 0.5; the two middle segments at "
              "1 (dragged towards the int kappa^2 curve); the same two at 0 (dragged towards the polygon).");
 
+  const std::vector<Point_2> a = arch();
+  double L0 = 0; // the input polygon's length
+  for (std::size_t i = 0; i + 1 < a.size(); ++i) L0 += std::sqrt(CGAL::squared_distance(a[i], a[i + 1]));
   for (std::size_t k = 1; k <= 4; ++k) {
     fair::Optimal_curve_options o = base;
     o.curvature_weight = 0;
-    o.length_weight = 0.05;
+    o.length_weight = 0.03 * std::pow(L0, static_cast<double>(2 * k + 2)); // eq. 5 weighs |kappa^(k) L0^(k+1)|^2
     o.derivative_weight[k] = 1;
     o.resolution = 300;
     add_solve(gallery, arch(), o, "Fig. 9: minimising int (kappa^(" + std::to_string(k) + "))^2",
-              "beta_" + std::to_string(k) + " = 1 with a length term beta = 0.05 (without it the pure derivative "
-              "energies stall); the minimiser is a C" + std::to_string(k + 1) + " curve. The spline drawn is the C2 "
+              "beta_" + std::to_string(k) + " = 1 with a length term beta = 0.03 L0^" + std::to_string(2 * k + 2) +
+                  " (without it the pure derivative energies stall); the minimiser is a C" + std::to_string(k + 1) + " curve. The spline drawn is the C2 "
               "cubic; fit_quintic_spline gives the C4 quintic for CAD.");
   }
 }
