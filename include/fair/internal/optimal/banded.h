@@ -55,7 +55,7 @@ struct Band_layout {
     }
     std::size_t d;
     if (cyclic) {
-      d = (j + n - i) % n;
+      d = j >= i ? j - i : j + n - i;  // (j - i) mod n without a division
       transposed = d > w;
       if (transposed) return j * (w + 1) + (n - d);
       return i * (w + 1) + d;
@@ -93,6 +93,19 @@ public:
     bool t;
     const std::size_t s = layout_.slot(i, j, t);
     return data_[s * 4 + (t ? col * 2 + row : row * 2 + col)];
+  }
+  /// Adds the 2x2 block b (row-major) to block (i, j) (one slot lookup for the four entries).
+  void add_block(std::size_t i, std::size_t j, const double b[4]) {
+    bool t;
+    double* d = &data_[layout_.slot(i, j, t) * 4];
+    if (t) {
+      d[0] += b[0];
+      d[1] += b[2];
+      d[2] += b[1];
+      d[3] += b[3];
+    } else {
+      for (int k = 0; k < 4; ++k) d[k] += b[k];
+    }
   }
 
 private:

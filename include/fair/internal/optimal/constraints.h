@@ -25,6 +25,7 @@
 #define FAIR_INTERNAL_OPTIMAL_CONSTRAINTS_H
 
 #include <fair/Errors.h>
+#include <fair/Optimal_curve_options.h>
 #include <fair/internal/optimal/functional.h>
 
 #include <array>
@@ -36,12 +37,6 @@ namespace fair {
 namespace internal {
 namespace optimal {
 
-enum class Constraint_kind { TANGENT, NORMAL, CORNER };
-struct Constraint {
-  std::size_t index;
-  Constraint_kind kind;
-  Vec2 direction, outgoing;
-};
 
 enum class Vertex_role : unsigned char { FREE, FIXED };
 
@@ -73,20 +68,20 @@ struct Placed_constraint {
 
 /// Checks the constraints against the points (typed errors naming the value), converts NORMAL to
 /// TANGENT (t = (n_y, -n_x), the inverse of n = (-t_y, t_x)), normalises.
-inline std::vector<Placed_constraint> check_constraints(const std::vector<Constraint>& constraints,
+inline std::vector<Placed_constraint> check_constraints(const std::vector<Point_constraint>& constraints,
                                                         const std::vector<Vec2>& points, bool closed) {
   const char* fn = "fair::Optimal_curve_2";
   const std::size_t m = points.size();
   std::vector<Placed_constraint> out;
   std::vector<unsigned char> seen(m, 0);
-  for (const Constraint& c : constraints) {
+  for (const Point_constraint& c : constraints) {
     if (c.index >= m)
       throw Invalid_input_error(message(fn, ": constraint at point ", c.index, " is out of range (", m, " points)"));
     if (seen[c.index]) throw Invalid_input_error(message(fn, ": two constraints at point ", c.index));
     seen[c.index] = 1;
-    const bool corner = c.kind == Constraint_kind::CORNER;
+    const bool corner = c.kind == Point_constraint_kind::CORNER;
     Vec2 d = c.direction, o = corner ? c.outgoing : c.direction;
-    if (c.kind == Constraint_kind::NORMAL) { d = {{c.direction[1], -c.direction[0]}}; o = d; }
+    if (c.kind == Point_constraint_kind::NORMAL) { d = {{c.direction[1], -c.direction[0]}}; o = d; }
     if (!std::isfinite(d[0]) || !std::isfinite(d[1]) || !std::isfinite(o[0]) || !std::isfinite(o[1]) ||
         vec::norm(d) == 0 || vec::norm(o) == 0)
       throw Invalid_input_error(message(fn, ": constraint at point ", c.index, " has a zero or non-finite direction (",

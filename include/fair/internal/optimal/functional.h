@@ -391,8 +391,9 @@ inline void scatter(const Geometry& g, const Window& w, std::vector<Vec2>& gradi
     for (int b = 0; b < w.size; ++b) {
       const std::size_t vb = g.vertex(w.first + b);
       if (va > vb) continue;  // counted as the transpose of (vb, va)
-      for (int r = 0; r < 2; ++r)
-        for (int s = 0; s < 2; ++s) hessian->at(va, vb, r, s) += w.h[(2 * a + r) * C + 2 * b + s];
+      const double block[4] = {w.h[(2 * a) * C + 2 * b], w.h[(2 * a) * C + 2 * b + 1], w.h[(2 * a + 1) * C + 2 * b],
+                               w.h[(2 * a + 1) * C + 2 * b + 1]};
+      hessian->add_block(va, vb, block);
     }
   }
 }
@@ -464,8 +465,10 @@ double evaluate(const Functional& f, const std::vector<Vec2>& c, std::vector<Vec
           for (int a = 0; a < 2; ++a)
             for (int b = 0; b < 2; ++b) {
               if (v[a] > v[b]) continue;
+              double block[4];
               for (int r = 0; r < 2; ++r)
-                for (int s = 0; s < 2; ++s) hessian->at(v[a], v[b], r, s) += beta * l.h[(2 * a + r) * 4 + 2 * b + s];
+                for (int s = 0; s < 2; ++s) block[2 * r + s] = beta * l.h[(2 * a + r) * 4 + 2 * b + s];
+              hessian->add_block(v[a], v[b], block);
             }
       }
     }

@@ -15,6 +15,7 @@
 #define FAIR_INTERNAL_OPTIMAL_HIERARCHY_H
 
 #include <fair/Errors.h>
+#include <fair/Optimal_curve_options.h>
 #include <fair/internal/optimal/constraints.h>
 #include <fair/internal/optimal/functional.h>
 #include <fair/internal/optimal/lambda.h>
@@ -30,35 +31,11 @@ namespace fair {
 namespace internal {
 namespace optimal {
 
-struct Solve_options {
-  bool closed = false;
-  double length_weight = 1, curvature_weight = 1, curvature_exponent = 2;
-  std::array<double, 5> derivative_weight{{0, 0, 0, 0, 0}};
-  std::array<double, 5> derivative_exponent{{2, 2, 2, 2, 2}};
-  double lambda = -1;
-  std::vector<double> segment_lambda;
-  std::vector<Constraint> constraints;
-  double resolution = 500;
-  bool conjugate_gradient = false;
-  Discretisation discretisation = Discretisation::REGULARISED;
-  std::size_t max_levels = 30, max_iterations_per_level = 100, max_vertices = 1000000;
-  double tolerance = 1e-10;
-};
-
-struct Level_record {
-  std::size_t vertices, iterations;
-  double energy, gradient_norm;
-  Status status;
-};
-
 struct Solve_result {
   std::vector<Vec2> polygon;
   std::vector<std::size_t> interpolation_indices;
   std::vector<double> curvatures;
-  Status status = Status::CAPPED;
-  double energy = 0;
-  std::size_t iterations = 0;
-  std::vector<Level_record> levels;
+  Optimal_curve_report report{Status::CAPPED, 0, 0, {}};
   std::vector<double> eta;  // per segment, when the lambda design ran (eq. 11)
   bool eta_reference_guarded = false;  // lambda = 1 diverged: eta from the lambda = 0.99 curve
 };
@@ -161,7 +138,7 @@ inline Status worse(Status a, Status b) {
 }
 
 /// Checks the data and options (typed errors naming the value).
-inline void check_solve_input(const std::vector<Vec2>& p, const Solve_options& o) {
+inline void check_solve_input(const std::vector<Vec2>& p, const Optimal_curve_options& o) {
   const char* fn = "fair::Optimal_curve_2";
   const std::size_t minimum = o.closed ? 3 : 2;
   if (p.size() < minimum)
@@ -211,7 +188,7 @@ inline void check_solve_input(const std::vector<Vec2>& p, const Solve_options& o
 /// The hierarchy with per-edge beta and per-vertex beta0 given by `weights(c, interpolation,
 /// edge_beta, vertex_beta0)` (re-evaluated on every level).
 template <class Weights>
-Solve_result run_hierarchy(const std::vector<Vec2>& points, const Solve_options& o, Weights weights) {
+Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_options& o, Weights weights) {
   Solve_result r;
   std::vector<Placed_constraint> placed = check_constraints(o.constraints, points, o.closed);
   std::vector<Vec2> c = initial_polygon(points, o.closed, placed, r.interpolation_indices);
@@ -223,9 +200,11 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Solve_options&
   f.derivative_weight = o.derivative_weight;
   f.derivative_exponent = o.derivative_exponent;
   f.derivative_weight[0] = 0;
-  f.discretisation = o.discretisation;
+  f.discretisation = o.discretisation == Curvature_discretisation::CIRCUMCIRCLE    ? Discretisation::CIRCUMCIRCLE
+                     : o.discretisation == Curvature_discretisation::TURNING_ANGLE ? Discretisation::TURNING_ANGLE
+                                                                                   : Discretisation::REGULARISED;
   Level_settings s;
-  s.conjugate_gradient = o.conjugate_gradient;
+  s.conjugate_gradient = o.solver == Optimal_curve_solver::CONJUGATE_GRADIENT;
   s.max_iterations = o.max_iterations_per_level;
   s.tolerance = o.tolerance;
   s.max_extent = divergence_extent_factor * polygon_extent(points);
@@ -251,9 +230,9 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Solve_options&
     }
     Level_outcome out = solve_level(p, roles, s, c);
     out.iterations += iterations;
-    r.levels.push_back({c.size(), out.iterations, out.energy, out.gradient_norm, out.status});
-    r.iterations += out.iterations;
-    r.energy = out.energy;
+    r.report.levels.push_back({c.size(), out.iterations, out.energy, out.gradient_norm, out.status});
+    r.report.iterations += out.iterations;
+    r.report.energy = out.energy;
     overall = worse(overall, out.status);
     if (out.status == Status::DIVERGING) break;
     if (level + 1 >= o.max_levels) { overall = worse(overall, Status::CAPPED); break; }
@@ -268,14 +247,14 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Solve_options&
     placed.swap(moved);
     restore_ties(vertex_roles(c.size(), o.closed, r.interpolation_indices, placed), c);
   }
-  r.status = overall;
+  r.report.status = overall;
   r.polygon = c;
   r.curvatures = problem_curvatures(p, c);
   return r;
 }
 
 /// The whole solve of Optimal_curve_2 (checks, the lambda design, the hierarchy).
-inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const Solve_options& o) {
+inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const Optimal_curve_options& o) {
   check_solve_input(points, o);
   const bool lambda_design = o.lambda != -1 || !o.segment_lambda.empty();
   if (!lambda_design) {
@@ -289,7 +268,7 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const S
   std::vector<double> lambda = o.segment_lambda.empty() ? std::vector<double>(segments, o.lambda) : o.segment_lambda;
   // The lambda = 1 reference curve (beta = 0, beta0 = 1) for eta of eq. 11; guarded by
   // lambda = 0.99 with q(0) when it has no finite minimiser (diverges).
-  Solve_options ref = o;
+  Optimal_curve_options ref = o;
   ref.lambda = -1;
   ref.segment_lambda.clear();
   ref.derivative_weight = {{0, 0, 0, 0, 0}};
@@ -297,7 +276,7 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const S
   ref.curvature_weight = 1;
   Solve_result reference = solve_optimal_curve(points, ref);
   bool guarded = false;
-  if (reference.status == Status::DIVERGING) {
+  if (reference.report.status == Status::DIVERGING) {
     ref.length_weight = 0.01 * lambda_scale(0);
     ref.curvature_weight = 0.99;
     reference = solve_optimal_curve(points, ref);

@@ -22,6 +22,7 @@
 #define FAIR_INTERNAL_OPTIMAL_SOLVER_H
 
 #include <fair/Errors.h>
+#include <fair/Optimal_curve_options.h>
 #include <fair/internal/optimal/constraints.h>
 #include <fair/internal/optimal/functional.h>
 
@@ -35,7 +36,7 @@ namespace fair {
 namespace internal {
 namespace optimal {
 
-enum class Status { CONVERGED, DIVERGING, CAPPED };
+typedef fair::Optimal_curve_status Status;
 
 /// Most diagonal shifts tried before giving up on a Newton step (mu grows x10 from 1e-10 max|H_kk|:
 /// 30 tries reach 1e20 max|H_kk|, far beyond any Hessian of a finite polygon).
