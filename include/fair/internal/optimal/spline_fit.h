@@ -1,0 +1,490 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// Interpolating splines through every vertex of a polygon (issue 11 §4, the CAD output of the
+// optimal curves), in double. The derivations are in doc/optimal_curves_output.md.
+//
+// Parameter: cumulative chord length, t_0 = 0, t_{i+1} = t_i + |p_{i+1} - p_i| (closed: one more
+// interval p_{n-1} -> p_0). For a polygon sampled densely from a smooth curve the chord length
+// approximates arc length to O(h^3) per edge, which keeps the fits O(h^4) (cubic) and better
+// (quintic); uniform parameters would not on non-uniform polygons.
+//
+// Cubic (C2): the slopes m_i = c'(t_i) of the piecewise Hermite form solve the classic
+//   h_i m_{i-1} + 2 (h_{i-1} + h_i) m_i + h_{i-1} m_{i+1} = 3 (h_i d_{i-1} + h_{i-1} d_i),
+// d_i = (p_{i+1} - p_i) / h_i, at every interior (closed: every) knot; open ends are
+// not-a-knot (c''' continuous at t_1 and t_{m-1}), rows
+//   h_1 m_0 + (h_0 + h_1) m_1 = (h_1 (3 h_0 + 2 h_1) d_0 + h_0^2 d_1) / (h_0 + h_1)   (and mirrored),
+// tridiagonal (Thomas) or cyclic tridiagonal (Sherman-Morrison), O(n). 3 points: the parabola,
+// 2 points: the segment.
+//
+// Quintic (C4): piecewise quintic Hermite in (p_i, m_i, s_i) (value, first and second
+// derivative at the knots, so C2 by construction); the m_i, s_i minimise the sum over pieces of
+// int |c'''|^2 dt, whose stationarity conditions are exactly the continuity of c''' and c''''
+// at the free knots (integration by parts). Open ends are clamped: m, s at t_0 (t_m) are the
+// derivatives of the polynomial interpolating the first (last) min(6, n) vertices (error
+// O(h^5), O(h^4): the fit stays O(h^6)). The system is symmetric positive definite with
+// half-bandwidth 3 in the unknowns (m_0, H_0 s_0, m_1, H_1 s_1, ...), H_i the mean adjacent
+// interval: banded Cholesky, O(n). Closed: A = B + W M W^T with B the open chain of the pieces
+// 0..n-2 (positive definite for n >= 3: a quadratic vanishing at 3 points is 0) and M the 4x4
+// matrix of the closing piece; Sherman-Morrison-Woodbury with 4 extra banded solves, O(n).
+//
+// Distance: for each piece, the largest distance of a point of the piece to the polygon edge
+// it replaces (the piece evaluated by Horner in the power basis), from 32 uniform samples refined by golden-section search around the largest
+// (40 steps: the location to 1e-9 of the piece, the value to ~1e-16 relative); it misses a
+// maximum only if the distance has two bumps closer than 1/32 of the piece apart.
+
+#ifndef FAIR_INTERNAL_OPTIMAL_SPLINE_FIT_H
+#define FAIR_INTERNAL_OPTIMAL_SPLINE_FIT_H
+
+#include <fair/Errors.h>
+#include <fair/internal/classic/tridiagonal.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace fair {
+namespace internal {
+namespace optimal {
+
+typedef std::array<double, 2> Vec2;
+
+/// Samples per piece of the distance measurement (see the header comment).
+constexpr int fit_distance_samples = 32;
+/// Golden-section steps refining the largest sample (0.618^40 ~ 4e-9 of the bracket).
+constexpr int fit_distance_refinements = 40;
+/// Vertices of the polynomial that clamps an open quintic end (degree 5: O(h^6) fit).
+constexpr std::size_t quintic_end_points = 6;
+
+/// Cumulative chord-length breakpoints (size n + 1 open, n + 1 closed with the closing edge).
+/// Throws Invalid_input_error for a zero-length edge (in double) or a non-finite length.
+inline std::vector<double> chord_breakpoints(const std::vector<Vec2>& p, bool closed, const char* fn) {
+  const std::size_t n = p.size(), edges = closed ? n : n - 1;
+  std::vector<double> t(1, 0.0);
+  t.reserve(edges + 1);
+  for (std::size_t i = 0; i < edges; ++i) {
+    const Vec2& a = p[i];
+    const Vec2& b = p[(i + 1) % n];
+    const double h = std::hypot(b[0] - a[0], b[1] - a[1]);
+    if (!(h > 0) || !std::isfinite(h) || !std::isfinite(t.back() + h))
+      throw Invalid_input_error(message(fn, ": edge ", i, " from (", a[0], ", ", a[1], ") to (", b[0], ", ", b[1],
+                                        ") has length ", h, " (vertices must be distinct and finite in double)"));
+    t.push_back(t.back() + h);
+  }
+  return t;
+}
+
+inline Vec2 vec_add(const Vec2& a, double s, const Vec2& b) { return Vec2{{a[0] + s * b[0], a[1] + s * b[1]}}; }
+inline Vec2 vec_diff_over(const Vec2& b, const Vec2& a, double h) {
+  return Vec2{{(b[0] - a[0]) / h, (b[1] - a[1]) / h}};
+}
+
+/// The slopes m_i = c'(t_i) of the C2 cubic interpolant (size n; open n >= 2, closed n >= 3).
+inline std::vector<Vec2> cubic_slopes(const std::vector<Vec2>& p, const std::vector<double>& t, bool closed) {
+  const std::size_t n = p.size(), edges = t.size() - 1;
+  std::vector<double> h(edges);
+  std::vector<Vec2> d(edges);
+  for (std::size_t i = 0; i < edges; ++i) {
+    h[i] = t[i + 1] - t[i];
+    d[i] = vec_diff_over(p[(i + 1) % n], p[i], h[i]);
+  }
+  std::vector<Vec2> m(n);
+  if (!closed && n == 2) {
+    m[0] = m[1] = d[0];
+    return m;
+  }
+  if (!closed && n == 3) { // the parabola: m_1 is its slope at t_1, d_i = (m_i + m_{i+1}) / 2
+    for (int k = 0; k < 2; ++k) {
+      m[1][k] = (h[1] * d[0][k] + h[0] * d[1][k]) / (h[0] + h[1]);
+      m[0][k] = 2 * d[0][k] - m[1][k];
+      m[2][k] = 2 * d[1][k] - m[1][k];
+    }
+    return m;
+  }
+  std::vector<double> a(n, 0.0), b(n, 0.0), c(n, 0.0);
+  std::array<std::vector<double>, 2> r{{std::vector<double>(n), std::vector<double>(n)}};
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!closed && (i == 0 || i + 1 == n)) continue;
+    const std::size_t l = (i + edges - 1) % edges; // the edge ending at vertex i
+    a[i] = h[i % edges];
+    b[i] = 2 * (h[l] + h[i % edges]);
+    c[i] = h[l];
+    for (int k = 0; k < 2; ++k) r[k][i] = 3 * (h[i % edges] * d[l][k] + h[l] * d[i % edges][k]);
+  }
+  if (!closed) { // not-a-knot rows (derivation in doc/optimal_curves_output.md)
+    const std::size_t e = edges;
+    b[0] = h[1];
+    c[0] = h[0] + h[1];
+    a[n - 1] = h[e - 2] + h[e - 1];
+    b[n - 1] = h[e - 2];
+    for (int k = 0; k < 2; ++k) {
+      r[k][0] = (h[1] * (3 * h[0] + 2 * h[1]) * d[0][k] + h[0] * h[0] * d[1][k]) / (h[0] + h[1]);
+      r[k][n - 1] = (h[e - 2] * (3 * h[e - 1] + 2 * h[e - 2]) * d[e - 1][k] + h[e - 1] * h[e - 1] * d[e - 2][k]) /
+                    (h[e - 2] + h[e - 1]);
+    }
+  }
+  for (int k = 0; k < 2; ++k) {
+    const std::vector<double> x = closed ? classic::solve_cyclic_tridiagonal(a, b, c, r[k])
+                                         : classic::solve_tridiagonal(a, b, c, r[k]);
+    for (std::size_t i = 0; i < n; ++i) m[i][k] = x[i];
+  }
+  return m;
+}
+
+/// The Bezier points of the cubic Hermite pieces (piece i over [t_i, t_{i+1}]).
+inline std::vector<std::array<Vec2, 4>> cubic_bezier_pieces(const std::vector<Vec2>& p, const std::vector<double>& t,
+                                                            const std::vector<Vec2>& m) {
+  const std::size_t n = p.size(), edges = t.size() - 1;
+  std::vector<std::array<Vec2, 4>> out(edges);
+  for (std::size_t i = 0; i < edges; ++i) {
+    const std::size_t j = (i + 1) % n;
+    const double h = t[i + 1] - t[i];
+    out[i] = {{p[i], vec_add(p[i], h / 3, m[i]), vec_add(p[j], -h / 3, m[j]), p[j]}};
+  }
+  return out;
+}
+
+/// Symmetric positive definite band matrix (lower band stored), Cholesky L L^T in O(n w^2).
+class Spd_band {
+public:
+  Spd_band(std::size_t n, std::size_t w) : n_(n), w_(w), a_(n * (w + 1), 0.0) {}
+  std::size_t size() const { return n_; }
+  /// Entry (i, j), |i - j| <= w (either triangle; the lower one is stored).
+  double& at(std::size_t i, std::size_t j) {
+    if (i < j) std::swap(i, j);
+    FAIR_ASSERT(i - j <= w_ && i < n_);
+    return a_[i * (w_ + 1) + (i - j)];
+  }
+  double get(std::size_t i, std::size_t j) const {
+    if (i < j) std::swap(i, j);
+    return a_[i * (w_ + 1) + (i - j)];
+  }
+  /// In-place Cholesky. Returns false if a pivot is not positive (not positive definite).
+  bool factor() {
+    for (std::size_t i = 0; i < n_; ++i) {
+      const std::size_t j0 = i > w_ ? i - w_ : 0;
+      for (std::size_t j = j0; j <= i; ++j) {
+        double s = at(i, j);
+        const std::size_t k0 = std::max(j0, j > w_ ? j - w_ : 0);
+        for (std::size_t k = k0; k < j; ++k) s -= at(i, k) * at(j, k);
+        if (j == i) {
+          if (!(s > 0) || !std::isfinite(s)) return false;
+          at(i, i) = std::sqrt(s);
+        } else {
+          at(i, j) = s / at(j, j);
+        }
+      }
+    }
+    return true;
+  }
+  /// Solves L L^T x = b in place (after factor()).
+  void solve(std::vector<double>& b) const {
+    for (std::size_t i = 0; i < n_; ++i) {
+      double s = b[i];
+      for (std::size_t k = i > w_ ? i - w_ : 0; k < i; ++k) s -= get(i, k) * b[k];
+      b[i] = s / get(i, i);
+    }
+    for (std::size_t i = n_; i-- > 0;) {
+      double s = b[i];
+      for (std::size_t k = i + 1; k <= std::min(n_ - 1, i + w_); ++k) s -= get(k, i) * b[k];
+      b[i] = s / get(i, i);
+    }
+  }
+
+private:
+  std::size_t n_, w_;
+  std::vector<double> a_;
+};
+
+/// The 6x6 matrix of int_0^1 (q'''(u))^2 du for the quintic Hermite piece q with the data
+/// v = (p0, p1, a0, b0, a1, b1) (a = q'(0 or 1), b = q''(0 or 1) in u): q''' = 6 c3 + 24 c4 u +
+/// 60 c5 u^2 with c3 = 10D - 4E + G/2, c4 = -15D + 7E - G, c5 = 6D - 3E + G/2, D = p1 - p0 - a0 -
+/// b0/2, E = a1 - a0 - b0, G = b1 - b0 (the Taylor coefficients matching p1, a1, b1 at u = 1).
+inline std::array<std::array<double, 6>, 6> quintic_jerk_matrix() {
+  const double D[6] = {-1, 1, -1, -0.5, 0, 0}, E[6] = {0, 0, -1, -1, 1, 0}, G[6] = {0, 0, 0, -1, 0, 1};
+  double C3[6], C4[6], C5[6];
+  for (int k = 0; k < 6; ++k) {
+    C3[k] = 10 * D[k] - 4 * E[k] + 0.5 * G[k];
+    C4[k] = -15 * D[k] + 7 * E[k] - G[k];
+    C5[k] = 6 * D[k] - 3 * E[k] + 0.5 * G[k];
+  }
+  // 3-point Gauss-Legendre on [0, 1]: exact for the degree-4 integrand.
+  const double r = std::sqrt(0.6);
+  const double nodes[3] = {0.5 * (1 - r), 0.5, 0.5 * (1 + r)}, weights[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
+  std::array<std::array<double, 6>, 6> M{};
+  for (int q = 0; q < 3; ++q) {
+    const double u = nodes[q];
+    double w[6];
+    for (int k = 0; k < 6; ++k) w[k] = 6 * C3[k] + 24 * C4[k] * u + 60 * C5[k] * u * u;
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j) M[i][j] += weights[q] * w[i] * w[j];
+  }
+  return M;
+}
+
+/// Value, first and second derivative at `at` of the polynomial interpolating p[first ..
+/// first + k) at t[first ..] (Newton's divided differences; k >= 2).
+inline void polynomial_end_jet(const std::vector<Vec2>& p, const std::vector<double>& t, std::size_t first,
+                               std::size_t k, double at, Vec2& d1, Vec2& d2) {
+  std::vector<Vec2> dd(p.begin() + static_cast<std::ptrdiff_t>(first),
+                       p.begin() + static_cast<std::ptrdiff_t>(first + k));
+  std::vector<Vec2> coef(k);
+  coef[0] = dd[0];
+  for (std::size_t level = 1; level < k; ++level) {
+    for (std::size_t i = 0; i + level < k; ++i)
+      for (int c = 0; c < 2; ++c)
+        dd[i][c] = (dd[i + 1][c] - dd[i][c]) / (t[first + i + level] - t[first + i]);
+    coef[level] = dd[0];
+  }
+  double w = 1, w1 = 0, w2 = 0; // omega_j and its derivatives at `at`
+  d1 = Vec2{{0, 0}};
+  d2 = Vec2{{0, 0}};
+  for (std::size_t j = 0; j < k; ++j) {
+    for (int c = 0; c < 2; ++c) {
+      d1[c] += coef[j][c] * w1;
+      d2[c] += coef[j][c] * w2;
+    }
+    const double x = at - t[first + j];
+    w2 = w2 * x + 2 * w1;
+    w1 = w1 * x + w;
+    w *= x;
+  }
+}
+
+/// First and second derivatives (m_i, s_i) at the knots of the C4 quintic interpolant
+/// (open n >= 2, closed n >= 3). Throws Internal_error if the SPD system is not (cannot happen
+/// for distinct parameters: see the header comment).
+inline void quintic_derivatives(const std::vector<Vec2>& p, const std::vector<double>& t, bool closed,
+                                std::vector<Vec2>& m, std::vector<Vec2>& s) {
+  const std::size_t n = p.size(), edges = t.size() - 1;
+  m.assign(n, Vec2{{0, 0}});
+  s.assign(n, Vec2{{0, 0}});
+  std::vector<double> h(edges), H(n);
+  for (std::size_t i = 0; i < edges; ++i) h[i] = t[i + 1] - t[i];
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool has_left = closed || i > 0, has_right = closed || i < edges;
+    const double left = has_left ? h[(i + edges - 1) % edges] : h[0];
+    const double right = has_right ? h[i % edges] : h[edges - 1];
+    H[i] = 0.5 * (left + right);
+  }
+  if (!closed) { // clamped ends from the end polynomials
+    const std::size_t k = std::min(quintic_end_points, n);
+    polynomial_end_jet(p, t, 0, k, t[0], m[0], s[0]);
+    polynomial_end_jet(p, t, n - k, k, t[n - 1], m[n - 1], s[n - 1]);
+    if (n == 2) return;
+  }
+  // Unknown numbering: knot j -> 2 (j - offset), 2 (j - offset) + 1; open: knots 1..n-2.
+  const std::size_t offset = closed ? 0 : 1, knots = closed ? n : n - 2, size = 2 * knots;
+  auto unknown = [&](std::size_t knot, int which) -> long {
+    if (!closed && (knot == 0 || knot == n - 1)) return -1;
+    return static_cast<long>(2 * (knot - offset) + static_cast<std::size_t>(which));
+  };
+  const std::array<std::array<double, 6>, 6> M = quintic_jerk_matrix();
+  Spd_band B(size, 3);
+  std::array<std::vector<double>, 2> rhs{{std::vector<double>(size, 0.0), std::vector<double>(size, 0.0)}};
+  std::array<std::array<double, 4>, 4> closing{}; // the closing piece's block (closed only)
+  for (std::size_t i = 0; i < edges; ++i) {
+    const std::size_t j = (i + 1) % n;
+    const double hi = h[i], scale = 1 / (hi * hi * hi * hi * hi);
+    // z = (p0, p1, m0, sigma0, m1, sigma1), v = S z
+    const double S[6] = {1, 1, hi, hi * hi / H[i], hi, hi * hi / H[j]};
+    const std::size_t knot_of[6] = {i, j, i, i, j, j};
+    const int which[6] = {0, 0, 0, 1, 0, 1};
+    double K[6][6];
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b) K[a][b] = S[a] * M[a][b] * S[b] * scale;
+    const bool is_closing = closed && i + 1 == edges;
+    for (int a = 2; a < 6; ++a) {
+      const long ua = unknown(knot_of[a], which[a]);
+      if (ua < 0) continue;
+      for (int c = 0; c < 2; ++c) { // known data: the points, and the clamped end derivatives
+        double r = -K[a][0] * p[i][c] - K[a][1] * p[j][c];
+        for (int b = 2; b < 6; ++b)
+          if (unknown(knot_of[b], which[b]) < 0) {
+            const Vec2& known = which[b] == 0 ? m[knot_of[b]] : s[knot_of[b]];
+            r -= K[a][b] * known[c] * (which[b] == 1 ? H[knot_of[b]] : 1.0);
+          }
+        rhs[c][static_cast<std::size_t>(ua)] += r;
+      }
+      for (int b = 2; b < 6; ++b) {
+        const long ub = unknown(knot_of[b], which[b]);
+        if (ub < 0) continue;
+        if (is_closing) closing[a - 2][b - 2] = K[a][b];
+        else if (ua >= ub) B.at(static_cast<std::size_t>(ua), static_cast<std::size_t>(ub)) += K[a][b];
+      }
+    }
+  }
+  FAIR_ASSERT_MSG(B.factor(), "quintic_derivatives: the banded system of ", knots, " knots is not positive definite");
+  std::array<std::vector<double>, 2> x = rhs;
+  for (int c = 0; c < 2; ++c) B.solve(x[c]);
+  if (closed) {
+    // A = B + W M W^T, W picks the unknowns of knots n-1 (rows 0, 1 of `closing`) and 0 (rows 2, 3).
+    const std::size_t pick[4] = {2 * (n - 1), 2 * (n - 1) + 1, 0, 1};
+    std::array<std::vector<double>, 4> Z;
+    for (int q = 0; q < 4; ++q) {
+      Z[q].assign(size, 0.0);
+      Z[q][pick[q]] = 1;
+      B.solve(Z[q]);
+    }
+    // capacitance C = I + M W^T Z (4x4), solved densely with partial pivoting
+    double C[4][4];
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        double v = a == b ? 1.0 : 0.0;
+        for (int q = 0; q < 4; ++q) v += closing[a][q] * Z[b][pick[q]];
+        C[a][b] = v;
+      }
+    for (int c = 0; c < 2; ++c) {
+      double y[4], A[4][5];
+      for (int a = 0; a < 4; ++a) {
+        double v = 0;
+        for (int q = 0; q < 4; ++q) v += closing[a][q] * x[c][pick[q]];
+        for (int b = 0; b < 4; ++b) A[a][b] = C[a][b];
+        A[a][4] = v;
+      }
+      for (int col = 0; col < 4; ++col) {
+        int best = col;
+        for (int r = col + 1; r < 4; ++r)
+          if (std::fabs(A[r][col]) > std::fabs(A[best][col])) best = r;
+        FAIR_ASSERT_MSG(std::fabs(A[best][col]) > 0, "quintic_derivatives: singular closing capacitance matrix");
+        for (int k = 0; k < 5; ++k) std::swap(A[col][k], A[best][k]);
+        for (int r = col + 1; r < 4; ++r) {
+          const double f = A[r][col] / A[col][col];
+          for (int k = col; k < 5; ++k) A[r][k] -= f * A[col][k];
+        }
+      }
+      for (int r = 3; r >= 0; --r) {
+        double v = A[r][4];
+        for (int k = r + 1; k < 4; ++k) v -= A[r][k] * y[k];
+        y[r] = v / A[r][r];
+      }
+      for (std::size_t u = 0; u < size; ++u)
+        for (int q = 0; q < 4; ++q) x[c][u] -= Z[q][u] * y[q];
+    }
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    if (unknown(j, 0) < 0) continue;
+    const std::size_t u = static_cast<std::size_t>(unknown(j, 0));
+    for (int c = 0; c < 2; ++c) {
+      m[j][c] = x[c][u];
+      s[j][c] = x[c][u + 1] / H[j];
+    }
+  }
+}
+
+/// The Bezier points of the quintic Hermite pieces: b1 = p0 + a0/5, b2 = p0 + 2 a0/5 + b0/20
+/// (a = h m, b = h^2 s) and mirrored at the end.
+inline std::vector<std::array<Vec2, 6>> quintic_bezier_pieces(const std::vector<Vec2>& p, const std::vector<double>& t,
+                                                              const std::vector<Vec2>& m, const std::vector<Vec2>& s) {
+  const std::size_t n = p.size(), edges = t.size() - 1;
+  std::vector<std::array<Vec2, 6>> out(edges);
+  for (std::size_t i = 0; i < edges; ++i) {
+    const std::size_t j = (i + 1) % n;
+    const double h = t[i + 1] - t[i];
+    std::array<Vec2, 6>& b = out[i];
+    b[0] = p[i];
+    b[5] = p[j];
+    for (int c = 0; c < 2; ++c) {
+      b[1][c] = p[i][c] + h * m[i][c] / 5;
+      b[2][c] = p[i][c] + 2 * h * m[i][c] / 5 + h * h * s[i][c] / 20;
+      b[3][c] = p[j][c] - 2 * h * m[j][c] / 5 + h * h * s[j][c] / 20;
+      b[4][c] = p[j][c] - h * m[j][c] / 5;
+    }
+  }
+  return out;
+}
+
+/// de Casteljau in double.
+template <std::size_t N>
+Vec2 bezier_point(const std::array<Vec2, N>& b, double u) {
+  std::array<Vec2, N> w = b;
+  for (std::size_t r = 1; r < N; ++r)
+    for (std::size_t i = 0; i + r < N; ++i)
+      for (int c = 0; c < 2; ++c) w[i][c] = (1 - u) * w[i][c] + u * w[i + 1][c];
+  return w[0];
+}
+
+/// Distance of x to the segment [a, b].
+inline double distance_to_segment(const Vec2& x, const Vec2& a, const Vec2& b) {
+  const double ex = b[0] - a[0], ey = b[1] - a[1], l2 = ex * ex + ey * ey;
+  double s = l2 > 0 ? ((x[0] - a[0]) * ex + (x[1] - a[1]) * ey) / l2 : 0;
+  s = std::min(1.0, std::max(0.0, s));
+  return std::hypot(x[0] - a[0] - s * ex, x[1] - a[1] - s * ey);
+}
+
+/// The largest distance of a point of the piece to its chord b.front() b.back() (see the header).
+/// The power-basis coefficients a_k of a Bezier piece of degree N - 1 (c(u) = sum a_k u^k):
+/// a_k = C(n, k) sum_i (-1)^(k-i) C(k, i) b_i. For degree <= 5 the cancellation costs at most
+/// a few bits of the extent; used for the many evaluations of the distance search (Horner).
+template <std::size_t N>
+std::array<Vec2, N> power_coefficients(const std::array<Vec2, N>& b) {
+  const std::size_t n = N - 1;
+  std::array<Vec2, N> a{};
+  double cnk = 1; // C(n, k)
+  for (std::size_t k = 0; k <= n; ++k) {
+    double cki = 1, sign = (k % 2 == 0) ? 1.0 : -1.0; // C(k, i) (-1)^(k-i), i = 0
+    Vec2 sum{{0, 0}};
+    for (std::size_t i = 0; i <= k; ++i) {
+      for (int c = 0; c < 2; ++c) sum[c] += sign * cki * b[i][c];
+      cki = cki * static_cast<double>(k - i) / static_cast<double>(i + 1);
+      sign = -sign;
+    }
+    for (int c = 0; c < 2; ++c) a[k][c] = cnk * sum[c];
+    cnk = cnk * static_cast<double>(n - k) / static_cast<double>(k + 1);
+  }
+  return a;
+}
+
+template <std::size_t N>
+double piece_chord_distance(const std::array<Vec2, N>& b) {
+  const std::array<Vec2, N> a = power_coefficients(b);
+  auto f = [&](double u) {
+    Vec2 x = a[N - 1];
+    for (std::size_t k = N - 1; k-- > 0;)
+      for (int c = 0; c < 2; ++c) x[c] = x[c] * u + a[k][c];
+    return distance_to_segment(x, b.front(), b.back());
+  };
+  const int q = fit_distance_samples;
+  int best = 0;
+  double best_value = -1;
+  for (int k = 0; k <= q; ++k) {
+    const double v = f(static_cast<double>(k) / q);
+    if (v > best_value) {
+      best_value = v;
+      best = k;
+    }
+  }
+  double lo = std::max(0.0, (best - 1.0) / q), hi = std::min(1.0, (best + 1.0) / q);
+  const double g = 0.5 * (std::sqrt(5.0) - 1);
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = f(x1), f2 = f(x2);
+  for (int it = 0; it < fit_distance_refinements; ++it) {
+    if (f1 > f2) {
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - g * (hi - lo);
+      f1 = f(x1);
+    } else {
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + g * (hi - lo);
+      f2 = f(x2);
+    }
+  }
+  return std::max(best_value, std::max(f1, f2));
+}
+
+template <std::size_t N>
+double max_chord_distance(const std::vector<std::array<Vec2, N>>& pieces) {
+  double d = 0;
+  for (const std::array<Vec2, N>& b : pieces) d = std::max(d, piece_chord_distance(b));
+  return d;
+}
+
+} // namespace optimal
+} // namespace internal
+} // namespace fair
+
+#endif // FAIR_INTERNAL_OPTIMAL_SPLINE_FIT_H
