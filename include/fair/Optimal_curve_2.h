@@ -5,7 +5,7 @@
 //   F(c) = int beta + beta_0 |kappa L0|^alpha_0 + sum_k beta_k |kappa^(k) L0^(k+1)|^alpha_k ds,
 // with TRUE curvature (the paper's eq. 9 is half of it, doc/optimal_curves.md), computed by a
 // hierarchical, adaptive Newton method on the normal offsets of the free vertices
-// (doc/optimal_curves_solver.md). Points -> solver on doubles -> polygon in the user's kernel.
+// (doc/optimal_curves.md). Points -> solver on doubles -> polygon in the user's kernel.
 
 #ifndef FAIR_OPTIMAL_CURVE_2_H
 #define FAIR_OPTIMAL_CURVE_2_H

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // Options and report of fair::Optimal_curve_2 (Gumhold's optimal curves, issue 11; see
-// Optimal_curve_2.h and doc/optimal_curves_solver.md). Separate from the class so that the solver
+// Optimal_curve_2.h and doc/optimal_curves.md). Separate from the class so that the solver
 // (internal/optimal/hierarchy.h) reads these options directly.
 
 #ifndef FAIR_OPTIMAL_CURVE_OPTIONS_H

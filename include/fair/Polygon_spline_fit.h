@@ -7,7 +7,7 @@
 // every interpolation point of the optimal curve) is a knot. Open ends: the cubic is
 // not-a-knot, the quintic clamped to the derivatives of the polynomial through the 6 end
 // vertices; closed curves are periodic. Derivations and the measured convergence (O(h^4) cubic,
-// O(h^6) quintic on dense samples of smooth curves) are in doc/optimal_curves_output.md.
+// O(h^6) quintic on dense samples of smooth curves) are in doc/optimal_curves.md.
 //
 // Arithmetic: the fit is computed in double from the vertices converted to double (the
 // optimiser works in double too); the result is converted to K at the boundary. The cubic is

@@ -4,7 +4,8 @@
 // itself from its own file (see registry.h). Exit codes: 0 success, 1 bad input data (a
 // missing or malformed file, a degenerate configuration: one message on stderr naming the file
 // and line), 2 usage error (unknown option, malformed option value), 3 a result that does not
-// solve the problem (kappa: an unsolved solve, its outputs still written; fair_curves::Exit_code).
+// solve the problem, its outputs still written (kappa: unsolved; optimal: capped or diverging;
+// fair_curves::Exit_code).
 
 #include "registry.h"
 

@@ -6,7 +6,7 @@
 // weights of eq. 5 (--length-weight, --curvature-weight, --curvature-exponent,
 // --derivative-weight K:BK[:AK]) or the lambda trade-off of eq. 10 (--lambda, or one lambda per
 // input segment from --lambda-file); tangent, normal and corner constraints from files (formats
-// in doc/optimal_curves_output.md). Writes the JSON curve format with "pieces" and "bspline",
+// in doc/optimal_curves.md). Writes the JSON curve format with "pieces" and "bspline",
 // the polygon, the solve report and the fit's distance, and an SVG figure. A solve that did not
 // converge (status capped or diverging) still writes its outputs and exits with
 // not_converged_exit_code.

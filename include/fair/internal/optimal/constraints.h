@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // Constraints of Gumhold's optimal curves (Sec. 3.1) as roles of the polygon vertices, and the
-// initial polygon that satisfies them (doc/optimal_curves_solver.md, "Constraints"):
+// initial polygon that satisfies them (doc/optimal_curves.md, "Constraints"):
 //  - an interpolation point is FIXED;
 //  - CORNER at point i: kappa_i = 0 (natural boundary, Sec. 3.1) and its two polygon neighbours
 //    FIXED on the rays c_i - r t_in and c_i + r t_out (Fig. 5a). After a subdivision the new

@@ -1,6 +1,6 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// The hierarchical, adaptive optimiser of Gumhold's Sec. 2.3 (doc/optimal_curves_solver.md,
+// The hierarchical, adaptive optimiser of Gumhold's Sec. 2.3 (doc/optimal_curves.md,
 // "Hierarchy"): start from the input polygon (with the constrained edges split, constraints.h),
 // solve the level (solver.h), subdivide at edge midpoints where
 //   max(eps(l_j, phi_j), eps(l_j, phi_{j+1})) > eps_max,   eps(l, phi) = (l/2) tan(|phi|/4)

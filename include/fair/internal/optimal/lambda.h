@@ -1,6 +1,6 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// The lambda trade-off of Gumhold's Sec. 3.2 (eqs. 10-12; doc/optimal_curves_solver.md, "Lambda"):
+// The lambda trade-off of Gumhold's Sec. 3.2 (eqs. 10-12; doc/optimal_curves.md, "Lambda"):
 //   beta = q(eta) (1 - lambda), beta0 = lambda,  q(eta) = 4 * 10^(3.5 eta + 0.08),
 // the x4 being the true-curvature convention (kappa -> 2 kappa multiplies |kappa L0|^2 by 4, so the
 // paper's q must be multiplied by 4 to keep its balance against the length term). eta_i is the

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // The level optimiser of Gumhold's optimal curves (Sec. 2.3.2, replaced by Newton as issue 11
-// asks; doc/optimal_curves_solver.md, "Level solve"). Unknowns: one scalar per free vertex (its
+// asks; doc/optimal_curves.md, "Level solve"). Unknowns: one scalar per free vertex (its
 // offset along the vertex normal n_j, fixed during a step and recomputed after it) and one per TIE
 // (the two neighbours of a single tangent/normal constraint, see constraints.h). Every unknown u_k moves its vertices as
 // c_a += u_k v_a, so the reduced gradient is sum_a v_a . g_a and the reduced Hessian

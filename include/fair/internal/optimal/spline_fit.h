@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // Interpolating splines through every vertex of a polygon (issue 11 §4, the CAD output of the
-// optimal curves), in double. The derivations are in doc/optimal_curves_output.md.
+// optimal curves), in double. The derivations are in doc/optimal_curves.md.
 //
 // Parameter: cumulative chord length, t_0 = 0, t_{i+1} = t_i + |p_{i+1} - p_i| (closed: one more
 // interval p_{n-1} -> p_0). For a polygon sampled densely from a smooth curve the chord length
@@ -112,7 +112,7 @@ inline std::vector<Vec2> cubic_slopes(const std::vector<Vec2>& p, const std::vec
     c[i] = h[l];
     for (int k = 0; k < 2; ++k) r[k][i] = 3 * (h[i % edges] * d[l][k] + h[l] * d[i % edges][k]);
   }
-  if (!closed) { // not-a-knot rows (derivation in doc/optimal_curves_output.md)
+  if (!closed) { // not-a-knot rows (derivation in doc/optimal_curves.md)
     const std::size_t e = edges;
     b[0] = h[1];
     c[0] = h[0] + h[1];
