@@ -54,6 +54,10 @@ struct Optimal_curve_options {
   /// per input segment lambda_i (eq. 10 locally, blended with phi_4 as in Sec. 3.2); empty = off.
   /// Size: points - 1 (open) or points (closed). Takes precedence over `lambda`.
   std::vector<double> segment_lambda;
+  /// The q of eq. 10 held fixed (> 0, this library's true-curvature convention: the paper's
+  /// q = 100 of Fig. 6a is 400 here) instead of q(eta) of eqs. 11-12 (0 = q(eta); then the
+  /// lambda = 1 reference curve is solved first to measure eta). Finite and >= 0.
+  double lambda_length_scale = 0;
   std::vector<Point_constraint> constraints;
   double resolution = 500;  ///< rho (> 0): pixels per extent (twice the largest distance from the centroid, doc)
   Optimal_curve_solver solver = Optimal_curve_solver::NEWTON;

@@ -413,6 +413,36 @@ TEST(OptimiserLambda, FamilyHasMonotoneLength) {
   }
 }
 
+// q held fixed (lambda_length_scale, Fig. 6a): eq. 10 is then beta = q (1 - lambda), beta0 =
+// lambda, which is the plain weighted functional; and a larger q pulls the curve towards the
+// polygon (shorter), monotonically.
+TEST(OptimiserLambda, FixedQIsThePlainWeightedFunctional) {
+  Optimal_curve_options fixed;
+  fixed.lambda = 0.25;
+  fixed.lambda_length_scale = 400;
+  fixed.resolution = 200;
+  Optimal_curve_options plain;
+  plain.length_weight = 400 * 0.75;
+  plain.curvature_weight = 0.25;
+  plain.resolution = 200;
+  const Optimal_curve_2<K> a(wave, fixed), b(wave, plain);
+  ASSERT_EQ(a.report().status, Optimal_curve_status::CONVERGED);
+  ASSERT_EQ(a.polygon().size(), b.polygon().size());
+  for (std::size_t i = 0; i < a.polygon().size(); ++i)
+    EXPECT_LT(std::sqrt(CGAL::squared_distance(a.polygon()[i], b.polygon()[i])), 1e-12);
+  double previous = std::numeric_limits<double>::infinity();
+  for (double q : {4.0, 40.0, 400.0, 4000.0}) {
+    Optimal_curve_options o = fixed;
+    o.lambda = 0.5;
+    o.lambda_length_scale = q;
+    const Optimal_curve_2<K> c(wave, o);
+    ASSERT_EQ(c.report().status, Optimal_curve_status::CONVERGED) << "q " << q;
+    const double l = polygon_length(c.polygon(), false);
+    EXPECT_LT(l, previous) << "q " << q;
+    previous = l;
+  }
+}
+
 TEST(OptimiserLambda, LocalLambdaChangesOnlyNearbySegments) {
   const std::vector<P> p = {P(0, 0), P(1, 1.5), P(2, 0), P(3, 1.5), P(4, 0), P(5, 1.5), P(6, 0), P(7, 1.5)};
   Optimal_curve_options o;
@@ -543,6 +573,9 @@ TEST(OptimiserErrors, BadPointsAndOptions) {
   b = o;
   b.segment_lambda = {0.5, 0.5};
   expect_error<fair::Precondition_error>(wave, b, "segment_lambda has 2");
+  b = o;
+  b.lambda_length_scale = -1;
+  expect_error<fair::Precondition_error>(wave, b, "lambda_length_scale (q) = -1");
   b = o;
   b.resolution = 0;
   expect_error<fair::Precondition_error>(wave, b, "resolution = 0");

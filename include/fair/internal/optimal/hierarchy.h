@@ -167,6 +167,8 @@ inline void check_solve_input(const std::vector<Vec2>& p, const Optimal_curve_op
             "] (alpha_k) = ", o.derivative_exponent[k], " must be >= 1");
     derivative = derivative || o.derivative_weight[k] > 0;
   }
+  require(std::isfinite(o.lambda_length_scale) && o.lambda_length_scale >= 0, fn, ": lambda_length_scale (q) = ",
+          o.lambda_length_scale, " must be finite and >= 0 (0 = q(eta) of eq. 12)");
   require(o.lambda == -1 || (o.lambda >= 0 && o.lambda <= 1), fn, ": lambda = ", o.lambda, " must be in [0, 1] (or -1 = off)");
   if (!o.segment_lambda.empty()) {
     const std::size_t segments = o.closed ? p.size() : p.size() - 1;
@@ -266,6 +268,11 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
   }
   const std::size_t m = points.size(), segments = o.closed ? m : m - 1;
   std::vector<double> lambda = o.segment_lambda.empty() ? std::vector<double>(segments, o.lambda) : o.segment_lambda;
+  if (o.lambda_length_scale > 0)  // q held fixed: no reference curve, no eta
+    return run_hierarchy(points, o, [&](const std::vector<Vec2>& c, const std::vector<std::size_t>& interpolation,
+                                        std::vector<double>& beta, std::vector<double>& beta0) {
+      lambda_weights(c, o.closed, interpolation, lambda, std::vector<double>(), beta, beta0, o.lambda_length_scale);
+    });
   // The lambda = 1 reference curve (beta = 0, beta0 = 1) for eta of eq. 11; guarded by
   // lambda = 0.99 with q(0) when it has no finite minimiser (diverges).
   Optimal_curve_options ref = o;

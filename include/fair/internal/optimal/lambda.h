@@ -43,9 +43,10 @@ inline double blended(const std::vector<double>& v, bool closed, std::size_t i, 
 
 /// Per-edge beta and per-vertex beta0 of eq. 10 on the polygon c whose input points are at
 /// `interpolation` (increasing; closed: segment i runs from point i to point i+1 mod m).
+/// fixed_q > 0: q of eq. 10 held at that value (eta unused) instead of q(eta).
 inline void lambda_weights(const std::vector<Vec2>& c, bool closed, const std::vector<std::size_t>& interpolation,
                            const std::vector<double>& lambda, const std::vector<double>& eta,
-                           std::vector<double>& edge_beta, std::vector<double>& vertex_beta0) {
+                           std::vector<double>& edge_beta, std::vector<double>& vertex_beta0, double fixed_q = 0) {
   const std::size_t n = c.size(), m = interpolation.size(), segments = closed ? m : m - 1;
   edge_beta.assign(closed ? n : n - 1, 0);
   vertex_beta0.assign(n, 0);
@@ -58,7 +59,8 @@ inline void lambda_weights(const std::vector<Vec2>& c, bool closed, const std::v
       const double l = vec::norm(vec::sub(c[(v + 1) % n], c[v]));
       vertex_beta0[v] = blended(lambda, closed, i, arc / total);
       const double x = (arc + 0.5 * l) / total;
-      edge_beta[v] = lambda_scale(blended(eta, closed, i, x)) * (1 - blended(lambda, closed, i, x));
+      const double q = fixed_q > 0 ? fixed_q : lambda_scale(blended(eta, closed, i, x));
+      edge_beta[v] = q * (1 - blended(lambda, closed, i, x));
       arc += l;
     }
     if (!closed && i + 1 == segments) vertex_beta0[n - 1] = blended(lambda, closed, i, 1.0);
