@@ -11,6 +11,8 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <sstream>
+
 namespace {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -23,7 +25,20 @@ void check_indices(const std::vector<std::size_t>& v, std::size_t n, const char*
       fair_fuzz::fuzz_fail(std::string(what) + ": index list not increasing in [0, n)");
 }
 
+// With FAIR_FUZZ_VERBOSE set (replaying a finding), the input and the report of every solve.
+void describe(const fair::Kappa_curve_2<K>& c) {
+  if (!std::getenv("FAIR_FUZZ_VERBOSE")) return;
+  std::fprintf(stderr, "closed %d, weights %d, %zu points:\n", int(c.is_closed()), int(c.options().weights),
+               c.points().size());
+  for (const Point_2& q : c.points()) std::fprintf(stderr, "  %.17g %.17g\n", q.x(), q.y());
+  for (const double w : c.options().fixed_weights) std::fprintf(stderr, "  weight %.17g\n", w);
+  std::ostringstream out;
+  out << c.report();
+  std::fprintf(stderr, "%s\n", out.str().c_str());
+}
+
 void check_curve(const fair::Kappa_curve_2<K>& c) {
+  describe(c);
   const fair::Kappa_solve_report& r = c.report();
   const std::size_t n = c.points().size();
   if (c.number_of_pieces() != (c.is_closed() ? n : n - 2)) fair_fuzz::fuzz_fail("wrong number of pieces");
