@@ -26,8 +26,13 @@ for f in "$root"/fuzz/fuzz_*.cpp; do
 done
 if [ "$which" = all ]; then targets=("${all_targets[@]}"); else targets=("$which"); fi
 
-cxx=${CXX:-$(command -v clang++ || command -v clang++-14)}
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$cxx" -DFAIR_FUZZ=ON \
+# The compiler is chosen once, when build-fuzz/ is first configured (changing it later would
+# make cmake start the build directory afresh).
+compiler=()
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  compiler=(-DCMAKE_CXX_COMPILER="${CXX:-$(command -v clang++ || command -v clang++-14)}")
+fi
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "${compiler[@]}" -DFAIR_FUZZ=ON \
   -DFAIR_BUILD_TOOLS=OFF -DFAIR_BUILD_EXAMPLES=OFF -DFAIR_BUILD_BENCHMARKS=OFF >/dev/null || exit 2
 
 status=0
@@ -50,10 +55,13 @@ for t in "${targets[@]}"; do
   merged=$build/merged/$t
   rm -rf "$merged"; mkdir -p "$merged"
   "$exe" -merge=1 -max_len="$max_len" -timeout="$timeout" -rss_limit_mb=2048 "$merged" "$corpus" "$work" \
-    >"$build/$t.merge.log" 2>&1 && { rm -rf "$corpus"; mv "$merged" "$corpus"; }
+    >"$build/$t.merge.log" 2>&1 && {
+      # The reproducers of fixed findings (regress-*) stay, under their names, whatever their coverage.
+      find "$corpus" -maxdepth 1 -name 'regress-*' -exec cp {} "$merged/" \;
+      rm -rf "$corpus"; mv "$merged" "$corpus"; }
   kept=$(find "$corpus" -type f | wc -l)
   found=$(find "$findings" -type f | wc -l)
-  echo "$t: executions ${execs:-?}, wall ${wall} s, ${cov:-cov ?}, corpus $kept files ($(du -sk "$corpus" | cut -f1) kB), exit $rc, findings $found"
+  echo "$t: executions ${execs:-?}, wall ${wall} s, ${cov:-cov ?}, corpus $kept files ($(cat "$corpus"/* | wc -c) bytes), exit $rc, findings $found"
   if [ "$rc" -ne 0 ] || [ "$found" -ne 0 ]; then
     status=1
     grep -E 'ERROR|FUZZ ORACLE|SUMMARY|Test unit written' "$log" | head -5

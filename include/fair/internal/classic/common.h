@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace fair {
@@ -37,6 +38,7 @@ std::vector<typename K::FT> classic_knot_intervals(const std::vector<typename K:
   const std::size_t m = closed ? n : n - 1;
   std::vector<FT> h;
   h.reserve(m);
+  double total = 0;  // the last knot: finite intervals can still sum beyond double
   for (std::size_t i = 0; i < m; ++i) {
     if (spacing == Knot_spacing::UNIFORM) {
       h.push_back(FT(1));
@@ -53,6 +55,11 @@ std::vector<typename K::FT> classic_knot_intervals(const std::vector<typename K:
                                         " and ", j, " is ", hi, " (distance ", d,
                                         " in double); points must be distinct and their distance "
                                         "representable"));
+    total += hi;
+    if (!std::isfinite(total))
+      throw Invalid_input_error(message(method, ": the ", to_string(spacing), " knots overflow double at point ", j,
+                                        " (the intervals sum beyond ", std::numeric_limits<double>::max(),
+                                        "); the input coordinates are too large for this number type"));
     h.push_back(FT(hi));
   }
   return h;
