@@ -299,7 +299,16 @@ private:
   }
   // Finite data with a huge alpha or coordinates near 1e308 can give pieces (or derivatives)
   // that overflow double: refused (Invalid_input_error) rather than handed out with inf or NaN.
-  void check_pieces() const { internal::classic::classic_check_finite_pieces(pieces(), "Cardinal_spline_2"); }
+  void check_pieces() const {
+    internal::classic::classic_check_finite_pieces(pieces(), "Cardinal_spline_2");
+    for (std::size_t i = 0; i < number_of_pieces(); ++i) {
+      const Vector_2 d3 = third_derivative(i);
+      const double x = CGAL::to_double(d3.x()), y = CGAL::to_double(d3.y());
+      if (!std::isfinite(x) || !std::isfinite(y))
+        throw Invalid_input_error(internal::message("Cardinal_spline_2: the third derivative of segment ", i, " is (", x,
+                                                    ", ", y, ") in this number type: the coordinates are too large"));
+    }
+  }
   void check_segment(std::size_t i) const {
     internal::require(i < number_of_pieces(), "Cardinal_spline_2: piece index ", i, " >= number of pieces ",
                       number_of_pieces());
