@@ -88,14 +88,18 @@ public:
 
   /// Signed curvature kappa(t) = (c' x c'') / |c'|^3, computed in double from double control
   /// points, scale-safe (no overflow or underflow unless kappa itself is not representable).
-  /// Throws Precondition_error at a singular point (c'(t) = 0 in double), where it is undefined.
+  /// Throws Precondition_error at a singular point (c'(t) = 0 in double), where it is undefined,
+  /// and when |kappa(t)| exceeds the double range (a tiny piece: it would be inf).
   double curvature(double t) const {
     double d1x, d1y, d2x, d2y;
     derivatives_double(t, d1x, d1y, d2x, d2y);
     const double speed = std::hypot(d1x, d1y);
     internal::require(speed > 0 && std::isfinite(speed), "Bezier_2::curvature: singular point at t = ", t,
                       " (c'(t) = (", d1x, ", ", d1y, "))");
-    return internal::common::signed_curvature(d1x, d1y, d2x, d2y);
+    const double k = internal::common::signed_curvature(d1x, d1y, d2x, d2y);
+    internal::require(std::isfinite(k), "Bezier_2::curvature: |kappa(", t, ")| is beyond the double range (c'(t) = (",
+                      d1x, ", ", d1y, "), c''(t) = (", d2x, ", ", d2y, "))");
+    return k;
   }
 
   /// c'(t) and c''(t) in double (fast path for sampling and quadrature).

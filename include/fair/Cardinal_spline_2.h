@@ -28,6 +28,7 @@
 #include <fair/Errors.h>
 #include <fair/Fairness_metrics.h>
 #include <fair/internal/cardinal/optimum.h>
+#include <fair/internal/classic/common.h>
 #include <fair/internal/common/input_checks.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -64,7 +65,11 @@ std::pair<Point_2, Point_2> cardinal_auxiliary_points(const std::vector<Point_2>
                                                       const typename CGAL::Kernel_traits<Point_2>::Kernel::FT& alpha) {
   internal::common::check_interpolation_input(p, 3, false, "cardinal_auxiliary_points");
   internal::require(!CGAL::is_zero(alpha), "cardinal_auxiliary_points: alpha = 0 has no optimal auxiliary points (eqs. 16-17 divide by alpha)");
-  return internal::cardinal::auxiliary_points_unchecked(p, alpha);
+  const std::pair<Point_2, Point_2> aux = internal::cardinal::auxiliary_points_unchecked(p, alpha);
+  // A tiny alpha (1 - 2/alpha huge) or huge coordinates overflow double.
+  internal::common::check_finite_points(std::vector<Point_2>{aux.first, aux.second},
+                                        "cardinal_auxiliary_points (auxiliary points overflow)");
+  return aux;
 }
 
 /// The minimiser of the approximate curvature variation energy of eq. 10.
@@ -102,9 +107,12 @@ optimal_cardinal_parameters(const std::vector<Point_2>& p, bool closed = false) 
         " <= 0 (sum d_i.m_i / sum |d_i|^2 = ", CGAL::to_double(M) / CGAL::to_double(D),
         "): the data fold back on themselves and no Cardinal spline with alpha > 0 minimises eq. 10; "
         "use a fixed alpha such as 1/2 (Catmull-Rom)"));
-  Cardinal_parameters<K> out{alpha, p.front(), p.back(), s.energy(alpha), closed};
+  Cardinal_parameters<K> out{alpha, p.front(), p.back(), internal::cardinal::checked_energy(s.energy(alpha), method),
+                             closed};
   if (!closed) {
     const std::pair<Point_2, Point_2> aux = internal::cardinal::auxiliary_points_unchecked(p, alpha);
+    internal::common::check_finite_points(std::vector<Point_2>{aux.first, aux.second},
+                                          "optimal_cardinal_parameters (auxiliary points overflow)");
     out.aux_start = aux.first;
     out.aux_end = aux.second;
     // With the optimal auxiliary points the two end segments contribute 0 (see the doc page):
@@ -136,6 +144,7 @@ public:
     check_alpha();
     p_.insert(p_.begin(), aux_start);
     p_.push_back(aux_end);
+    check_pieces();
   }
 
   /// Closed curve (closed = true, N >= 3 points, the last point is joined back to the first; do not
@@ -152,6 +161,7 @@ public:
       p_.insert(p_.begin(), aux.first);
       p_.push_back(aux.second);
     }
+    check_pieces();
   }
 
   /// The curve with the optimal parameter and auxiliary points of optimal_cardinal_parameters().
@@ -260,7 +270,8 @@ public:
   }
 
   /// The approximate curvature variation energy of eq. 10, sum over all segments of
-  /// int_0^1 |r_i'''(t)|^2 dt (eq. 9), exact in an exact kernel.
+  /// int_0^1 |r_i'''(t)|^2 dt (eq. 9), exact in an exact kernel. \throws Invalid_input_error
+  /// if it overflows a floating-point FT (coordinates beyond ~1e150).
   FT approximate_energy() const {
     internal::cardinal::Cardinal_sums<FT> s;
     const Point_2 *q0, *q1, *q2, *q3;
@@ -268,7 +279,7 @@ public:
       segment_points(i, q0, q1, q2, q3);
       s.add(*q0, *q1, *q2, *q3);
     }
-    return s.energy(alpha_);
+    return internal::cardinal::checked_energy(s.energy(alpha_), "Cardinal_spline_2::approximate_energy");
   }
 
   /// The true curvature variation energy, summed over the segments:
@@ -285,6 +296,18 @@ private:
     internal::require(std::isfinite(CGAL::to_double(alpha_)) && CGAL::is_positive(alpha_),
                       "Cardinal_spline_2: alpha = ", CGAL::to_double(alpha_),
                       " must be finite and > 0 (alpha = (1 - tension)/2; alpha <= 0 collapses or reverses the tangents)");
+  }
+  // Finite data with a huge alpha or coordinates near 1e308 can give pieces (or derivatives)
+  // that overflow double: refused (Invalid_input_error) rather than handed out with inf or NaN.
+  void check_pieces() const {
+    internal::classic::classic_check_finite_pieces(pieces(), "Cardinal_spline_2");
+    for (std::size_t i = 0; i < number_of_pieces(); ++i) {
+      const Vector_2 d3 = third_derivative(i);
+      const double x = CGAL::to_double(d3.x()), y = CGAL::to_double(d3.y());
+      if (!std::isfinite(x) || !std::isfinite(y))
+        throw Invalid_input_error(internal::message("Cardinal_spline_2: the third derivative of segment ", i, " is (", x,
+                                                    ", ", y, ") in this number type: the coordinates are too large"));
+    }
   }
   void check_segment(std::size_t i) const {
     internal::require(i < number_of_pieces(), "Cardinal_spline_2: piece index ", i, " >= number of pieces ",

@@ -126,10 +126,15 @@ public:
     const FT dx = s.x() - samples_[i].x(), dy = s.y() - samples_[i].y();
     return dx * dx + dy * dy;
   }
-  /// |s(t_i) - q_i| for every sample, in double (the square root of the exact squared distance).
+  /// |s(t_i) - q_i| for every sample, in double: std::hypot of the differences (formed in FT,
+  /// exact in an exact kernel), so that it does not overflow where the squared distance would
+  /// (coordinates beyond 1e154).
   std::vector<double> distances_to_samples() const {
     std::vector<double> d(samples_.size());
-    for (std::size_t i = 0; i < d.size(); ++i) d[i] = std::sqrt(CGAL::to_double(squared_distance_to_sample(i)));
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      const Point_2 s = point_at_sample(i);
+      d[i] = std::hypot(CGAL::to_double(s.x() - samples_[i].x()), CGAL::to_double(s.y() - samples_[i].y()));
+    }
     return d;
   }
   /// max_i |s(t_i) - q_i|.
@@ -143,7 +148,11 @@ private:
                const Csr_spline_options& options)
     : samples_(std::move(samples)), closed_(closed), given_parameters_(parameters != nullptr), options_(options),
       data_(construct(samples_, parameters, closed, options)),
-      spline_(std::move(data_.breakpoints), std::move(data_.control_points), closed) {}
+      spline_(std::move(data_.breakpoints), std::move(data_.control_points), closed) {
+    // Finite control points can still give Bezier pieces (or their derivatives) that overflow,
+    // e.g. coordinates near 1e308 or extreme knot ratios: refuse them rather than hand out NaN.
+    internal::classic::classic_check_finite_pieces(spline_.polynomial_pieces(), "Csr_spline_2");
+  }
 
   static internal::csr::Construction<K> construct(const std::vector<Point_2>& samples, const std::vector<FT>* parameters,
                                                   bool closed, const Csr_spline_options& options) {

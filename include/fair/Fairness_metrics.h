@@ -97,7 +97,8 @@ Quadrature_estimate arc_length(const std::vector<Piece>& curve, const Quadrature
 }
 
 /// Bending (strain) energy int kappa^2 ds = sum over pieces of int_0^1 kappa(t)^2 |c'(t)| dt.
-/// \throws Precondition_error at a singular point met by the quadrature.
+/// \throws Precondition_error at a singular point met by the quadrature; Invalid_input_error if the
+/// integral overflows double.
 template <class Piece>
 Quadrature_estimate bending_energy(const std::vector<Piece>& curve, const Quadrature_options& options = Quadrature_options()) {
   return internal::metrics::bending_energy(curve, options);
@@ -106,7 +107,8 @@ Quadrature_estimate bending_energy(const std::vector<Piece>& curve, const Quadra
 /// Curvature variation energy: int (dkappa/ds)^2 ds = sum int_0^1 (dkappa/dt)^2 / |c'| dt
 /// (Energy_measure::ARC_LENGTH), or sum int_0^1 (dkappa/dt)^2 dt (Energy_measure::PARAMETER, eq. 5
 /// of Li's paper). Derivatives of order 3 are exact for Bernstein-form pieces.
-/// \throws Precondition_error at a singular point met by the quadrature.
+/// \throws Precondition_error at a singular point met by the quadrature; Invalid_input_error if the
+/// integral overflows double.
 template <class Piece>
 Quadrature_estimate curvature_variation_energy(const std::vector<Piece>& curve,
                                                Energy_measure measure = Energy_measure::ARC_LENGTH,

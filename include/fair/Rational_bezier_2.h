@@ -133,7 +133,8 @@ public:
 
   /// Signed curvature det(c', c'') / |c'|^3 in double (from double control points), scale-safe:
   /// no overflow or underflow unless kappa itself is not representable (internal/common/curvature.h).
-  /// \throws Precondition_error if t is not in [0,1] or the tangent vanishes at t.
+  /// \throws Precondition_error if t is not in [0,1], the tangent vanishes at t, or |kappa(t)|
+  /// exceeds the double range (a tiny piece: it would be inf).
   double curvature(double t) const {
     internal::require(t >= 0 && t <= 1, "Rational_bezier_2::curvature: t = ", t, " is not in [0,1]");
     double cx, cy, dx, dy, ex, ey;
@@ -141,7 +142,10 @@ public:
     const double n = std::hypot(dx, dy);
     internal::require(n > 0 && std::isfinite(n), "Rational_bezier_2::curvature: the tangent vanishes at t = ", t,
                       " (|c'| = ", n, ")");
-    return internal::common::signed_curvature(dx, dy, ex, ey);
+    const double k = internal::common::signed_curvature(dx, dy, ex, ey);
+    internal::require(std::isfinite(k), "Rational_bezier_2::curvature: |kappa(", t,
+                      ")| is beyond the double range (|c'| = ", n, ")");
+    return k;
   }
 
   /// Homogeneous de Casteljau subdivision at s in (0,1): the pieces on [0,s] and [s,1], each

@@ -94,6 +94,19 @@ private:
   int exponent_ = 0;
 };
 
+/// `e`, an energy of eq. 10, unless it is not finite in a floating-point FT: the sums of squares
+/// of finite but huge coordinates (beyond ~1e150) overflow double, and then Invalid_input_error
+/// says so instead of returning inf or NaN. Exact number types are returned as they are.
+template <class FT>
+FT checked_energy(const FT& e, const char* method) {
+  if constexpr (std::is_floating_point<FT>::value) {
+    if (!std::isfinite(e))
+      throw Invalid_input_error(message(method, ": the energy of eq. 10 is ", e,
+                                        " in double: the coordinates are too large for this number type"));
+  }
+  return e;
+}
+
 /// The sums over the interior segments i = 0..n-3 of an open curve (the ones that do not touch an
 /// auxiliary point; eq. 15 / eq. 18), or over all N segments of a closed curve (indices mod N).
 template <class FT, class Point_2>

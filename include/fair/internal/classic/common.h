@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace fair {
@@ -37,6 +38,7 @@ std::vector<typename K::FT> classic_knot_intervals(const std::vector<typename K:
   const std::size_t m = closed ? n : n - 1;
   std::vector<FT> h;
   h.reserve(m);
+  double total = 0;  // the last knot: finite intervals can still sum beyond double
   for (std::size_t i = 0; i < m; ++i) {
     if (spacing == Knot_spacing::UNIFORM) {
       h.push_back(FT(1));
@@ -53,6 +55,11 @@ std::vector<typename K::FT> classic_knot_intervals(const std::vector<typename K:
                                         " and ", j, " is ", hi, " (distance ", d,
                                         " in double); points must be distinct and their distance "
                                         "representable"));
+    total += hi;
+    if (!std::isfinite(total))
+      throw Invalid_input_error(message(method, ": the ", to_string(spacing), " knots overflow double at point ", j,
+                                        " (the intervals sum beyond ", std::numeric_limits<double>::max(),
+                                        "); the input coordinates are too large for this number type"));
     h.push_back(FT(hi));
   }
   return h;
@@ -124,10 +131,33 @@ void classic_check_finite_output(const Point_range& points, const char* method) 
   }
 }
 
-/// classic_check_finite_output over the control points of every piece.
+/// classic_check_finite_output over the control points of every piece, and the same for the
+/// control points of its first and second hodographs, d (c_{k+1} - c_k) and
+/// d (d - 1) (c_{k+2} - 2 c_{k+1} + c_k) for degree d: finite control points whose differences
+/// overflow (coordinates of both signs near 1e308) would give an infinite or NaN derivative.
+/// With these finite, every point, first and second derivative (convex combinations) is finite.
 template <class Piece>
 void classic_check_finite_pieces(const std::vector<Piece>& pieces, const char* method) {
-  for (const Piece& piece : pieces) classic_check_finite_output(piece.control_points(), method);
+  typedef typename Piece::FT FT;
+  for (std::size_t j = 0; j < pieces.size(); ++j) {
+    const auto c = pieces[j].control_points();
+    classic_check_finite_output(c, method);
+    const FT d(static_cast<int>(c.size()) - 1);
+    for (std::size_t k = 0; k + 1 < c.size(); ++k) {
+      const double dx = CGAL::to_double(d * (c[k + 1].x() - c[k].x())), dy = CGAL::to_double(d * (c[k + 1].y() - c[k].y()));
+      double ex = 0, ey = 0;
+      if (k + 2 < c.size()) {
+        const FT dd = d * (d - FT(1));
+        ex = CGAL::to_double(dd * (c[k + 2].x() - FT(2) * c[k + 1].x() + c[k].x()));
+        ey = CGAL::to_double(dd * (c[k + 2].y() - FT(2) * c[k + 1].y() + c[k].y()));
+      }
+      if (!std::isfinite(dx) || !std::isfinite(dy) || !std::isfinite(ex) || !std::isfinite(ey))
+        throw Invalid_input_error(message(method, ": piece ", j, ": the derivatives are not finite (first difference (",
+                                          dx, ", ", dy, "), second difference (", ex, ", ", ey,
+                                          ") of control point ", k, "); the input coordinates are too large for "
+                                          "this number type"));
+    }
+  }
 }
 
 /// The Hermite interpolant through p_0..p_{n-1} with derivatives m_i = c'(u_i) (d/du) on the

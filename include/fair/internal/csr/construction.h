@@ -115,7 +115,9 @@ Construction<K> construct(const std::vector<typename K::Point_2>& q, const std::
     xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y), ymax = std::max(ymax, y);
   }
   const double extent = std::hypot(xmax - xmin, ymax - ymin);
-  out.epsilon = (extent > 0 && std::isfinite(extent)) ? relative_epsilon / extent : 0.0;
+  // Capped at infinite_curvature / 2 (DBL_MAX / 8): a large relative epsilon over a tiny extent
+  // would overflow to inf, and then (a + eps) / (a + b + 2 eps) of the add-epsilon rule is NaN.
+  out.epsilon = (extent > 0 && std::isfinite(extent)) ? std::min(relative_epsilon / extent, infinite_curvature / 2) : 0.0;
 
   // Index i + k (|k| <= 2 < size) modulo `size`, without an integer division (this runs ~10
   // times per sample).

@@ -9,6 +9,7 @@
 #include <fair/internal/metrics/pieces.h>
 #include <fair/internal/metrics/quadrature.h>
 
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -37,6 +38,11 @@ Quadrature_estimate integrate_over_curve(const std::vector<Piece>& curve, F f, I
         },
         0.0, 1.0, o, what);
   }
+  // Finite pieces can still have an integral beyond double (kappa ~ 1e300 on a tiny piece, its
+  // square overflows): a typed refusal rather than inf or NaN.
+  if (!std::isfinite(total.value) || !std::isfinite(total.error_bound))
+    throw Invalid_input_error(message(what, ": the integral is ", total.value, " (error bound ", total.error_bound,
+                                      ") in double: the integrand overflows for this curve's scale"));
   return total;
 }
 

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Runs the libFuzzer targets of fuzz/ (doc/fuzzing.md). Not part of CI.
+#
+#   tools/fuzz.sh [target|all] [executions]      (default: all, 1000000)
+#
+# Builds with clang into build-fuzz/ (-DFAIR_FUZZ=ON: -fsanitize=fuzzer,address,undefined), then
+# for each target, one at a time: runs `executions` inputs starting from fuzz/corpus/<target>/
+# (new inputs go to build-fuzz/work/<target>/, crashes to build-fuzz/findings/<target>/), merges
+# the new coverage into a minimised fuzz/corpus/<target>/ (-merge=1) and prints the executions,
+# the wall time, the coverage (cov, ft) and the findings. Exit status 1 if a target found
+# something. Be kind to a shared machine: `nice -n 19 tools/fuzz.sh`.
+# Environment: FUZZ_JOBS (build parallelism, default 2), FUZZ_MAX_LEN (default 4096),
+# FUZZ_TIMEOUT (seconds per input, default 1), FUZZ_BUILD (default build-fuzz).
+set -u
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${FUZZ_BUILD:-$root/build-fuzz}
+jobs=${FUZZ_JOBS:-2}
+max_len=${FUZZ_MAX_LEN:-4096}
+timeout=${FUZZ_TIMEOUT:-1}
+which=${1:-all}
+runs=${2:-1000000}
+
+all_targets=()
+for f in "$root"/fuzz/fuzz_*.cpp; do
+  n=$(basename "$f" .cpp); all_targets+=("${n#fuzz_}")
+done
+if [ "$which" = all ]; then targets=("${all_targets[@]}"); else targets=("$which"); fi
+
+# The compiler is chosen once, when build-fuzz/ is first configured (changing it later would
+# make cmake start the build directory afresh).
+compiler=()
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  compiler=(-DCMAKE_CXX_COMPILER="${CXX:-$(command -v clang++ || command -v clang++-14)}")
+fi
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "${compiler[@]}" -DFAIR_FUZZ=ON \
+  -DFAIR_BUILD_TOOLS=OFF -DFAIR_BUILD_EXAMPLES=OFF -DFAIR_BUILD_BENCHMARKS=OFF >/dev/null || exit 2
+
+status=0
+for t in "${targets[@]}"; do
+  cmake --build "$build" -j"$jobs" --target "fuzz_${t}_libfuzzer" >/dev/null || { echo "$t: build failed"; exit 2; }
+  exe=$build/fuzz/fuzz_$t
+  corpus=$root/fuzz/corpus/$t
+  work=$build/work/$t
+  findings=$build/findings/$t
+  mkdir -p "$corpus" "$work" "$findings"
+  log=$build/$t.log
+  start=$(date +%s)
+  "$exe" -runs="$runs" -max_len="$max_len" -timeout="$timeout" -rss_limit_mb=2048 \
+    -print_final_stats=1 -artifact_prefix="$findings/" "$work" "$corpus" >"$log" 2>&1
+  rc=$?
+  wall=$(( $(date +%s) - start ))
+  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  cov=$(grep -Eo 'cov: [0-9]+ ft: [0-9]+' "$log" | tail -1)
+  # Merge the new coverage into a minimised corpus (keeps the seeds' coverage, drops redundancy).
+  merged=$build/merged/$t
+  rm -rf "$merged"; mkdir -p "$merged"
+  "$exe" -merge=1 -max_len="$max_len" -timeout="$timeout" -rss_limit_mb=2048 "$merged" "$corpus" "$work" \
+    >"$build/$t.merge.log" 2>&1 && {
+      # The reproducers of fixed findings (regress-*) stay, under their names, whatever their coverage.
+      find "$corpus" -maxdepth 1 -name 'regress-*' -exec cp {} "$merged/" \;
+      rm -rf "$corpus"; mv "$merged" "$corpus"; }
+  kept=$(find "$corpus" -type f | wc -l)
+  found=$(find "$findings" -type f | wc -l)
+  echo "$t: executions ${execs:-?}, wall ${wall} s, ${cov:-cov ?}, corpus $kept files ($(cat "$corpus"/* | wc -c) bytes), exit $rc, findings $found"
+  if [ "$rc" -ne 0 ] || [ "$found" -ne 0 ]; then
+    status=1
+    grep -E 'ERROR|FUZZ ORACLE|SUMMARY|Test unit written' "$log" | head -5
+  fi
+done
+exit $status
