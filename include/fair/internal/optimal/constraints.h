@@ -50,14 +50,6 @@ struct Vertex_roles {
   Vec2 front_tangent{{1, 0}}, back_tangent{{1, 0}};
 };
 
-// Small vector helpers of the solver (namespace vec: no clash with the functional's own).
-namespace vec {
-inline double cross(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
-inline double dot(const Vec2& a, const Vec2& b) { return a[0] * b[0] + a[1] * b[1]; }
-inline double norm(const Vec2& a) { return std::hypot(a[0], a[1]); }
-inline Vec2 sub(const Vec2& a, const Vec2& b) { return {{a[0] - b[0], a[1] - b[1]}}; }
-inline Vec2 unit(const Vec2& a) { const double l = norm(a); return {{a[0] / l, a[1] / l}}; }
-} // namespace vec
 
 /// A constraint in polygon terms: tangent(s) at polygon vertex `vertex` (the point itself).
 struct Placed_constraint {

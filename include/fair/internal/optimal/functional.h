@@ -29,6 +29,7 @@
 #define FAIR_INTERNAL_OPTIMAL_FUNCTIONAL_H
 
 #include <fair/Errors.h>
+#include <fair/internal/optimal/vec2.h>
 #include <fair/internal/optimal/banded.h>
 #include <fair/internal/optimal/curvature.h>
 #include <fair/internal/optimal/dual.h>
@@ -42,7 +43,6 @@ namespace fair {
 namespace internal {
 namespace optimal {
 
-typedef std::array<double, 2> Vec2;
 
 /// Highest curvature derivative of eq. 5 the discretisation provides (the d <= 4).
 constexpr int max_derivative_order = 4;

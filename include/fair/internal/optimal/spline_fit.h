@@ -36,6 +36,7 @@
 #define FAIR_INTERNAL_OPTIMAL_SPLINE_FIT_H
 
 #include <fair/Errors.h>
+#include <fair/internal/optimal/vec2.h>
 #include <fair/internal/classic/tridiagonal.h>
 
 #include <algorithm>
@@ -48,7 +49,6 @@ namespace fair {
 namespace internal {
 namespace optimal {
 
-typedef std::array<double, 2> Vec2;
 
 /// Samples per piece of the distance measurement (see the header comment).
 constexpr int fit_distance_samples = 32;
