@@ -54,6 +54,20 @@ std::vector<Rational_quadratic_bezier_2<K>> assemble_pieces(const Problem& pb, c
   std::vector<Rational_quadratic_bezier_2<K>> pieces;
   pieces.reserve(n);
   const typename K::Orientation_2 orient = K().orientation_2_object();
+  // Coordinates near the top of the double range: centre + scale * p can overflow even though
+  // the solver's normalised values are finite. A non-finite point must not reach the kernel's
+  // predicates (EPICK's exact fallback cannot represent it; found by fuzzing).
+  auto finite = [](const Point_2& p) {
+    return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y()));
+  };
+  for (std::size_t j = 0; j < n; ++j) {
+    if (!finite(P[j]) || !finite(E[j]) || !finite(E[j + 1])) {
+      const Point_2& Q = q[pb.point_index(j)];
+      throw Invalid_input_error(message("Kappa_curve_2: the control points of the piece through point ",
+                                        pb.point_index(j), " = (", CGAL::to_double(Q.x()), ", ", CGAL::to_double(Q.y()),
+                                        ") overflow double; scale the input down"));
+    }
+  }
   for (std::size_t j = 0; j < n; ++j) {
     const double w = st.w[j];
     if (!(std::isfinite(w) && w > 0) || E[j] == E[j + 1] || orient(E[j], P[j], E[j + 1]) == CGAL::COLLINEAR) {
