@@ -96,14 +96,6 @@ extern "C" int FAIR_FUZZ_ENTRY(kappa)(const std::uint8_t* data, std::size_t size
     const std::uint8_t b = in.byte();
     opt.weight_clamp = b < 240 ? 0.05 + b / 200.0 : in.number();
   }
-  // Finding kappa-1 (doc/fuzzing.md; fuzz/findings/kappa/subnormal-fixed-weight) is open: a
-  // positive subnormal weight, tension or clamp passes the option checks and the solve reports a
-  // NaN residual. Such inputs are skipped so that the fuzzer looks for other findings; remove
-  // this once the option checks refuse them.
-  auto subnormal = [](double v) { return v > 0 && v < std::numeric_limits<double>::min(); };
-  for (const double v : opt.fixed_weights) if (subnormal(v)) return 0;
-  for (const double v : opt.tension) if (subnormal(v)) return 0;
-  if (subnormal(opt.weight_clamp)) return 0;
   const std::size_t moved = in.byte();
   const std::pair<double, double> to(in.number(), in.number());
   return fair_fuzz::run_guarded([&] {
