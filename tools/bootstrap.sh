@@ -61,7 +61,7 @@ case "${1:-}" in
     setup
     # -g1: line tables only — enough for the sanitizers' file:line stack traces, and much less
     # debug information to generate and link for the CGAL templates than -g
-    configure build-sanitize -DFAIR_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1"
+    configure build-sanitize -DFAIR_SANITIZE=ON -DFAIR_CURVES_GALLERY=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1"
     cmake --build build-sanitize -j "$jobs"
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
       ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -E install_and_consume ;;

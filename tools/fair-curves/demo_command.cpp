@@ -24,6 +24,11 @@ struct Demo_options {
 };
 
 void run_demo(const Demo_options& o) {
+#ifdef FAIR_CURVES_NO_GALLERY
+  (void)o;
+  throw fair::Error("demo: this fair-curves was built without its gallery (cmake -DFAIR_CURVES_GALLERY=OFF); "
+                    "rebuild with -DFAIR_CURVES_GALLERY=ON");
+#endif
   std::vector<fair_curves::Demo_entry> entries = fair_curves::demo_registry();
   std::stable_sort(entries.begin(), entries.end(), [](const fair_curves::Demo_entry& a, const fair_curves::Demo_entry& b) {
     return a.order != b.order ? a.order < b.order : a.name < b.name;
