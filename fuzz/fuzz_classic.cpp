@@ -56,7 +56,7 @@ extern "C" int FAIR_FUZZ_ENTRY(classic)(const std::uint8_t* data, std::size_t si
   return fair_fuzz::run_guarded([&] {
     switch (method) {
       case 0: {
-        const std::size_t end = (variant >> 2) % 3;
+        const std::size_t end = (variant >> 2) % 4;  // natural, clamped, periodic, not-a-knot
         if (end == 1) {
           const fair::Cubic_interpolating_spline_2<K> s(p, Vector_2(a, b), Vector_2(c, d), spacing);
           fair_fuzz::check_pieces(s.pieces());
@@ -64,7 +64,9 @@ extern "C" int FAIR_FUZZ_ENTRY(classic)(const std::uint8_t* data, std::size_t si
           check_spline(s.spline());
         } else {
           const fair::Cubic_interpolating_spline_2<K> s(
-              p, end == 0 ? fair::Spline_end_condition::NATURAL : fair::Spline_end_condition::PERIODIC, spacing);
+              p, end == 0 ? fair::Spline_end_condition::NATURAL
+                        : end == 2 ? fair::Spline_end_condition::PERIODIC : fair::Spline_end_condition::NOT_A_KNOT,
+              spacing);
           fair_fuzz::check_pieces(s.pieces());
           check_knots_and_derivatives(s);
           check_spline(s.spline());

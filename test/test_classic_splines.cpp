@@ -1,5 +1,5 @@
 // Tests of the classic interpolating splines: Cubic_interpolating_spline_2 (natural, clamped,
-// periodic; uniform, centripetal, chordal knots), Catmull_rom_2, and the O(n) tridiagonal solvers.
+// periodic, not-a-knot; uniform, centripetal, chordal knots), Catmull_rom_2, and the O(n) tridiagonal solvers.
 
 #include <fair/Catmull_rom_2.h>
 #include <fair/Cubic_interpolating_spline_2.h>
@@ -166,6 +166,60 @@ TYPED_TEST(Classic_splines, ClampedSplineReproducesCubics) {
   fair::Cubic_interpolating_spline_2<K> ls(line);
   for (std::size_t i = 0; i < ls.pieces().size(); ++i)
     EXPECT_TRUE(same<K>(ls.pieces()[i].point(FT(1) / 3), P(FT(2) * (FT(static_cast<int>(i)) + FT(1) / 3) - 3, -(FT(static_cast<int>(i)) + FT(1) / 3) / 2), 1e-11)) << "line";
+}
+
+// Not-a-knot ends reproduce cubics from the data alone (no end derivatives): exactly in an exact
+// kernel (uniform knots, rational data), and they keep c''' continuous at u_1 and u_{n-1} on any
+// data. Three points give the parabola through them, two the segment.
+TYPED_TEST(Classic_splines, NotAKnotSplineReproducesCubicsAndParabolas) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  const auto nak = fair::Spline_end_condition::NOT_A_KNOT;
+  auto q = [](const FT& u) { return P(u * u * u - 2 * u * u + 3, FT(1) / 2 * u * u * u + u - 1); };
+  for (int last = 3; last <= 7; ++last) {  // 4 .. 8 points
+    std::vector<P> p;
+    for (int i = 0; i <= last; ++i) p.push_back(q(FT(i)));
+    fair::Cubic_interpolating_spline_2<K> s(p, nak);
+    check_interpolation_and_continuity<K>(s, 2);
+    for (std::size_t i = 0; i < s.pieces().size(); ++i)
+      for (int k = 0; k <= 4; ++k)
+        EXPECT_TRUE(same<K>(s.pieces()[i].point(FT(k) / 4), q(FT(static_cast<int>(i)) + FT(k) / 4), 1e-11))
+            << "cubic, " << last + 1 << " points, piece " << i;
+  }
+  auto parabola = [](const FT& u) { return P(3 * u * u - u + 2, -u * u + 4); };
+  fair::Cubic_interpolating_spline_2<K> s3({parabola(FT(0)), parabola(FT(1)), parabola(FT(2))}, nak);
+  for (std::size_t i = 0; i < 2; ++i)
+    for (int k = 0; k <= 4; ++k)
+      EXPECT_TRUE(same<K>(s3.pieces()[i].point(FT(k) / 4), parabola(FT(static_cast<int>(i)) + FT(k) / 4), 1e-11))
+          << "parabola";
+  fair::Cubic_interpolating_spline_2<K> s2({P(1, 2), P(4, -2)}, nak);
+  EXPECT_TRUE(same<K>(s2.pieces()[0].point(FT(1) / 4), P(FT(7) / 4, 1), 1e-11)) << "segment";
+  EXPECT_TRUE(same<K>(s2.pieces()[0].point(FT(1) / 2), P(FT(5) / 2, 0), 1e-11)) << "segment";
+
+  // Random data, every spacing: C2 everywhere, and c''' continuous across u_1 and u_{n-1}
+  // (piece third derivative 6 (b3 - 3 b2 + 3 b1 - b0) in t, over h^3 in u).
+  std::mt19937_64 rng(417);
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  for (fair::Knot_spacing sp : all_spacings)
+    for (int round = 0; round < 4; ++round) {
+      std::vector<P> p;
+      for (int i = 0; i < 5 + round; ++i) p.push_back(P(FT(coordinate(rng)), FT(coordinate(rng))));
+      fair::Cubic_interpolating_spline_2<K> s(p, nak, sp);
+      check_interpolation_and_continuity<K>(s, 2);
+      const auto& b = s.pieces();
+      const auto& u = s.knots();
+      auto third = [&](std::size_t i) {
+        const FT h = u[i + 1] - u[i];
+        return (b[i].control_point(3) - b[i].control_point(0) + FT(3) * (b[i].control_point(1) - b[i].control_point(2))) /
+               (h * h * h);
+      };
+      const std::size_t m = b.size();
+      EXPECT_TRUE(same<K>(third(0).x(), third(1).x(), 1e-9)) << "c''' at u_1";
+      EXPECT_TRUE(same<K>(third(0).y(), third(1).y(), 1e-9)) << "c''' at u_1";
+      EXPECT_TRUE(same<K>(third(m - 2).x(), third(m - 1).x(), 1e-9)) << "c''' at u_{n-1}";
+      EXPECT_TRUE(same<K>(third(m - 2).y(), third(m - 1).y(), 1e-9)) << "c''' at u_{n-1}";
+    }
 }
 
 // Long systems (520 rows) take the solvers' DAG-pruning path for lazy exact numbers (see

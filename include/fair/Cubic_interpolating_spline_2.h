@@ -20,8 +20,18 @@
 //   clamped   m_0 and m_n given (d/du in the chosen spacing: for uniform knots the derivative
 //             with respect to the point index, for chordal knots with respect to chord length);
 //   periodic  the points are a closed polygon, n+1 intervals with h_n from p_n back to p_0, and
-//             (C2) holds at every knot, indices mod n+1.
-// The system is strictly diagonally dominant; it is solved per coordinate by the Thomas
+//             (C2) holds at every knot, indices mod n+1;
+//   not-a-knot  c''' continuous at u_1 and u_{n-1} (the first two and the last two pieces are
+//             one cubic each; de Boor ch. IV): eliminating m_2 from (C2) at u_1 and the jump
+//             condition gives, with d_i = (p_{i+1} - p_i) / h_i,
+//               h_1 m_0 + (h_0 + h_1) m_1 = (h_1 (3 h_0 + 2 h_1) d_0 + h_0^2 d_1) / (h_0 + h_1),
+//             mirrored at the end. It reproduces cubics (the natural spline does not), so a
+//             spline through samples of a smooth curve converges as O(h^4) up to the ends.
+//             Three points give the parabola (both conditions coincide; its slope at u_1 is
+//             (h_1 d_0 + h_0 d_1) / (h_0 + h_1), m_0 = 2 d_0 - m_1, m_2 = 2 d_1 - m_1), two the segment.
+// The system is strictly diagonally dominant (not-a-knot: its two end rows are not, which
+// elimination without pivoting tolerates: the first pivot is h_1 > 0, and the second row's
+// pivot stays positive, de Boor ch. IV); it is solved per coordinate by the Thomas
 // algorithm (open) or by Sherman-Morrison on the cyclic system (periodic): O(n) time and memory.
 //
 // Exactness: with Knot_spacing::UNIFORM every number is rational in the data, so in an exact
@@ -54,7 +64,7 @@
 namespace fair {
 
 /// End conditions of the C2 cubic interpolating spline.
-enum class Spline_end_condition { NATURAL, CLAMPED, PERIODIC };
+enum class Spline_end_condition { NATURAL, CLAMPED, PERIODIC, NOT_A_KNOT };
 
 template <class K>
 class Cubic_interpolating_spline_2 {
@@ -65,8 +75,9 @@ public:
   typedef typename K::Vector_2 Vector_2;
   typedef Bezier_2<K> Piece;
 
-  /// The natural (end = natural, needs >= 2 points) or periodic (end = periodic, needs >= 3
-  /// points; the curve closes from the last point back to the first, which must differ) spline.
+  /// The natural or not-a-knot (end = natural / not_a_knot, needs >= 2 points) or periodic
+  /// (end = periodic, needs >= 3 points; the curve closes from the last point back to the first,
+  /// which must differ) spline.
   /// Throws Invalid_input_error for too few points, non-finite coordinates or coincident
   /// consecutive points, and Precondition_error for end = clamped (use the other constructor).
   explicit Cubic_interpolating_spline_2(std::vector<Point_2> points,
@@ -160,6 +171,8 @@ private:
         b[n - 1] = two;
         dx[n - 1] = three * (p[n - 1].x() - p[n - 2].x()) / h[n - 2];
         dy[n - 1] = three * (p[n - 1].y() - p[n - 2].y()) / h[n - 2];
+      } else if (end_ == Spline_end_condition::NOT_A_KNOT) {
+        not_a_knot_rows(h, b, c, a, dx, dy);
       } else {  // clamped: identity rows
         b[0] = FT(1);
         dx[0] = start_derivative.x();
@@ -170,7 +183,21 @@ private:
       }
     }
     std::vector<FT> mx, my;
-    if (closed) {
+    if (end_ == Spline_end_condition::NOT_A_KNOT && n <= 3) {
+      // the segment (n = 2) or the parabola (n = 3): see the header
+      const FT dx0 = (p[1].x() - p[0].x()) / h[0], dy0 = (p[1].y() - p[0].y()) / h[0];
+      mx.assign(n, dx0);
+      my.assign(n, dy0);
+      if (n == 3) {
+        const FT dx1 = (p[2].x() - p[1].x()) / h[1], dy1 = (p[2].y() - p[1].y()) / h[1];
+        mx[1] = (h[1] * dx0 + h[0] * dx1) / (h[0] + h[1]);
+        my[1] = (h[1] * dy0 + h[0] * dy1) / (h[0] + h[1]);
+        mx[0] = two * dx0 - mx[1];
+        my[0] = two * dy0 - my[1];
+        mx[2] = two * dx1 - mx[1];
+        my[2] = two * dy1 - my[1];
+      }
+    } else if (closed) {
       mx = internal::classic::solve_cyclic_tridiagonal(a, b, c, dx);
       my = internal::classic::solve_cyclic_tridiagonal(a, b, c, dy);
     } else {
@@ -181,6 +208,27 @@ private:
     derivatives_.reserve(n);
     for (std::size_t i = 0; i < n; ++i) derivatives_.push_back(Vector_2(mx[i], my[i]));
     return internal::classic::classic_hermite_pieces<K>(p, derivatives_, h, method);
+  }
+
+  // The two not-a-knot rows (see the header; n >= 4 points, else solved in closed form):
+  // diagonal b, the off-diagonal entry c of row 0 and a of row n-1, right-hand sides dx, dy.
+  void not_a_knot_rows(const std::vector<FT>& h, std::vector<FT>& b, std::vector<FT>& c, std::vector<FT>& a,
+                       std::vector<FT>& dx, std::vector<FT>& dy) const {
+    const std::vector<Point_2>& p = points_;
+    const std::size_t n = p.size(), e = n - 1;  // e intervals
+    if (n <= 3) return;
+    const FT two(2), three(3);
+    b[0] = h[1];
+    c[0] = h[0] + h[1];
+    a[n - 1] = h[e - 2] + h[e - 1];
+    b[n - 1] = h[e - 2];
+    // (h_1 (3 h_0 + 2 h_1) d_0 + h_0^2 d_1) / (h_0 + h_1), d_i as differences over h_i
+    const FT w0 = h[1] * (three * h[0] + two * h[1]) / h[0], w1 = h[0] * h[0] / h[1];
+    dx[0] = (w0 * (p[1].x() - p[0].x()) + w1 * (p[2].x() - p[1].x())) / (h[0] + h[1]);
+    dy[0] = (w0 * (p[1].y() - p[0].y()) + w1 * (p[2].y() - p[1].y())) / (h[0] + h[1]);
+    const FT v0 = h[e - 2] * (three * h[e - 1] + two * h[e - 2]) / h[e - 1], v1 = h[e - 1] * h[e - 1] / h[e - 2];
+    dx[n - 1] = (v0 * (p[e].x() - p[e - 1].x()) + v1 * (p[e - 1].x() - p[e - 2].x())) / (h[e - 2] + h[e - 1]);
+    dy[n - 1] = (v0 * (p[e].y() - p[e - 1].y()) + v1 * (p[e - 1].y() - p[e - 2].y())) / (h[e - 2] + h[e - 1]);
   }
 
   std::vector<Point_2> points_;

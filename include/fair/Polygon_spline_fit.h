@@ -25,15 +25,20 @@
 #define FAIR_POLYGON_SPLINE_FIT_H
 
 #include <fair/Bezier_2.h>
+#include <fair/Cubic_interpolating_spline_2.h>
 #include <fair/Cubic_spline_2.h>
 #include <fair/Errors.h>
+#include <fair/Knot_spacing.h>
 #include <fair/internal/common/input_checks.h>
 #include <fair/internal/optimal/spline_fit.h>
+
+#include <CGAL/Simple_cartesian.h>
 
 #include <CGAL/number_utils.h>
 
 #include <array>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace fair {
@@ -82,20 +87,28 @@ typename K::Point_2 to_point(const Vec2& v) {
 template <class K>
 Polygon_spline_fit<K> fit_cubic_spline(const std::vector<typename K::Point_2>& polygon, bool closed) {
   using namespace internal::optimal;
+  typedef CGAL::Simple_cartesian<double> Kd;
   const char* fn = "fair::fit_cubic_spline";
   const std::vector<Vec2> p = polygon_to_double<K>(polygon, closed, fn);
-  const std::vector<double> t = chord_breakpoints(p, closed, fn);
-  const std::vector<std::array<Vec2, 4>> b = cubic_bezier_pieces(p, t, cubic_slopes(p, t, closed));
-  std::vector<std::array<internal::spline::Homogeneous_point<double>, 4>> hb(b.size());
-  for (std::size_t i = 0; i < b.size(); ++i)
-    for (std::size_t k = 0; k < 4; ++k) hb[i][k] = {b[i][k][0], b[i][k][1], 1.0};
-  const std::vector<internal::spline::Homogeneous_point<double>> c = internal::spline::control_from_bezier(t, hb, closed);
+  chord_breakpoints(p, closed, fn);  // the typed error for a chord that vanishes in double
+  std::vector<Kd::Point_2> q;
+  q.reserve(p.size());
+  for (const Vec2& v : p) q.emplace_back(v[0], v[1]);
+  const Cubic_interpolating_spline_2<Kd> c(
+      std::move(q), closed ? Spline_end_condition::PERIODIC : Spline_end_condition::NOT_A_KNOT, Knot_spacing::CHORDAL);
+  std::vector<std::array<Vec2, 4>> b;
+  b.reserve(c.number_of_pieces());
+  for (const Bezier_2<Kd>& piece : c.pieces()) {
+    std::array<Vec2, 4> v;
+    for (std::size_t k = 0; k < 4; ++k) v[k] = Vec2{{piece.control_point(k).x(), piece.control_point(k).y()}};
+    b.push_back(v);
+  }
   std::vector<typename K::FT> breakpoints;
-  breakpoints.reserve(t.size());
-  for (double x : t) breakpoints.push_back(typename K::FT(x));
+  breakpoints.reserve(c.knots().size());
+  for (double x : c.knots()) breakpoints.push_back(typename K::FT(x));
   std::vector<typename K::Point_2> control;
-  control.reserve(c.size());
-  for (const auto& h : c) control.push_back(to_point<K>(Vec2{{h.x, h.y}}));
+  control.reserve(c.spline().number_of_control_points());
+  for (const Kd::Point_2& d : c.spline().control_points()) control.push_back(to_point<K>(Vec2{{d.x(), d.y()}}));
   return Polygon_spline_fit<K>{Cubic_spline_2<K>(std::move(breakpoints), std::move(control), closed),
                                max_chord_distance(b)};
 }

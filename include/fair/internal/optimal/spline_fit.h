@@ -8,13 +8,8 @@
 // approximates arc length to O(h^3) per edge, which keeps the fits O(h^4) (cubic) and better
 // (quintic); uniform parameters would not on non-uniform polygons.
 //
-// Cubic (C2): the slopes m_i = c'(t_i) of the piecewise Hermite form solve the classic
-//   h_i m_{i-1} + 2 (h_{i-1} + h_i) m_i + h_{i-1} m_{i+1} = 3 (h_i d_{i-1} + h_{i-1} d_i),
-// d_i = (p_{i+1} - p_i) / h_i, at every interior (closed: every) knot; open ends are
-// not-a-knot (c''' continuous at t_1 and t_{m-1}), rows
-//   h_1 m_0 + (h_0 + h_1) m_1 = (h_1 (3 h_0 + 2 h_1) d_0 + h_0^2 d_1) / (h_0 + h_1)   (and mirrored),
-// tridiagonal (Thomas) or cyclic tridiagonal (Sherman-Morrison), O(n). 3 points: the parabola,
-// 2 points: the segment.
+// Cubic (C2): fair::Cubic_interpolating_spline_2 with chordal knots, not-a-knot ends (open) or
+// periodic (closed), in Simple_cartesian<double> (fair::fit_cubic_spline).
 //
 // Quintic (C4): piecewise quintic Hermite in (p_i, m_i, s_i) (value, first and second
 // derivative at the knots, so C2 by construction); the m_i, s_i minimise the sum over pieces of
@@ -37,7 +32,6 @@
 
 #include <fair/Errors.h>
 #include <fair/internal/optimal/vec2.h>
-#include <fair/internal/classic/tridiagonal.h>
 
 #include <algorithm>
 #include <array>
@@ -73,76 +67,6 @@ inline std::vector<double> chord_breakpoints(const std::vector<Vec2>& p, bool cl
     t.push_back(t.back() + h);
   }
   return t;
-}
-
-inline Vec2 vec_add(const Vec2& a, double s, const Vec2& b) { return Vec2{{a[0] + s * b[0], a[1] + s * b[1]}}; }
-inline Vec2 vec_diff_over(const Vec2& b, const Vec2& a, double h) {
-  return Vec2{{(b[0] - a[0]) / h, (b[1] - a[1]) / h}};
-}
-
-/// The slopes m_i = c'(t_i) of the C2 cubic interpolant (size n; open n >= 2, closed n >= 3).
-inline std::vector<Vec2> cubic_slopes(const std::vector<Vec2>& p, const std::vector<double>& t, bool closed) {
-  const std::size_t n = p.size(), edges = t.size() - 1;
-  std::vector<double> h(edges);
-  std::vector<Vec2> d(edges);
-  for (std::size_t i = 0; i < edges; ++i) {
-    h[i] = t[i + 1] - t[i];
-    d[i] = vec_diff_over(p[(i + 1) % n], p[i], h[i]);
-  }
-  std::vector<Vec2> m(n);
-  if (!closed && n == 2) {
-    m[0] = m[1] = d[0];
-    return m;
-  }
-  if (!closed && n == 3) { // the parabola: m_1 is its slope at t_1, d_i = (m_i + m_{i+1}) / 2
-    for (int k = 0; k < 2; ++k) {
-      m[1][k] = (h[1] * d[0][k] + h[0] * d[1][k]) / (h[0] + h[1]);
-      m[0][k] = 2 * d[0][k] - m[1][k];
-      m[2][k] = 2 * d[1][k] - m[1][k];
-    }
-    return m;
-  }
-  std::vector<double> a(n, 0.0), b(n, 0.0), c(n, 0.0);
-  std::array<std::vector<double>, 2> r{{std::vector<double>(n), std::vector<double>(n)}};
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!closed && (i == 0 || i + 1 == n)) continue;
-    const std::size_t l = (i + edges - 1) % edges; // the edge ending at vertex i
-    a[i] = h[i % edges];
-    b[i] = 2 * (h[l] + h[i % edges]);
-    c[i] = h[l];
-    for (int k = 0; k < 2; ++k) r[k][i] = 3 * (h[i % edges] * d[l][k] + h[l] * d[i % edges][k]);
-  }
-  if (!closed) { // not-a-knot rows (derivation in doc/optimal_curves.md)
-    const std::size_t e = edges;
-    b[0] = h[1];
-    c[0] = h[0] + h[1];
-    a[n - 1] = h[e - 2] + h[e - 1];
-    b[n - 1] = h[e - 2];
-    for (int k = 0; k < 2; ++k) {
-      r[k][0] = (h[1] * (3 * h[0] + 2 * h[1]) * d[0][k] + h[0] * h[0] * d[1][k]) / (h[0] + h[1]);
-      r[k][n - 1] = (h[e - 2] * (3 * h[e - 1] + 2 * h[e - 2]) * d[e - 1][k] + h[e - 1] * h[e - 1] * d[e - 2][k]) /
-                    (h[e - 2] + h[e - 1]);
-    }
-  }
-  for (int k = 0; k < 2; ++k) {
-    const std::vector<double> x = closed ? classic::solve_cyclic_tridiagonal(a, b, c, r[k])
-                                         : classic::solve_tridiagonal(a, b, c, r[k]);
-    for (std::size_t i = 0; i < n; ++i) m[i][k] = x[i];
-  }
-  return m;
-}
-
-/// The Bezier points of the cubic Hermite pieces (piece i over [t_i, t_{i+1}]).
-inline std::vector<std::array<Vec2, 4>> cubic_bezier_pieces(const std::vector<Vec2>& p, const std::vector<double>& t,
-                                                            const std::vector<Vec2>& m) {
-  const std::size_t n = p.size(), edges = t.size() - 1;
-  std::vector<std::array<Vec2, 4>> out(edges);
-  for (std::size_t i = 0; i < edges; ++i) {
-    const std::size_t j = (i + 1) % n;
-    const double h = t[i + 1] - t[i];
-    out[i] = {{p[i], vec_add(p[i], h / 3, m[i]), vec_add(p[j], -h / 3, m[j]), p[j]}};
-  }
-  return out;
 }
 
 /// Symmetric positive definite band matrix (lower band stored), Cholesky L L^T in O(n w^2).
