@@ -15,6 +15,7 @@
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -60,12 +61,27 @@ std::vector<Rational_quadratic_bezier_2<K>> assemble_pieces(const Problem& pb, c
   auto finite = [](const Point_2& p) {
     return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y()));
   };
+  // Finite control points can still have differences beyond double (coordinates of both signs
+  // near DBL_MAX; fuzz finding huge-coordinates-derivative-*): then the derivative of the piece
+  // overflows. Its hodograph has the control vectors 2w (P - E_j), 2w (E_{j+1} - P) over the
+  // denominator, and the quotient rule multiplies differences by up to 2 max(w, 1/w)^2 more: refuse
+  // unless every difference times 8 max(w, 1/w)^2 is finite, so that every derivative the piece
+  // hands out (and its evaluation) stays finite.
+  auto differences_finite = [](const Point_2& a, const Point_2& b, double factor) {
+    const double dx = CGAL::to_double(b.x()) - CGAL::to_double(a.x());
+    const double dy = CGAL::to_double(b.y()) - CGAL::to_double(a.y());
+    return std::isfinite(factor * dx) && std::isfinite(factor * dy);
+  };
   for (std::size_t j = 0; j < n; ++j) {
-    if (!finite(P[j]) || !finite(E[j]) || !finite(E[j + 1])) {
+    const double w = st.w[j];
+    const double spread = (std::isfinite(w) && w > 0) ? std::max(w, 1 / w) : 1.0;
+    const double factor = 8 * spread * spread;
+    if (!finite(P[j]) || !finite(E[j]) || !finite(E[j + 1]) || !differences_finite(E[j], P[j], factor) ||
+        !differences_finite(P[j], E[j + 1], factor) || !differences_finite(E[j], E[j + 1], factor)) {
       const Point_2& Q = q[pb.point_index(j)];
       throw Invalid_input_error(message("Kappa_curve_2: the control points of the piece through point ",
                                         pb.point_index(j), " = (", CGAL::to_double(Q.x()), ", ", CGAL::to_double(Q.y()),
-                                        ") overflow double; scale the input down"));
+                                        ") or their differences (its derivatives) overflow double; scale the input down"));
     }
   }
   for (std::size_t j = 0; j < n; ++j) {
