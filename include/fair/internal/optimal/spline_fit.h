@@ -31,6 +31,7 @@
 #define FAIR_INTERNAL_OPTIMAL_SPLINE_FIT_H
 
 #include <fair/Errors.h>
+#include <fair/internal/common/banded.h>
 #include <fair/internal/optimal/vec2.h>
 
 #include <algorithm>
@@ -68,58 +69,6 @@ inline std::vector<double> chord_breakpoints(const std::vector<Vec2>& p, bool cl
   }
   return t;
 }
-
-/// Symmetric positive definite band matrix (lower band stored), Cholesky L L^T in O(n w^2).
-class Spd_band {
-public:
-  Spd_band(std::size_t n, std::size_t w) : n_(n), w_(w), a_(n * (w + 1), 0.0) {}
-  std::size_t size() const { return n_; }
-  /// Entry (i, j), |i - j| <= w (either triangle; the lower one is stored).
-  double& at(std::size_t i, std::size_t j) {
-    if (i < j) std::swap(i, j);
-    FAIR_ASSERT(i - j <= w_ && i < n_);
-    return a_[i * (w_ + 1) + (i - j)];
-  }
-  double get(std::size_t i, std::size_t j) const {
-    if (i < j) std::swap(i, j);
-    return a_[i * (w_ + 1) + (i - j)];
-  }
-  /// In-place Cholesky. Returns false if a pivot is not positive (not positive definite).
-  bool factor() {
-    for (std::size_t i = 0; i < n_; ++i) {
-      const std::size_t j0 = i > w_ ? i - w_ : 0;
-      for (std::size_t j = j0; j <= i; ++j) {
-        double s = at(i, j);
-        const std::size_t k0 = std::max(j0, j > w_ ? j - w_ : 0);
-        for (std::size_t k = k0; k < j; ++k) s -= at(i, k) * at(j, k);
-        if (j == i) {
-          if (!(s > 0) || !std::isfinite(s)) return false;
-          at(i, i) = std::sqrt(s);
-        } else {
-          at(i, j) = s / at(j, j);
-        }
-      }
-    }
-    return true;
-  }
-  /// Solves L L^T x = b in place (after factor()).
-  void solve(std::vector<double>& b) const {
-    for (std::size_t i = 0; i < n_; ++i) {
-      double s = b[i];
-      for (std::size_t k = i > w_ ? i - w_ : 0; k < i; ++k) s -= get(i, k) * b[k];
-      b[i] = s / get(i, i);
-    }
-    for (std::size_t i = n_; i-- > 0;) {
-      double s = b[i];
-      for (std::size_t k = i + 1; k <= std::min(n_ - 1, i + w_); ++k) s -= get(k, i) * b[k];
-      b[i] = s / get(i, i);
-    }
-  }
-
-private:
-  std::size_t n_, w_;
-  std::vector<double> a_;
-};
 
 /// The 6x6 matrix of int_0^1 (q'''(u))^2 du for the quintic Hermite piece q with the data
 /// v = (p0, p1, a0, b0, a1, b1) (a = q'(0 or 1), b = q''(0 or 1) in u): q''' = 6 c3 + 24 c4 u +
@@ -205,7 +154,8 @@ inline void quintic_derivatives(const std::vector<Vec2>& p, const std::vector<do
     return static_cast<long>(2 * (knot - offset) + static_cast<std::size_t>(which));
   };
   const std::array<std::array<double, 6>, 6> M = quintic_jerk_matrix();
-  Spd_band B(size, 3);
+  common::Banded_cholesky B;
+  B.reset(size, 3);
   std::array<std::vector<double>, 2> rhs{{std::vector<double>(size, 0.0), std::vector<double>(size, 0.0)}};
   std::array<std::array<double, 4>, 4> closing{}; // the closing piece's block (closed only)
   for (std::size_t i = 0; i < edges; ++i) {
@@ -235,13 +185,13 @@ inline void quintic_derivatives(const std::vector<Vec2>& p, const std::vector<do
         const long ub = unknown(knot_of[b], which[b]);
         if (ub < 0) continue;
         if (is_closing) closing[a - 2][b - 2] = K[a][b];
-        else if (ua >= ub) B.at(static_cast<std::size_t>(ua), static_cast<std::size_t>(ub)) += K[a][b];
+        else if (ua >= ub) B.add_lower(static_cast<std::size_t>(ua), static_cast<std::size_t>(ub), K[a][b]);
       }
     }
   }
   FAIR_ASSERT_MSG(B.factor(), "quintic_derivatives: the banded system of ", knots, " knots is not positive definite");
   std::array<std::vector<double>, 2> x = rhs;
-  for (int c = 0; c < 2; ++c) B.solve(x[c]);
+  for (int c = 0; c < 2; ++c) B.solve(x[c].data());
   if (closed) {
     // A = B + W M W^T, W picks the unknowns of knots n-1 (rows 0, 1 of `closing`) and 0 (rows 2, 3).
     const std::size_t pick[4] = {2 * (n - 1), 2 * (n - 1) + 1, 0, 1};
@@ -249,7 +199,7 @@ inline void quintic_derivatives(const std::vector<Vec2>& p, const std::vector<do
     for (int q = 0; q < 4; ++q) {
       Z[q].assign(size, 0.0);
       Z[q][pick[q]] = 1;
-      B.solve(Z[q]);
+      B.solve(Z[q].data());
     }
     // capacitance C = I + M W^T Z (4x4), solved densely with partial pivoting
     double C[4][4];
