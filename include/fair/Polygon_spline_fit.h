@@ -17,6 +17,10 @@
 // to rounding). Complexity O(n): tridiagonal / cyclic tridiagonal (cubic), banded Cholesky of
 // half-bandwidth 3 plus a rank-4 Woodbury correction when closed (quintic).
 //
+// Corners (fit_cubic_spline_runs): one C2 run between consecutive corners, G0 there, so that
+// the CORNER constraints of an optimal curve survive in the spline; io::spline_runs_to_json
+// writes the runs as one NURBS with triple knots at the corners.
+//
 // max_distance: the largest distance from a point of the spline to the polygon, measured piece
 // by piece against the polygon edge the piece replaces (32 samples per piece refined by golden
 // section; relative accuracy ~1e-12 unless a piece's distance has two maxima within 1/32 of it).
@@ -36,6 +40,7 @@
 
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <utility>
@@ -111,6 +116,73 @@ Polygon_spline_fit<K> fit_cubic_spline(const std::vector<typename K::Point_2>& p
   for (const Kd::Point_2& d : c.spline().control_points()) control.push_back(to_point<K>(Vec2{{d.x(), d.y()}}));
   return Polygon_spline_fit<K>{Cubic_spline_2<K>(std::move(breakpoints), std::move(control), closed),
                                max_chord_distance(b)};
+}
+
+/// Splines through every vertex that keep the polygon's corners: one C2 cubic per run between
+/// consecutive corners, joined with G0 there (the curve of an optimal polygon with CORNER
+/// constraints must not be smoothed across them). Run r covers the vertices first_vertex[r] ..
+/// first_vertex[r + 1] (the last run of a closed polygon wraps to first_vertex[0]; without corners
+/// the one run is the whole polygon, periodic when closed).
+template <class K>
+struct Polygon_spline_runs {
+  std::vector<Cubic_spline_2<K>> splines;
+  std::vector<std::size_t> first_vertex;
+  double max_distance;
+  /// The pieces of all runs in order (run 0 first).
+  std::vector<typename Cubic_spline_2<K>::Piece> pieces() const {
+    std::vector<typename Cubic_spline_2<K>::Piece> out;
+    for (const Cubic_spline_2<K>& s : splines) {
+      const std::vector<typename Cubic_spline_2<K>::Piece> p = s.pieces();
+      out.insert(out.end(), p.begin(), p.end());
+    }
+    return out;
+  }
+};
+
+/// The C2 cubic interpolant of each run of `polygon` between consecutive `corners` (vertex
+/// indices, any order; repeated indices and, for an open polygon, its two end vertices are
+/// ignored): each run is fit_cubic_spline of its vertices as an open polygon (chordal, not-a-knot
+/// ends; 2 vertices: the segment). At a corner the two runs meet with G0; each run's end tangent
+/// is that of the not-a-knot cubic through its first vertices, which for an optimal polygon (its
+/// first edge lies on the corner's tangent ray) approximates the corner tangent to O(h^2) of the
+/// edge length h. No corners: fit_cubic_spline(polygon, closed) as the one run.
+/// max_distance: the largest of the runs'.
+/// \throws Invalid_input_error as fit_cubic_spline; Precondition_error for a corner index >= n.
+/// Complexity O(n).
+template <class K>
+Polygon_spline_runs<K> fit_cubic_spline_runs(const std::vector<typename K::Point_2>& polygon, bool closed,
+                                             std::vector<std::size_t> corners) {
+  const std::size_t n = polygon.size();
+  for (std::size_t c : corners)
+    internal::require(c < n, "fair::fit_cubic_spline_runs: corner vertex ", c, " is not a vertex of the polygon of ", n,
+                      " vertices");
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  if (!closed)
+    corners.erase(std::remove_if(corners.begin(), corners.end(), [n](std::size_t c) { return c == 0 || c + 1 == n; }),
+                  corners.end());
+  Polygon_spline_runs<K> out{{}, {}, 0.0};
+  if (corners.empty()) {
+    Polygon_spline_fit<K> whole = fit_cubic_spline<K>(polygon, closed);
+    out.splines.push_back(std::move(whole.spline));
+    out.first_vertex.push_back(0);
+    out.max_distance = whole.max_distance;
+    return out;
+  }
+  std::vector<std::size_t> ends;  // run r from ends[r] to ends[r + 1]
+  if (!closed) ends.push_back(0);
+  ends.insert(ends.end(), corners.begin(), corners.end());
+  if (closed) ends.push_back(corners.front() + n);  // wraps around
+  else ends.push_back(n - 1);
+  for (std::size_t r = 0; r + 1 < ends.size(); ++r) {
+    std::vector<typename K::Point_2> run;
+    for (std::size_t i = ends[r]; i <= ends[r + 1]; ++i) run.push_back(polygon[i % n]);
+    Polygon_spline_fit<K> fit = fit_cubic_spline<K>(run, false);
+    out.splines.push_back(std::move(fit.spline));
+    out.first_vertex.push_back(ends[r] % n);
+    out.max_distance = std::max(out.max_distance, fit.max_distance);
+  }
+  return out;
 }
 
 /// The C4 quintic interpolant of `polygon` (same vertices, breakpoints and errors as

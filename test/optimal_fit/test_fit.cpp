@@ -10,9 +10,12 @@
 #include "test_support.h"
 
 #include <fair/Polygon_spline_fit.h>
+#include <fair/io/write_json.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -338,3 +341,136 @@ TYPED_TEST(Optimal_fit_floating, NonFiniteInputThrows) {
 }
 
 } // namespace
+
+// ---------------------------------------------------------------------------------------------
+// fit_cubic_spline_runs: C2 runs between corners, G0 at the corners (reviewer finding 4: one C2
+// spline through an optimal polygon with CORNER constraints rounds the corners off).
+
+namespace runs {
+
+// The closed lens of two circular arcs of radius R = sqrt(1 + c^2) about (0, -c) and (0, c)
+// through (1, 0) and (-1, 0), each sampled at m + 1 points (uniform in angle): corners at
+// vertex 0 = (1, 0) and vertex m = (-1, 0), where the true tangents of the upper arc are
+// (-sin a0, cos a0) leaving (1, 0) and (-sin a1, cos a1) arriving at (-1, 0).
+constexpr double c = 0.5;
+inline double radius() { return std::sqrt(1 + c * c); }
+inline double a0() { return std::atan2(c, 1.0); }
+inline std::vector<Pd> lens(int m) {
+  const double R = radius(), pi = std::acos(-1.0), from = a0(), to = pi - a0();
+  std::vector<Pd> p;
+  for (int k = 0; k <= m; ++k) {  // upper arc, (1, 0) -> (-1, 0)
+    const double a = from + (to - from) * k / m;
+    p.push_back(k == 0 ? Pd(1, 0) : k == m ? Pd(-1, 0) : Pd(R * std::cos(a), -c + R * std::sin(a)));
+  }
+  for (int k = 1; k < m; ++k) {  // lower arc, (-1, 0) -> (1, 0), the mirror image
+    const double a = to - (to - from) * k / m;
+    p.push_back(Pd(R * std::cos(a), c - R * std::sin(a)));
+  }
+  return p;
+}
+
+// de Boor's algorithm on a degree-3 knot vector u and control points d (independent of the
+// library's piece construction): the point at x.
+inline std::array<double, 2> de_boor(const std::vector<double>& u, const std::vector<std::array<double, 2>>& d,
+                                     double x) {
+  std::size_t k = 3;
+  while (k + 1 < u.size() - 4 && !(x < u[k + 1])) ++k;
+  std::array<std::array<double, 2>, 4> q;
+  for (int j = 0; j < 4; ++j) q[j] = d[k - 3 + j];
+  for (int r = 1; r <= 3; ++r)
+    for (int j = 3; j >= r; --j) {
+      const std::size_t i = k - 3 + j;
+      const double alpha = (x - u[i]) / (u[i + 4 - r] - u[i]);
+      for (int e = 0; e < 2; ++e) q[j][e] = (1 - alpha) * q[j - 1][e] + alpha * q[j][e];
+    }
+  return q[3];
+}
+
+inline double angle_between(const std::array<double, 2>& a, const std::array<double, 2>& b) {
+  return std::fabs(std::atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]));
+}
+
+} // namespace runs
+
+// Each run interpolates its vertices and is C2 inside; at the corners the runs meet (G0) and
+// each run's end tangent converges to the true arc tangent (the one C2 spline does not: its
+// tangent at (1, 0) is vertical by symmetry, 26.6 degrees off both).
+TEST(Optimal_fit_runs, CornersAreKeptAndTheirTangentsConverge) {
+  double previous_error = 0;
+  for (int m : {8, 16, 32}) {
+    const std::vector<Pd> p = runs::lens(m);
+    const auto fit = fair::fit_cubic_spline_runs<Kd>(p, true, {static_cast<std::size_t>(m), 0, 0});
+    ASSERT_EQ(fit.splines.size(), 2u);
+    EXPECT_EQ(fit.first_vertex, (std::vector<std::size_t>{0, static_cast<std::size_t>(m)}));
+    const auto pieces = fit.pieces();
+    ASSERT_EQ(pieces.size(), p.size());  // one piece per edge of the closed polygon
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      EXPECT_TRUE(same<Kd>(pieces[i].point(0.0), p[i], 1e-14)) << "piece " << i << " starts at vertex " << i;
+      EXPECT_TRUE(same<Kd>(pieces[i].point(1.0), p[(i + 1) % p.size()], 1e-14)) << "piece " << i;
+    }
+    const auto t0 = dv(fit.splines[0].derivative(fit.splines[0].breakpoints().front()));
+    const std::array<double, 2> true_t0{{-std::sin(runs::a0()), std::cos(runs::a0())}};
+    const double error = runs::angle_between(t0, true_t0);
+    const auto whole = fair::fit_cubic_spline<Kd>(p, true);
+    const double smoothed = runs::angle_between(dv(whole.spline.derivative(0.0)), true_t0);
+    EXPECT_NEAR(smoothed, runs::a0(), 1e-9) << "the single C2 spline rounds the corner off";
+    EXPECT_LT(error, 0.01) << m;
+    if (previous_error > 0) {
+      EXPECT_GT(previous_error / error, 3.0) << "tangent error ratio per halving, m = " << m;
+    }
+    previous_error = error;
+    EXPECT_LE(fit.max_distance, whole.max_distance);
+  }
+}
+
+// The stitched NURBS of spline_runs_to_json: #knots = #control points + 4, knot multiplicity 3
+// at the corner, and de Boor's algorithm on it reproduces the middle of every piece.
+TEST(Optimal_fit_runs, StitchedNurbsReproducesThePieces) {
+  const std::vector<Pd> p = runs::lens(6);
+  const auto fit = fair::fit_cubic_spline_runs<Kd>(p, true, {0, 6});
+  const nlohmann::json j = fair::io::spline_runs_to_json(fit.splines, true);
+  EXPECT_TRUE(j["clamped"].get<bool>());
+  EXPECT_TRUE(j["closed"].get<bool>());
+  std::vector<double> u;
+  for (const auto& x : j["knots"]) u.push_back(x.get<double>());
+  std::vector<std::array<double, 2>> d;
+  for (const auto& x : j["control_points"]) d.push_back({{x[0].get<double>(), x[1].get<double>()}});
+  ASSERT_EQ(u.size(), d.size() + 4);
+  std::vector<double> t;
+  for (const auto& x : j["breakpoints"]) t.push_back(x.get<double>());
+  const auto pieces = fit.pieces();
+  ASSERT_EQ(t.size(), pieces.size() + 1);
+  ASSERT_EQ(j["corners"].size(), 2u);
+  const std::size_t corner = j["corners"][0].get<std::size_t>();
+  EXPECT_EQ(corner, 6u);
+  EXPECT_EQ(std::count(u.begin(), u.end(), t[corner]), 3) << "C0 at the corner: multiplicity 3";
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const auto expected = d2(pieces[i].point(0.5));
+    const auto got = runs::de_boor(u, d, 0.5 * (t[i] + t[i + 1]));
+    EXPECT_NEAR(got[0], expected[0], 1e-12) << "piece " << i;
+    EXPECT_NEAR(got[1], expected[1], 1e-12) << "piece " << i;
+  }
+  // One run (no corners): the plain spline_to_json.
+  const auto whole = fair::fit_cubic_spline_runs<Kd>(p, true, {});
+  ASSERT_EQ(whole.splines.size(), 1u);
+  EXPECT_FALSE(fair::io::spline_runs_to_json(whole.splines, true)["clamped"].get<bool>());
+}
+
+TYPED_TEST(Optimal_fit, SplineRunsOfOpenPolygonsAndBadCorners) {
+  typedef TypeParam K;
+  typedef typename K::Point_2 P;
+  const std::vector<P> p{P(0, 0), P(1, 1), P(2, 0), P(3, 1), P(4, 0)};
+  // The ends of an open polygon are no corners; an interior corner splits it in two runs.
+  const auto plain = fair::fit_cubic_spline_runs<K>(p, false, {0, 4});
+  ASSERT_EQ(plain.splines.size(), 1u);
+  const auto split = fair::fit_cubic_spline_runs<K>(p, false, {2});
+  ASSERT_EQ(split.splines.size(), 2u);
+  EXPECT_EQ(split.splines[0].number_of_pieces(), 2u);
+  EXPECT_TRUE(same<K>(split.splines[0].point(split.splines[0].breakpoints().back()), p[2]));
+  EXPECT_TRUE(same<K>(split.splines[1].point(split.splines[1].breakpoints().front()), p[2]));
+  // Adjacent corners: the run between them is the segment.
+  const auto segment = fair::fit_cubic_spline_runs<K>(p, false, {1, 2});
+  ASSERT_EQ(segment.splines.size(), 3u);
+  EXPECT_EQ(segment.splines[1].number_of_pieces(), 1u);
+  EXPECT_THROW(fair::fit_cubic_spline_runs<K>(p, false, {5}), fair::Precondition_error);
+}

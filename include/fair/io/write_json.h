@@ -175,8 +175,8 @@ nlohmann::json curve_to_json(const PieceRange& pieces,
 /// The "bspline" member of the curve format: {"degree": 3, "closed": ..., "knots": [...],
 /// "control_points": [[x, y], ...], "weights": [...]} — the NURBS form of the spline
 /// (Cubic_spline_2::knot_vector() and its control points: clamped when open, the unclamped
-/// periodic form when closed, so that #knots = #control points + 4 either way), plus
-/// "breakpoints" (t_0 .. t_m). Exact kernels write "p/q" strings for non-double values.
+/// periodic form when closed, so that #knots = #control points + 4 either way; "clamped" says
+/// which), plus "breakpoints" (t_0 .. t_m). Exact kernels write "p/q" strings for non-double values.
 template <class K>
 nlohmann::json spline_to_json(const Cubic_spline_2<K>& spline) {
   nlohmann::json knots = nlohmann::json::array(), breakpoints = nlohmann::json::array(),
@@ -187,9 +187,57 @@ nlohmann::json spline_to_json(const Cubic_spline_2<K>& spline) {
   for (std::size_t i = 0; i < points.size(); ++i)
     control.push_back(point_to_json(points[i], fair::internal::message("spline control point ", i)));
   for (const auto& w : spline.knot_vector_weights()) weights.push_back(number_to_json(w, "spline weight"));
-  return nlohmann::json{{"degree", 3},           {"closed", spline.is_closed()}, {"knots", std::move(knots)},
+  return nlohmann::json{{"degree", 3},           {"closed", spline.is_closed()}, {"clamped", !spline.is_closed()},
+                        {"knots", std::move(knots)},
                         {"control_points", std::move(control)}, {"weights", std::move(weights)},
                         {"breakpoints", std::move(breakpoints)}};
+}
+
+/// The "bspline" member for splines joined with G0 (fair::fit_cubic_spline_runs: C2 runs between
+/// corners): one clamped NURBS of degree 3 whose interior knot at each join has multiplicity 3
+/// (C0 there; the runs' control points follow one another, the join's shared once). Run r + 1's
+/// parameter is shifted to start where run r ends. "closed" says whether the last run ends where
+/// the first starts (a closed polygon); the form is always clamped ("clamped": true), so
+/// #knots = #control points + 4 still holds. "breakpoints" lists every distinct breakpoint and
+/// "corners" the indices into "breakpoints" of the joins. One run: spline_to_json of it.
+template <class K>
+nlohmann::json spline_runs_to_json(const std::vector<Cubic_spline_2<K>>& runs, bool closed) {
+  fair::internal::require(!runs.empty(), "fair::io::spline_runs_to_json: no runs");
+  if (runs.size() == 1) return spline_to_json(runs.front());
+  nlohmann::json knots = nlohmann::json::array(), breakpoints = nlohmann::json::array(),
+                 control = nlohmann::json::array(), weights = nlohmann::json::array(),
+                 corners = nlohmann::json::array();
+  typename K::FT offset(0);
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const Cubic_spline_2<K>& s = runs[r];
+    fair::internal::require(!s.is_closed(), "fair::io::spline_runs_to_json: run ", r, " is periodic");
+    const std::vector<typename K::FT> u = s.knot_vector();
+    const std::vector<typename K::Point_2> d = s.knot_vector_control_points();
+    const std::vector<typename K::FT> w = s.knot_vector_weights();
+    const std::vector<typename K::FT>& t = s.breakpoints();
+    if (r > 0) {
+      offset = offset - t.front();
+      knots.erase(knots.size() - 1);  // the previous run's end knot: multiplicity 4 -> 3
+      corners.push_back(breakpoints.size() - 1);
+    }
+    for (std::size_t i = (r > 0 ? 4 : 0); i < u.size(); ++i) knots.push_back(number_to_json(offset + u[i], "knot"));
+    for (std::size_t i = (r > 0 ? 1 : 0); i < t.size(); ++i)
+      breakpoints.push_back(number_to_json(offset + t[i], "breakpoint"));
+    for (std::size_t i = (r > 0 ? 1 : 0); i < d.size(); ++i) {
+      control.push_back(point_to_json(d[i], fair::internal::message("run ", r, " spline control point ", i)));
+      weights.push_back(number_to_json(w[i], "spline weight"));
+    }
+    offset = offset + t.back();
+  }
+  if (closed) corners.push_back(0);
+  return nlohmann::json{{"degree", 3},
+                        {"closed", closed},
+                        {"clamped", true},
+                        {"knots", std::move(knots)},
+                        {"control_points", std::move(control)},
+                        {"weights", std::move(weights)},
+                        {"breakpoints", std::move(breakpoints)},
+                        {"corners", std::move(corners)}};
 }
 
 /// The curve format (curve_to_json) of the spline's pieces plus its "bspline" member
