@@ -367,7 +367,41 @@ TEST(OptimiserConstraints, SingleNormalHoldsExactlyOnEveryLevel) {
     const K::Vector_2 t = bisector(c.polygon(), c.interpolation_indices()[1]);
     EXPECT_LT(std::abs(t.x() - t.y()), 1e-12) << "level " << l;  // parallel to (1, 1)
     EXPECT_GT(t.x(), 0);
+    // The level cap counts only when another level would be needed (reviewer finding 7).
+    EXPECT_EQ(c.report().status, l < levels ? Optimal_curve_status::CAPPED : Optimal_curve_status::CONVERGED) << "level " << l;
   }
+}
+
+// An interior tangent swept over -90..90 degrees at each interior point of the wave (reviewer
+// finding 2: 29 of 39 converged, 4 DIVERGING by a collapsing edge, before the re-anchoring, the
+// tie's exact Hessian and the CAPPED label for a collapse). A finite minimiser exists (beta > 0
+// bounds the length), so none may be DIVERGING; the tangent holds.
+TEST(OptimiserConstraints, InteriorTangentSweepConvergesAndNeverDiverges) {
+  std::size_t converged = 0, total = 0;
+  for (std::size_t i = 1; i <= 3; ++i)
+    for (int deg = -90; deg <= 90; deg += 15) {
+      Optimal_curve_options o;
+      const double a = deg * pi / 180;
+      o.constraints = {tangent(i, std::cos(a), std::sin(a))};
+      const Optimal_curve_2<K> c(wave, o);
+      ++total;
+      EXPECT_NE(c.report().status, Optimal_curve_status::DIVERGING) << "point " << i << " at " << deg << " deg";
+      if (c.report().status != Optimal_curve_status::CONVERGED) continue;
+      ++converged;
+      const K::Vector_2 t = bisector(c.polygon(), c.interpolation_indices()[i]);
+      EXPECT_LT(std::abs(t.x() * std::sin(a) - t.y() * std::cos(a)), 1e-9 * std::sqrt(t.squared_length())) << i << " " << deg;
+      EXPECT_GT(t.x() * std::cos(a) + t.y() * std::sin(a), 0) << i << " " << deg;
+    }
+  EXPECT_GE(converged, total - 1);  // measured: 38 of 39 (point 1 at -75 deg: CAPPED)
+}
+
+// The interpolation points are the user's points in an exact kernel too (reviewer finding 10).
+TEST(OptimiserStructure, ExactKernelPointsAreReproducedExactly) {
+  typedef fair_test::EPECK E;
+  const std::vector<E::Point_2> p = {E::Point_2(0, 0), E::Point_2(E::FT(1) / 3, E::FT(5) / 7), E::Point_2(2, E::FT(1) / 3),
+                                     E::Point_2(3, 1)};
+  const Optimal_curve_2<E> c(p);
+  for (std::size_t i = 0; i < p.size(); ++i) EXPECT_TRUE(c.polygon()[c.interpolation_indices()[i]] == p[i]) << i;
 }
 
 TEST(OptimiserConstraints, CornerKeepsBothTangentsAndZeroCurvature) {
@@ -598,6 +632,9 @@ TEST(OptimiserErrors, BadConstraints) {
   // A normal along the line of three collinear points (the tangent across it) cannot be met.
   o.constraints = {tangent(1, 1, 0, Point_constraint_kind::NORMAL)};
   expect_error<fair::Invalid_input_error>({P(0, 0), P(1, 0), P(2, 0)}, o, "cannot be met");
+  // A tangent back along a chord (reviewer finding 3: was an Internal_error from the tie setup).
+  o.constraints = {tangent(1, -1, 0)};
+  expect_error<fair::Invalid_input_error>({P(0, 0), P(1, 0), P(2, 0)}, o, "fold back");
 }
 
 // ---- Real data (issue 11, "converge on data nobody here wrote") ----

@@ -237,12 +237,13 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
     r.report.energy = out.energy;
     overall = worse(overall, out.status);
     if (out.status == Status::DIVERGING) break;
-    if (level + 1 >= o.max_levels) { overall = worse(overall, Status::CAPPED); break; }
     std::vector<Vec2> d = c;
     std::vector<std::size_t> interpolation = r.interpolation_indices;
     std::vector<Placed_constraint> moved = placed;
     const std::size_t split = subdivide(p, d, rotation_invariant_extent(c) / o.resolution, interpolation, moved);
-    if (split == 0) break;
+    if (split == 0) break;  // the target resolution is reached
+    // The level cap counts only when another level is needed.
+    if (level + 1 >= o.max_levels) { overall = worse(overall, Status::CAPPED); break; }
     if (d.size() > o.max_vertices) { overall = worse(overall, Status::CAPPED); break; }
     c.swap(d);
     r.interpolation_indices.swap(interpolation);

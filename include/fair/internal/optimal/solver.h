@@ -2,10 +2,11 @@
 //
 // The level optimiser of Gumhold's optimal curves (Sec. 2.3.2, replaced by Newton as issue 11
 // asks; doc/optimal_curves.md, "Level solve"). Unknowns: one scalar per free vertex (its
-// offset along the vertex normal n_j, fixed during a step and recomputed after it) and one per TIE
+// offset along the vertex normal n_j, fixed for the level unless it is re-anchored, see solve_level) and one per TIE
 // (the two neighbours of a single tangent/normal constraint, see constraints.h). Every unknown u_k moves its vertices as
 // c_a += u_k v_a, so the reduced gradient is sum_a v_a . g_a and the reduced Hessian
-// sum_{a,b} v_a^T H_ab v_b (exact second derivative of u -> F(c + sum u_k v_k), a linear map).
+// sum_{a,b} v_a^T H_ab v_b (exact second derivative of u -> F(c + sum u_k v_k), a linear map), plus
+// at a tie the curvature term g . R'' of its restoring rotation (add_tie_curvature).
 // Unknowns are numbered in vertex order. The reduced system of a closed curve stays CYCLIC even
 // though the interpolation points are fixed: kappa_j of a fixed vertex j still couples c_{j-1} and
 // c_{j+1} (and the kappa^(k) terms couple up to w vertices across it), so eliminating a fixed vertex
@@ -47,7 +48,7 @@ constexpr int max_backtracks = 60;
 constexpr double armijo_c1 = 1e-4;
 /// A polygon whose bounding-box extent exceeds this multiple of the input's is diverging.
 constexpr double divergence_extent_factor = 1e3;
-/// An edge shorter than this fraction of the extent is degenerate (the curve collapses): diverging.
+/// An edge (with a free end) shorter than this fraction of the extent is degenerate: the level stops CAPPED.
 constexpr double degenerate_edge_fraction = 1e-12;
 /// When no Armijo step decreases F any more, the level counts as converged if the predicted
 /// decrease is below this fraction of |F| (the rounding floor of F's evaluation at large n).
@@ -177,6 +178,16 @@ inline double min_edge(const std::vector<Vec2>& c, bool closed) {
   return m;
 }
 
+/// The shortest edge with at least one free end (edges between two fixed vertices do not move).
+inline double free_min_edge(const std::vector<Vec2>& c, bool closed, const Vertex_roles& roles) {
+  const std::size_t n = c.size(), e = closed ? n : n - 1;
+  double m = std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j < e; ++j)
+    if (roles.role[j] == Vertex_role::FREE || roles.role[(j + 1) % n] == Vertex_role::FREE)
+      m = std::min(m, vec::norm(vec::sub(c[(j + 1) % n], c[j])));
+  return m;
+}
+
 /// The unknowns of one step: vertex a moves by u_{var[a]} dir[a] (var[a] = -1: fixed).
 struct Reduced_unknowns {
   std::vector<long> var;
@@ -221,6 +232,40 @@ inline Reduced_unknowns reduced_unknowns(const std::vector<Vec2>& c, const std::
     }
   }
   return u;
+}
+
+/// The exact Hessian of u -> F(R(c + u v)) where R restores the ties (constraints.h) has, besides
+/// v^T H v, the term g . d^2R/du^2 at every tie unknown: the neighbours move on the circles of the
+/// rotation (Fig. 5c), not on the lines v. Without it Newton converges only linearly on designs with
+/// interior tangent/normal constraints (up to 71 iterations per level were measured). d^2R/du^2 by a
+/// central second difference of R (R depends only on the tie's own three vertices, so there are no
+/// cross terms), step 1e-4 of the shorter neighbour edge: truncation ~1e-8, rounding ~1e-8 relative.
+inline void add_tie_curvature(const std::vector<Vec2>& c, const std::vector<Vec2>& g, const Reduced_unknowns& u,
+                              const Vertex_roles& roles, Banded_symmetric& rh) {
+  const std::size_t n = c.size();
+  for (const Vertex_roles::Tie& t : roles.ties) {
+    const std::size_t j = t.centre, a = (j + n - 1) % n, b = (j + 1) % n;
+    const long k = u.var[a];
+    if (k < 0) continue;
+    const double l = std::min(vec::norm(vec::sub(c[j], c[a])), vec::norm(vec::sub(c[b], c[j])));
+    const double move = std::max(vec::norm(u.dir[a]), vec::norm(u.dir[b]));
+    if (!(l > 0 && move > 0)) continue;
+    const double step = 1e-4 * l / move;
+    std::vector<Vec2> plus = c, minus = c;
+    for (std::size_t v : {a, b})
+      for (int r = 0; r < 2; ++r) {
+        plus[v][r] += step * u.dir[v][r];
+        minus[v][r] -= step * u.dir[v][r];
+      }
+    Vertex_roles one = roles;
+    one.ties.assign(1, t);
+    restore_ties(one, plus);
+    restore_ties(one, minus);
+    double term = 0;
+    for (std::size_t v : {a, b})
+      for (int r = 0; r < 2; ++r) term += g[v][r] * (plus[v][r] + minus[v][r] - 2 * c[v][r]) / (step * step);
+    rh.at(static_cast<std::size_t>(k), static_cast<std::size_t>(k)) += term;
+  }
 }
 
 /// Index distance of two unknowns in the reduced system.
@@ -315,10 +360,13 @@ inline double energy_or_infinity(const Level_problem& p, const std::vector<Vec2>
 }
 
 /// Solves (rh + mu I) x = rhs with the smallest shift mu of the ladder that makes it positive
-/// definite; false if none does.
-inline bool shifted_solve(const Banded_symmetric& rh, std::vector<double>& x) {
-  double diag = 0;
-  for (std::size_t k = 0; k < x.size(); ++k) diag = std::max(diag, std::abs(rh.at(k, k)));
+/// definite; false if none does. `shift` returns mu relative to the smallest |rh_kk| (0 if unshifted).
+inline bool shifted_solve(const Banded_symmetric& rh, std::vector<double>& x, double& shift) {
+  double diag = 0, smallest = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    diag = std::max(diag, std::abs(rh.at(k, k)));
+    smallest = std::min(smallest, std::abs(rh.at(k, k)));
+  }
   if (!(diag > 0)) diag = 1;
   const std::vector<double> rhs = x;
   double mu = 0;
@@ -326,11 +374,19 @@ inline bool shifted_solve(const Banded_symmetric& rh, std::vector<double>& x) {
     Banded_symmetric a = rh;
     if (mu > 0) a.add_to_diagonal(mu);
     x = rhs;
-    if (solve_banded_positive_definite(a, x)) return true;
+    if (solve_banded_positive_definite(a, x)) {
+      shift = mu == 0 ? 0.0 : smallest > 0 ? mu / smallest : std::numeric_limits<double>::infinity();
+      return true;
+    }
     mu = mu == 0 ? 1e-10 * diag : 10 * mu;
   }
   return false;
 }
+
+/// A Newton decrement computed with a shift larger than this fraction of the smallest diagonal entry
+/// of the reduced Hessian does not certify convergence (the shift, relative to the largest entry,
+/// can swamp the soft unknowns: the step and the decrement become negligible far from a minimiser).
+constexpr double converged_shift = 1e-6;
 
 inline double dot_product(const std::vector<double>& a, const std::vector<double>& b) {
   double s = 0;
@@ -452,6 +508,7 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
     reanchored = false;
     const Reduced_unknowns u = reduced_unknowns(c, normals, roles, f.closed);
     reduced_system(g, h, f.closed, u, rg, rh);
+    if (!s.conjugate_gradient) add_tie_curvature(c, g, u, roles, rh);
     out.gradient_norm = std::sqrt(dot_product(rg, rg));
     out.iterations = it;
     const double scale = std::max(std::abs(e), std::numeric_limits<double>::min());
@@ -465,9 +522,10 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
     if (!s.conjugate_gradient) {
       x.assign(rg.size(), 0);
       for (std::size_t k = 0; k < rg.size(); ++k) x[k] = -rg[k];
-      if (!shifted_solve(rh, x)) { out.status = Status::CAPPED; return out; }
+      double shift = 0;
+      if (!shifted_solve(rh, x, shift)) { out.status = Status::CAPPED; return out; }
       decrement = -dot_product(rg, x);
-      if (0.5 * decrement <= s.tolerance * scale) {
+      if (0.5 * decrement <= s.tolerance * scale && shift <= converged_shift) {
         // Converged: still take this last (tiny) Newton step when it does not raise F beyond
         // rounding: it is free (already solved) and squares the remaining error.
         const std::vector<Vec2> last = displaced(c, u, x, 1.0, roles);
@@ -533,12 +591,16 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
       out.status = 0.5 * decrement <= rounding_floor * scale ? Status::CONVERGED : Status::CAPPED;
       return out;
     }
+    // DIVERGING only when the curve runs away (its extent beyond the cap: no finite minimiser); an
+    // edge with a free end that degenerates is a solver failure on a problem that may well have a
+    // minimiser (with beta > 0 the length is bounded by F/beta): CAPPED.
     const double extent = polygon_extent(trial);
-    if (extent > s.max_extent || min_edge(trial, f.closed) < degenerate_edge_fraction * extent) {
+    const bool runaway = extent > s.max_extent, collapsed = free_min_edge(trial, f.closed, roles) < degenerate_edge_fraction * extent;
+    if (runaway || collapsed) {
       c = trial;
       out.energy = et;
       out.iterations = it + 1;
-      out.status = Status::DIVERGING;
+      out.status = runaway ? Status::DIVERGING : Status::CAPPED;
       return out;
     }
     c = trial;
