@@ -619,6 +619,9 @@ TEST(OptimiserErrors, BadPointsAndOptions) {
   b = o;
   b.resolution = 0;
   expect_error<fair::Precondition_error>(wave, b, "resolution = 0");
+  b = o;
+  b.max_vertices = 0;  // reviewer finding 11: ended CAPPED
+  expect_error<fair::Precondition_error>(wave, b, "max_vertices = 0");
 }
 
 TEST(OptimiserErrors, BadConstraints) {

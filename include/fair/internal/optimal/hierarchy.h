@@ -2,7 +2,7 @@
 //
 // The hierarchical, adaptive optimiser of Gumhold's Sec. 2.3 (doc/optimal_curves.md,
 // "Hierarchy"): start from the input polygon (with the constrained edges split, constraints.h),
-// solve the level (solver.h), subdivide at edge midpoints where
+// solve the level (solver.h), split the edges (new vertex by the four-point rule, see subdivide) where
 //   max(eps(l_j, phi_j), eps(l_j, phi_{j+1})) > eps_max,   eps(l, phi) = (l/2) tan(|phi|/4)
 // (the sagitta of the circle tangent to the vertex bisector through the chord of length l: with
 // central angle phi, r = l / (2 sin(phi/2)) and eps = r (1 - cos(phi/2)) = (l/2) tan(phi/4) by the
@@ -183,6 +183,7 @@ inline void check_solve_input(const std::vector<Vec2>& p, const Optimal_curve_op
           ": every weight is zero (length_weight = curvature_weight = 0, no derivative_weight): F = 0 has no minimiser");
   require(std::isfinite(o.resolution) && o.resolution > 0, fn, ": resolution = ", o.resolution, " must be > 0");
   require(std::isfinite(o.tolerance) && o.tolerance > 0, fn, ": tolerance = ", o.tolerance, " must be > 0");
+  require(o.max_vertices >= 1, fn, ": max_vertices = ", o.max_vertices, " must be >= 1");
   require(o.max_levels >= 1 && o.max_iterations_per_level >= 1, fn, ": max_levels = ", o.max_levels,
           " and max_iterations_per_level = ", o.max_iterations_per_level, " must be >= 1");
 }
@@ -306,6 +307,9 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
   });
   r.eta = eta;
   r.eta_reference_guarded = guarded;
+  // eta is only as good as the reference curve it was measured on: a reference that did not
+  // converge (after the guard) makes the whole solve no better than it (reviewer finding 8).
+  r.report.status = worse(r.report.status, reference.report.status);
   return r;
 }
 
