@@ -395,6 +395,32 @@ TEST(OptimiserConstraints, InteriorTangentSweepConvergesAndNeverDiverges) {
   EXPECT_GE(converged, total - 1);  // measured: 38 of 39 (point 1 at -75 deg: CAPPED)
 }
 
+// Scale invariance and translations far beyond the old window (reviewer finding 9: 1e+-100 threw,
+// a translation by 1e12 ended CAPPED): the solve runs on normalised points.
+TEST(OptimiserStructure, HugeTinyAndFarAwayInputGiveTheSameCurve) {
+  const Optimal_curve_2<K> c(wave);
+  ASSERT_EQ(c.report().status, Optimal_curve_status::CONVERGED);
+  for (double q : {1e-150, 1e150}) {
+    std::vector<P> w;
+    for (const P& v : wave) w.push_back(P(q * v.x(), q * v.y()));
+    const Optimal_curve_2<K> d(w);
+    EXPECT_EQ(d.report().status, Optimal_curve_status::CONVERGED) << q;
+    ASSERT_EQ(d.polygon().size(), c.polygon().size()) << q;
+    EXPECT_NEAR(d.energy() / q, c.energy(), 1e-9 * c.energy()) << q;
+    for (std::size_t j = 0; j < c.polygon().size(); ++j) {
+      EXPECT_NEAR(d.polygon()[j].x() / q, c.polygon()[j].x(), 1e-9) << q << " " << j;
+      EXPECT_NEAR(d.polygon()[j].y() / q, c.polygon()[j].y(), 1e-9) << q << " " << j;
+    }
+  }
+  std::vector<P> far;
+  for (const P& v : wave) far.push_back(P(v.x() + 1e12, v.y() - 1e12));
+  const Optimal_curve_2<K> e(far);
+  EXPECT_EQ(e.report().status, Optimal_curve_status::CONVERGED);
+  ASSERT_EQ(e.polygon().size(), c.polygon().size());
+  EXPECT_NEAR(e.energy(), c.energy(), 1e-6 * c.energy());
+  for (std::size_t j = 0; j < c.polygon().size(); ++j) EXPECT_NEAR(e.polygon()[j].x() - 1e12, c.polygon()[j].x(), 1e-3) << j;
+}
+
 // The interpolation points are the user's points in an exact kernel too (reviewer finding 10).
 TEST(OptimiserStructure, ExactKernelPointsAreReproducedExactly) {
   typedef fair_test::EPECK E;

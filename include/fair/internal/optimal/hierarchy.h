@@ -258,8 +258,40 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
 }
 
 /// The whole solve of Optimal_curve_2 (checks, the lambda design, the hierarchy).
+inline Solve_result solve_normalised(const std::vector<Vec2>& points, const Optimal_curve_options& o);
+
+/// The whole solve of Optimal_curve_2 (checks, the lambda design, the hierarchy), on the points
+/// translated by their centroid and divided by a power of two near their extent (reviewer finding 9:
+/// without it the scale invariance F(q c) = q F(c) held only in a window, |q| in 1e-30..1e30, and a
+/// translation by 1e12 ended CAPPED), mapped back after: the polygon (with the input points written
+/// back exactly at the interpolation indices), curvatures (x 1/scale) and energies (x scale; the
+/// reduced gradients are invariant: F and the offsets scale alike).
 inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const Optimal_curve_options& o) {
   check_solve_input(points, o);
+  double cx = 0, cy = 0;
+  for (const Vec2& p : points) { cx += p[0] / static_cast<double>(points.size()); cy += p[1] / static_cast<double>(points.size()); }
+  double r = 0;
+  for (const Vec2& p : points) r = std::max(r, std::max(std::abs(p[0] - cx), std::abs(p[1] - cy)));
+  if (!(r > 0 && std::isfinite(r) && std::isfinite(cx) && std::isfinite(cy))) return solve_normalised(points, o);
+  const double scale = std::ldexp(1.0, std::ilogb(r));  // exact: a power of two
+  std::vector<Vec2> q(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) q[i] = {{(points[i][0] - cx) / scale, (points[i][1] - cy) / scale}};
+  for (std::size_t i = 0; i + 1 < q.size() || (o.closed && i < q.size()); ++i) {
+    const Vec2& a = q[i];
+    const Vec2& b = q[(i + 1) % q.size()];
+    if (a[0] == b[0] && a[1] == b[1]) return solve_normalised(points, o);  // distinct only before rounding: solve as given
+  }
+  Solve_result res = solve_normalised(q, o);
+  for (Vec2& v : res.polygon) v = {{v[0] * scale + cx, v[1] * scale + cy}};
+  for (std::size_t i = 0; i < points.size(); ++i) res.polygon[res.interpolation_indices[i]] = points[i];
+  for (double& k : res.curvatures) k /= scale;
+  res.report.energy *= scale;
+  for (Optimal_curve_level& l : res.report.levels) l.energy *= scale;
+  return res;
+}
+
+/// solve_optimal_curve on the (normalised) points.
+inline Solve_result solve_normalised(const std::vector<Vec2>& points, const Optimal_curve_options& o) {
   const bool lambda_design = o.lambda != -1 || !o.segment_lambda.empty();
   if (!lambda_design) {
     return run_hierarchy(points, o, [&](const std::vector<Vec2>& c, const std::vector<std::size_t>&,
@@ -283,12 +315,12 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
   ref.derivative_weight = {{0, 0, 0, 0, 0}};
   ref.length_weight = 0;
   ref.curvature_weight = 1;
-  Solve_result reference = solve_optimal_curve(points, ref);
+  Solve_result reference = solve_normalised(points, ref);
   bool guarded = false;
   if (reference.report.status == Status::DIVERGING) {
     ref.length_weight = 0.01 * lambda_scale(0);
     ref.curvature_weight = 0.99;
-    reference = solve_optimal_curve(points, ref);
+    reference = solve_normalised(points, ref);
     guarded = true;
   }
   std::vector<double> eta(segments);
