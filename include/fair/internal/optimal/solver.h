@@ -349,12 +349,13 @@ inline std::vector<Vec2> displaced(const std::vector<Vec2>& c, const Reduced_unk
   return d;
 }
 
-/// F at c, +infinity where the functional rejects the polygon (coincident vertices after a step).
+/// F at c, +infinity where the functional rejects the polygon (its Invalid_input_error: coincident
+/// vertices after a step, overflow); any other error (an Internal_error) propagates.
 inline double energy_or_infinity(const Level_problem& p, const std::vector<Vec2>& c) {
   try {
     const double e = problem_energy(p, c);
     return std::isfinite(e) ? e : std::numeric_limits<double>::infinity();
-  } catch (const Error&) {
+  } catch (const Invalid_input_error&) {
     return std::numeric_limits<double>::infinity();
   }
 }
@@ -562,7 +563,7 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
           slope = 0;
           for (std::size_t a = 0; a < c.size(); ++a)
             if (u.var[a] >= 0) slope += direction[u.var[a]] * vec::dot(u.dir[a], gt[a]);
-        } catch (const Error&) { break; }
+        } catch (const Invalid_input_error&) { break; }
         if (!std::isfinite(slope) || std::abs(slope) <= 1e-3 * std::abs(d1)) break;
         const double curvature = (slope - slope_prev) / (sigma - sigma_prev);
         if (!(curvature > 0)) break;
