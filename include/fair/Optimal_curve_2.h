@@ -43,12 +43,15 @@ public:
     polygon_.reserve(r.polygon.size());
     for (const internal::optimal::Vec2& v : r.polygon) polygon_.push_back(Point_2(FT(v[0]), FT(v[1])));
     interpolation_indices_ = r.interpolation_indices;
+    // The interpolation points are the user's points exactly (also in an exact kernel, where the
+    // round trip through double would change them).
+    for (std::size_t i = 0; i < points.size(); ++i) polygon_[interpolation_indices_[i]] = points[i];
     curvatures_ = r.curvatures;
     report_ = r.report;
   }
 
   /// The optimal polygon (closed: no repeated vertex); its vertices at interpolation_indices()
-  /// are the input points (converted to double and back: exact for double input).
+  /// are the input points themselves (exactly, in every kernel).
   const std::vector<Point_2>& polygon() const { return polygon_; }
   /// The polygon index of each input point.
   const std::vector<std::size_t>& interpolation_indices() const { return interpolation_indices_; }

@@ -21,10 +21,10 @@ enum class Curvature_discretisation { REGULARISED, CIRCUMCIRCLE, TURNING_ANGLE }
 /// NEWTON (the default: exact banded Hessian, converges in a few steps per level) or the paper's
 /// CONJUGATE_GRADIENT (Polak-Ribiere with a Newton line search; for comparison only).
 enum class Optimal_curve_solver { NEWTON, CONJUGATE_GRADIENT };
-/// CONVERGED: the Newton decrement fell below the tolerance on every level and the target
-/// resolution was reached; DIVERGING: the curve runs away (its extent grows beyond a cap or an
-/// edge degenerates: the functional has no finite minimiser for these data); CAPPED: an
-/// iteration, level or vertex cap was hit first. JSON spelling: "converged", "diverging", "capped".
+/// CONVERGED: the Newton decrement (with a negligible shift) fell below the tolerance on every
+/// level and the target resolution was reached; DIVERGING: the curve runs away (its extent grows
+/// beyond a cap: the functional has no finite minimiser for these data); CAPPED: an iteration,
+/// level or vertex cap was hit first, or the solver failed (an edge collapsed, no descent step). JSON spelling: "converged", "diverging", "capped".
 enum class Optimal_curve_status { CONVERGED, DIVERGING, CAPPED };
 /// TANGENT (direction of travel), NORMAL (its left normal) or CORNER (in- and outgoing tangents).
 enum class Point_constraint_kind { TANGENT, NORMAL, CORNER };

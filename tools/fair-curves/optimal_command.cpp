@@ -284,7 +284,7 @@ void register_optimal_command(CLI::App& app) {
   sub->add_option("--tangents", options->tangents, "tangent constraints, lines 'i tx ty' (direction of travel)");
   sub->add_option("--normals", options->normals, "normal constraints, lines 'i nx ny' (left normal of the direction of travel)");
   sub->add_option("--corners", options->corners, "corners, lines 'i tx_in ty_in tx_out ty_out'");
-  sub->add_option("--resolution", options->resolution, "rho: pixels per bounding-box extent (> 0, default 500)");
+  sub->add_option("--resolution", options->resolution, "rho: pixels per extent (twice the largest distance of a vertex from the centroid; > 0, default 500)");
   sub->add_option("--solver", options->solver, "newton (default) or cg (the paper's conjugate gradients)");
   sub->add_option("-o,--output", options->json_out, "write the curve and the report as JSON ('-': only JSON on stdout)");
   sub->add_option("--svg", options->svg_out, "draw the spline through the optimal polygon and its curvature comb");

@@ -94,6 +94,19 @@ inline std::vector<Placed_constraint> check_constraints(const std::vector<Point_
                                           " is perpendicular to the line of the collinear points ", (c.index + m - 1) % m,
                                           ", ", c.index, ", ", (c.index + 1) % m, ": it cannot be met"));
     }
+    if (interior && !corner) {
+      // A tangent exactly against an incident chord: the initial split point (initial_polygon) lies
+      // on that chord behind the point, the polygon folds back by pi there and the neighbour has no
+      // normal to move along.
+      const Vec2 a = vec::sub(points[c.index], points[(c.index + m - 1) % m]);
+      const Vec2 b = vec::sub(points[(c.index + 1) % m], points[c.index]);
+      const bool back_a = vec::dot(d, a) < 0 && std::abs(vec::cross(d, a)) <= 1e-12 * vec::norm(a);
+      const bool back_b = vec::dot(d, b) < 0 && std::abs(vec::cross(d, b)) <= 1e-12 * vec::norm(b);
+      if (back_a || back_b)
+        throw Invalid_input_error(message(fn, ": the tangent constraint (", d[0], ", ", d[1], ") at point ", c.index,
+                                          " points back along the chord (", back_a ? a[0] : b[0], ", ", back_a ? a[1] : b[1],
+                                          ") ", back_a ? "from the previous" : "to the next", " point: the curve would fold back onto it"));
+    }
     out.push_back({c.index, corner, d, o});
   }
   return out;

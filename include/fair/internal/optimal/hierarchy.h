@@ -2,7 +2,7 @@
 //
 // The hierarchical, adaptive optimiser of Gumhold's Sec. 2.3 (doc/optimal_curves.md,
 // "Hierarchy"): start from the input polygon (with the constrained edges split, constraints.h),
-// solve the level (solver.h), subdivide at edge midpoints where
+// solve the level (solver.h), split the edges (new vertex by the four-point rule, see subdivide) where
 //   max(eps(l_j, phi_j), eps(l_j, phi_{j+1})) > eps_max,   eps(l, phi) = (l/2) tan(|phi|/4)
 // (the sagitta of the circle tangent to the vertex bisector through the chord of length l: with
 // central angle phi, r = l / (2 sin(phi/2)) and eps = r (1 - cos(phi/2)) = (l/2) tan(phi/4) by the
@@ -183,6 +183,7 @@ inline void check_solve_input(const std::vector<Vec2>& p, const Optimal_curve_op
           ": every weight is zero (length_weight = curvature_weight = 0, no derivative_weight): F = 0 has no minimiser");
   require(std::isfinite(o.resolution) && o.resolution > 0, fn, ": resolution = ", o.resolution, " must be > 0");
   require(std::isfinite(o.tolerance) && o.tolerance > 0, fn, ": tolerance = ", o.tolerance, " must be > 0");
+  require(o.max_vertices >= 1, fn, ": max_vertices = ", o.max_vertices, " must be >= 1");
   require(o.max_levels >= 1 && o.max_iterations_per_level >= 1, fn, ": max_levels = ", o.max_levels,
           " and max_iterations_per_level = ", o.max_iterations_per_level, " must be >= 1");
 }
@@ -237,12 +238,13 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
     r.report.energy = out.energy;
     overall = worse(overall, out.status);
     if (out.status == Status::DIVERGING) break;
-    if (level + 1 >= o.max_levels) { overall = worse(overall, Status::CAPPED); break; }
     std::vector<Vec2> d = c;
     std::vector<std::size_t> interpolation = r.interpolation_indices;
     std::vector<Placed_constraint> moved = placed;
     const std::size_t split = subdivide(p, d, rotation_invariant_extent(c) / o.resolution, interpolation, moved);
-    if (split == 0) break;
+    if (split == 0) break;  // the target resolution is reached
+    // The level cap counts only when another level is needed.
+    if (level + 1 >= o.max_levels) { overall = worse(overall, Status::CAPPED); break; }
     if (d.size() > o.max_vertices) { overall = worse(overall, Status::CAPPED); break; }
     c.swap(d);
     r.interpolation_indices.swap(interpolation);
@@ -256,8 +258,40 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
 }
 
 /// The whole solve of Optimal_curve_2 (checks, the lambda design, the hierarchy).
+inline Solve_result solve_normalised(const std::vector<Vec2>& points, const Optimal_curve_options& o);
+
+/// The whole solve of Optimal_curve_2 (checks, the lambda design, the hierarchy), on the points
+/// translated by their centroid and divided by a power of two near their extent (reviewer finding 9:
+/// without it the scale invariance F(q c) = q F(c) held only in a window, |q| in 1e-30..1e30, and a
+/// translation by 1e12 ended CAPPED), mapped back after: the polygon (with the input points written
+/// back exactly at the interpolation indices), curvatures (x 1/scale) and energies (x scale; the
+/// reduced gradients are invariant: F and the offsets scale alike).
 inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const Optimal_curve_options& o) {
   check_solve_input(points, o);
+  double cx = 0, cy = 0;
+  for (const Vec2& p : points) { cx += p[0] / static_cast<double>(points.size()); cy += p[1] / static_cast<double>(points.size()); }
+  double r = 0;
+  for (const Vec2& p : points) r = std::max(r, std::max(std::abs(p[0] - cx), std::abs(p[1] - cy)));
+  if (!(r > 0 && std::isfinite(r) && std::isfinite(cx) && std::isfinite(cy))) return solve_normalised(points, o);
+  const double scale = std::ldexp(1.0, std::ilogb(r));  // exact: a power of two
+  std::vector<Vec2> q(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) q[i] = {{(points[i][0] - cx) / scale, (points[i][1] - cy) / scale}};
+  for (std::size_t i = 0; i + 1 < q.size() || (o.closed && i < q.size()); ++i) {
+    const Vec2& a = q[i];
+    const Vec2& b = q[(i + 1) % q.size()];
+    if (a[0] == b[0] && a[1] == b[1]) return solve_normalised(points, o);  // distinct only before rounding: solve as given
+  }
+  Solve_result res = solve_normalised(q, o);
+  for (Vec2& v : res.polygon) v = {{v[0] * scale + cx, v[1] * scale + cy}};
+  for (std::size_t i = 0; i < points.size(); ++i) res.polygon[res.interpolation_indices[i]] = points[i];
+  for (double& k : res.curvatures) k /= scale;
+  res.report.energy *= scale;
+  for (Optimal_curve_level& l : res.report.levels) l.energy *= scale;
+  return res;
+}
+
+/// solve_optimal_curve on the (normalised) points.
+inline Solve_result solve_normalised(const std::vector<Vec2>& points, const Optimal_curve_options& o) {
   const bool lambda_design = o.lambda != -1 || !o.segment_lambda.empty();
   if (!lambda_design) {
     return run_hierarchy(points, o, [&](const std::vector<Vec2>& c, const std::vector<std::size_t>&,
@@ -281,12 +315,12 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
   ref.derivative_weight = {{0, 0, 0, 0, 0}};
   ref.length_weight = 0;
   ref.curvature_weight = 1;
-  Solve_result reference = solve_optimal_curve(points, ref);
+  Solve_result reference = solve_normalised(points, ref);
   bool guarded = false;
   if (reference.report.status == Status::DIVERGING) {
     ref.length_weight = 0.01 * lambda_scale(0);
     ref.curvature_weight = 0.99;
-    reference = solve_optimal_curve(points, ref);
+    reference = solve_normalised(points, ref);
     guarded = true;
   }
   std::vector<double> eta(segments);
@@ -305,6 +339,9 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
   });
   r.eta = eta;
   r.eta_reference_guarded = guarded;
+  // eta is only as good as the reference curve it was measured on: a reference that did not
+  // converge (after the guard) makes the whole solve no better than it (reviewer finding 8).
+  r.report.status = worse(r.report.status, reference.report.status);
   return r;
 }
 

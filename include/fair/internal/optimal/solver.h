@@ -2,10 +2,11 @@
 //
 // The level optimiser of Gumhold's optimal curves (Sec. 2.3.2, replaced by Newton as issue 11
 // asks; doc/optimal_curves.md, "Level solve"). Unknowns: one scalar per free vertex (its
-// offset along the vertex normal n_j, fixed during a step and recomputed after it) and one per TIE
+// offset along the vertex normal n_j, fixed for the level unless it is re-anchored, see solve_level) and one per TIE
 // (the two neighbours of a single tangent/normal constraint, see constraints.h). Every unknown u_k moves its vertices as
 // c_a += u_k v_a, so the reduced gradient is sum_a v_a . g_a and the reduced Hessian
-// sum_{a,b} v_a^T H_ab v_b (exact second derivative of u -> F(c + sum u_k v_k), a linear map).
+// sum_{a,b} v_a^T H_ab v_b (exact second derivative of u -> F(c + sum u_k v_k), a linear map), plus
+// at a tie the curvature term g . R'' of its restoring rotation (add_tie_curvature).
 // Unknowns are numbered in vertex order. The reduced system of a closed curve stays CYCLIC even
 // though the interpolation points are fixed: kappa_j of a fixed vertex j still couples c_{j-1} and
 // c_{j+1} (and the kappa^(k) terms couple up to w vertices across it), so eliminating a fixed vertex
@@ -47,7 +48,7 @@ constexpr int max_backtracks = 60;
 constexpr double armijo_c1 = 1e-4;
 /// A polygon whose bounding-box extent exceeds this multiple of the input's is diverging.
 constexpr double divergence_extent_factor = 1e3;
-/// An edge shorter than this fraction of the extent is degenerate (the curve collapses): diverging.
+/// An edge (with a free end) shorter than this fraction of the extent is degenerate: the level stops CAPPED.
 constexpr double degenerate_edge_fraction = 1e-12;
 /// When no Armijo step decreases F any more, the level counts as converged if the predicted
 /// decrease is below this fraction of |F| (the rounding floor of F's evaluation at large n).
@@ -56,6 +57,11 @@ constexpr double rounding_floor = 1e-8;
 constexpr double max_step_fraction = 0.5;
 /// A level ending on its iteration cap with its extent grown by this factor is DIVERGING.
 constexpr double runaway_growth = 4;
+/// Re-anchoring (see solve_level): an edge shorter than this fraction of its length at the last
+/// anchor means the fixed lines of motion have crowded its vertices together.
+constexpr double anchor_shrink = 0.5;
+/// Most re-anchorings of one level.
+constexpr int max_reanchors = 50;
 /// Newton-Raphson steps of the CG line search (the paper: "a maximum of ten").
 constexpr int cg_line_search_steps = 10;
 
@@ -172,6 +178,16 @@ inline double min_edge(const std::vector<Vec2>& c, bool closed) {
   return m;
 }
 
+/// The shortest edge with at least one free end (edges between two fixed vertices do not move).
+inline double free_min_edge(const std::vector<Vec2>& c, bool closed, const Vertex_roles& roles) {
+  const std::size_t n = c.size(), e = closed ? n : n - 1;
+  double m = std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j < e; ++j)
+    if (roles.role[j] == Vertex_role::FREE || roles.role[(j + 1) % n] == Vertex_role::FREE)
+      m = std::min(m, vec::norm(vec::sub(c[(j + 1) % n], c[j])));
+  return m;
+}
+
 /// The unknowns of one step: vertex a moves by u_{var[a]} dir[a] (var[a] = -1: fixed).
 struct Reduced_unknowns {
   std::vector<long> var;
@@ -216,6 +232,40 @@ inline Reduced_unknowns reduced_unknowns(const std::vector<Vec2>& c, const std::
     }
   }
   return u;
+}
+
+/// The exact Hessian of u -> F(R(c + u v)) where R restores the ties (constraints.h) has, besides
+/// v^T H v, the term g . d^2R/du^2 at every tie unknown: the neighbours move on the circles of the
+/// rotation (Fig. 5c), not on the lines v. Without it Newton converges only linearly on designs with
+/// interior tangent/normal constraints (up to 71 iterations per level were measured). d^2R/du^2 by a
+/// central second difference of R (R depends only on the tie's own three vertices, so there are no
+/// cross terms), step 1e-4 of the shorter neighbour edge: truncation ~1e-8, rounding ~1e-8 relative.
+inline void add_tie_curvature(const std::vector<Vec2>& c, const std::vector<Vec2>& g, const Reduced_unknowns& u,
+                              const Vertex_roles& roles, Banded_symmetric& rh) {
+  const std::size_t n = c.size();
+  for (const Vertex_roles::Tie& t : roles.ties) {
+    const std::size_t j = t.centre, a = (j + n - 1) % n, b = (j + 1) % n;
+    const long k = u.var[a];
+    if (k < 0) continue;
+    const double l = std::min(vec::norm(vec::sub(c[j], c[a])), vec::norm(vec::sub(c[b], c[j])));
+    const double move = std::max(vec::norm(u.dir[a]), vec::norm(u.dir[b]));
+    if (!(l > 0 && move > 0)) continue;
+    const double step = 1e-4 * l / move;
+    std::vector<Vec2> plus = c, minus = c;
+    for (std::size_t v : {a, b})
+      for (int r = 0; r < 2; ++r) {
+        plus[v][r] += step * u.dir[v][r];
+        minus[v][r] -= step * u.dir[v][r];
+      }
+    Vertex_roles one = roles;
+    one.ties.assign(1, t);
+    restore_ties(one, plus);
+    restore_ties(one, minus);
+    double term = 0;
+    for (std::size_t v : {a, b})
+      for (int r = 0; r < 2; ++r) term += g[v][r] * (plus[v][r] + minus[v][r] - 2 * c[v][r]) / (step * step);
+    rh.at(static_cast<std::size_t>(k), static_cast<std::size_t>(k)) += term;
+  }
 }
 
 /// Index distance of two unknowns in the reduced system.
@@ -299,21 +349,25 @@ inline std::vector<Vec2> displaced(const std::vector<Vec2>& c, const Reduced_unk
   return d;
 }
 
-/// F at c, +infinity where the functional rejects the polygon (coincident vertices after a step).
+/// F at c, +infinity where the functional rejects the polygon (its Invalid_input_error: coincident
+/// vertices after a step, overflow); any other error (an Internal_error) propagates.
 inline double energy_or_infinity(const Level_problem& p, const std::vector<Vec2>& c) {
   try {
     const double e = problem_energy(p, c);
     return std::isfinite(e) ? e : std::numeric_limits<double>::infinity();
-  } catch (const Error&) {
+  } catch (const Invalid_input_error&) {
     return std::numeric_limits<double>::infinity();
   }
 }
 
 /// Solves (rh + mu I) x = rhs with the smallest shift mu of the ladder that makes it positive
-/// definite; false if none does.
-inline bool shifted_solve(const Banded_symmetric& rh, std::vector<double>& x) {
-  double diag = 0;
-  for (std::size_t k = 0; k < x.size(); ++k) diag = std::max(diag, std::abs(rh.at(k, k)));
+/// definite; false if none does. `shift` returns mu relative to the smallest |rh_kk| (0 if unshifted).
+inline bool shifted_solve(const Banded_symmetric& rh, std::vector<double>& x, double& shift) {
+  double diag = 0, smallest = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    diag = std::max(diag, std::abs(rh.at(k, k)));
+    smallest = std::min(smallest, std::abs(rh.at(k, k)));
+  }
   if (!(diag > 0)) diag = 1;
   const std::vector<double> rhs = x;
   double mu = 0;
@@ -321,11 +375,19 @@ inline bool shifted_solve(const Banded_symmetric& rh, std::vector<double>& x) {
     Banded_symmetric a = rh;
     if (mu > 0) a.add_to_diagonal(mu);
     x = rhs;
-    if (solve_banded_positive_definite(a, x)) return true;
+    if (solve_banded_positive_definite(a, x)) {
+      shift = mu == 0 ? 0.0 : smallest > 0 ? mu / smallest : std::numeric_limits<double>::infinity();
+      return true;
+    }
     mu = mu == 0 ? 1e-10 * diag : 10 * mu;
   }
   return false;
 }
+
+/// A Newton decrement computed with a shift larger than this fraction of the smallest diagonal entry
+/// of the reduced Hessian does not certify convergence (the shift, relative to the largest entry,
+/// can swamp the soft unknowns: the step and the decrement become negligible far from a minimiser).
+constexpr double converged_shift = 1e-6;
 
 inline double dot_product(const std::vector<double>& a, const std::vector<double>& b) {
   double s = 0;
@@ -365,6 +427,63 @@ inline double step_cap(const std::vector<Vec2>& c, bool closed, const Reduced_un
   return cap;
 }
 
+inline std::vector<double> edge_lengths(const std::vector<Vec2>& c, bool closed) {
+  const std::size_t n = c.size(), e = closed ? n : n - 1;
+  std::vector<double> l(e);
+  for (std::size_t j = 0; j < e; ++j) l[j] = vec::norm(vec::sub(c[(j + 1) % n], c[j]));
+  return l;
+}
+
+/// True if some edge of `c` is shorter than anchor_shrink times its length `anchor[j]` at the last anchor.
+inline bool crowded(const std::vector<Vec2>& c, bool closed, const std::vector<double>& anchor) {
+  const std::vector<double> l = edge_lengths(c, closed);
+  for (std::size_t j = 0; j < l.size(); ++j)
+    if (l[j] < anchor_shrink * anchor[j]) return true;
+  return false;
+}
+
+/// Slides the free vertices of every chain between two consecutive FIXED vertices along the current
+/// polygon (linear interpolation in arc length) so that the chain's edges have the length fractions
+/// `fractions` had (the level's start: the adaptive spacing the subdivision chose), then restores the
+/// ties. A tangential move: the polygon's shape is kept up to O(h^2) chord errors.
+inline void redistribute(std::vector<Vec2>& c, bool closed, const std::vector<double>& fractions, const Vertex_roles& roles) {
+  const std::size_t n = c.size(), edges = closed ? n : n - 1;
+  std::size_t first = n;
+  for (std::size_t v = 0; v < n && first == n; ++v)
+    if (roles.role[v] == Vertex_role::FIXED) first = v;
+  if (first == n) return;
+  const std::vector<Vec2> old = c;
+  std::size_t a = first;
+  for (std::size_t done = 0; done < edges;) {
+    std::size_t m = 1;  // edges of the chain a -> a + m
+    while (roles.role[(a + m) % n] != Vertex_role::FIXED && done + m < edges) ++m;
+    if (m > 1) {
+      double total = 0, target = 0;
+      for (std::size_t k = 0; k < m; ++k) { total += vec::norm(vec::sub(old[(a + k + 1) % n], old[(a + k) % n])); target += fractions[(a + k) % n]; }
+      double along = 0, walked = 0;
+      std::size_t e = 0;  // current old edge of the chain
+      for (std::size_t k = 1; k < m; ++k) {
+        along += fractions[(a + k - 1) % n] / target * total;
+        for (;;) {
+          const double l = vec::norm(vec::sub(old[(a + e + 1) % n], old[(a + e) % n]));
+          if (walked + l >= along || e + 1 == m) {
+            const double t = l > 0 ? std::min(1.0, std::max(0.0, (along - walked) / l)) : 0.0;
+            const Vec2& p = old[(a + e) % n];
+            const Vec2& q = old[(a + e + 1) % n];
+            c[(a + k) % n] = {{p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])}};
+            break;
+          }
+          walked += l;
+          ++e;
+        }
+      }
+    }
+    done += m;
+    a = (a + m) % n;
+  }
+  restore_ties(roles, c);
+}
+
 /// Minimises F over the free unknowns of `c` (in place).
 inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& roles, const Level_settings& s,
                                  std::vector<Vec2>& c) {
@@ -377,14 +496,20 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
   std::vector<Vec2> normals;
   const double inf = std::numeric_limits<double>::infinity();
   const double start_extent = polygon_extent(c);
+  const std::vector<double> fractions = edge_lengths(c, f.closed);
+  std::vector<double> anchor = fractions;
+  int reanchors = 0;
+  bool reanchored = false;
   for (std::size_t it = 0;; ++it) {
     const double e = problem_energy_gradient_hessian(p, c, g, h);
     out.energy = e;
     // The lines of motion: normals of the level's start polygon (s.fixed_normals) or of the
     // current polygon (recomputed after every step, the paper's choice).
-    if (it == 0 || !s.fixed_normals) normals = vertex_normals(c, f.closed);
+    if (it == 0 || !s.fixed_normals || reanchored) normals = vertex_normals(c, f.closed);
+    reanchored = false;
     const Reduced_unknowns u = reduced_unknowns(c, normals, roles, f.closed);
     reduced_system(g, h, f.closed, u, rg, rh);
+    if (!s.conjugate_gradient) add_tie_curvature(c, g, u, roles, rh);
     out.gradient_norm = std::sqrt(dot_product(rg, rg));
     out.iterations = it;
     const double scale = std::max(std::abs(e), std::numeric_limits<double>::min());
@@ -398,9 +523,10 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
     if (!s.conjugate_gradient) {
       x.assign(rg.size(), 0);
       for (std::size_t k = 0; k < rg.size(); ++k) x[k] = -rg[k];
-      if (!shifted_solve(rh, x)) { out.status = Status::CAPPED; return out; }
+      double shift = 0;
+      if (!shifted_solve(rh, x, shift)) { out.status = Status::CAPPED; return out; }
       decrement = -dot_product(rg, x);
-      if (0.5 * decrement <= s.tolerance * scale) {
+      if (0.5 * decrement <= s.tolerance * scale && shift <= converged_shift) {
         // Converged: still take this last (tiny) Newton step when it does not raise F beyond
         // rounding: it is free (already solved) and squares the remaining error.
         const std::vector<Vec2> last = displaced(c, u, x, 1.0, roles);
@@ -437,7 +563,7 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
           slope = 0;
           for (std::size_t a = 0; a < c.size(); ++a)
             if (u.var[a] >= 0) slope += direction[u.var[a]] * vec::dot(u.dir[a], gt[a]);
-        } catch (const Error&) { break; }
+        } catch (const Invalid_input_error&) { break; }
         if (!std::isfinite(slope) || std::abs(slope) <= 1e-3 * std::abs(d1)) break;
         const double curvature = (slope - slope_prev) / (sigma - sigma_prev);
         if (!(curvature > 0)) break;
@@ -466,15 +592,34 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
       out.status = 0.5 * decrement <= rounding_floor * scale ? Status::CONVERGED : Status::CAPPED;
       return out;
     }
+    // DIVERGING only when the curve runs away (its extent beyond the cap: no finite minimiser); an
+    // edge with a free end that degenerates is a solver failure on a problem that may well have a
+    // minimiser (with beta > 0 the length is bounded by F/beta): CAPPED.
     const double extent = polygon_extent(trial);
-    if (extent > s.max_extent || min_edge(trial, f.closed) < degenerate_edge_fraction * extent) {
+    const bool runaway = extent > s.max_extent, collapsed = free_min_edge(trial, f.closed, roles) < degenerate_edge_fraction * extent;
+    if (runaway || collapsed) {
       c = trial;
       out.energy = et;
       out.iterations = it + 1;
-      out.status = Status::DIVERGING;
+      out.status = runaway ? Status::DIVERGING : Status::CAPPED;
       return out;
     }
     c = trial;
+    // Re-anchoring. The lines of motion are fixed for the level (Newton then minimises one fixed
+    // function), but where the curve moves towards its centres of curvature by more than the local
+    // radius of the start polygon, the fixed normals of neighbouring vertices converge and the
+    // vertices crowd together on them: the restricted minimiser has a collapsing edge (the level
+    // creeps, step-capped, towards it, and the collapse looked like a degenerating curve). Seen on
+    // hand-drawn strokes that double back. Then the free vertices are slid back along the current
+    // polygon to the level's spacing and the normals recomputed: a new fixed function, from which
+    // Newton continues (capped: max_reanchors).
+    if (reanchors < max_reanchors && crowded(c, f.closed, anchor)) {
+      redistribute(c, f.closed, fractions, roles);
+      anchor = edge_lengths(c, f.closed);
+      ++reanchors;
+      reanchored = true;
+      continue;
+    }
     if (s.conjugate_gradient && e - et <= s.tolerance * scale) {
       out.energy = et;
       out.iterations = it + 1;
