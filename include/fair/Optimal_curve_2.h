@@ -16,6 +16,7 @@
 #include <CGAL/number_utils.h>
 
 #include <cstddef>
+#include <algorithm>
 #include <vector>
 
 namespace fair {
@@ -55,6 +56,16 @@ public:
   const std::vector<Point_2>& polygon() const { return polygon_; }
   /// The polygon index of each input point.
   const std::vector<std::size_t>& interpolation_indices() const { return interpolation_indices_; }
+  /// The polygon vertices of the CORNER constraints (ascending): where the curve is only G0, so
+  /// that its spline is fit_cubic_spline_runs(polygon(), closed, corner_vertices()).
+  std::vector<std::size_t> corner_vertices() const {
+    std::vector<std::size_t> v;
+    for (const Point_constraint& c : options_.constraints)
+      if (c.kind == Point_constraint_kind::CORNER) v.push_back(interpolation_indices_[c.index]);
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+  }
   const Optimal_curve_report& report() const { return report_; }
   /// The discrete true curvature per polygon vertex (the functional's discretisation; 0 at open ends).
   std::vector<double> curvatures() const { return curvatures_; }

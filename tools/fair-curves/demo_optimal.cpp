@@ -2,7 +2,7 @@
 //
 // Gallery of Gumhold's optimal curves (issue 11 section 6; doc/optimal_curves.md): the figures of
 // the paper recomputed with fair::Optimal_curve_2, each drawn as the C2 cubic spline through the
-// optimal polygon (fair::fit_cubic_spline) with its curvature plot and the measured figures of
+// optimal polygon (fair::fit_cubic_spline_runs: C2, G0 at corners) with its curvature plot and the measured figures of
 // the solve (status, levels, vertices, iterations, energy, distance of the spline to the polygon).
 // Fig. 3 is computed from the closed form of eq. 7 (true-curvature convention, kappa = f(phi)/s).
 
@@ -58,7 +58,8 @@ void solve_figures(const fair::Optimal_curve_2<Kernel>& curve, double fit_distan
 void add_solve(fair_curves::Gallery& gallery, const std::vector<Point_2>& points, const fair::Optimal_curve_options& o,
                const std::string& title, const std::string& caption, bool show_vertices = false) {
   const fair::Optimal_curve_2<Kernel> curve(points, o);
-  const fair::Polygon_spline_fit<Kernel> fit = fair::fit_cubic_spline<Kernel>(curve.polygon(), o.closed);
+  const fair::Polygon_spline_runs<Kernel> fit =
+      fair::fit_cubic_spline_runs<Kernel>(curve.polygon(), o.closed, curve.corner_vertices());
   fair_curves::Curve_case c;
   c.title = title;
   c.caption = caption;
@@ -67,7 +68,7 @@ void add_solve(fair_curves::Gallery& gallery, const std::vector<Point_2>& points
   c.samples_per_piece = 8;
   solve_figures(curve, fit.max_distance, c);
   c.measurements.emplace_back("vertices of the optimal polygon", std::to_string(curve.polygon().size()));
-  gallery.add_case(fair_curves::make_gallery_case(fit.spline.pieces(), c));
+  gallery.add_case(fair_curves::make_gallery_case(fit.pieces(), c));
 }
 
 // A family of solves drawn together (their splines one after the other in the curvature plot).
@@ -84,8 +85,9 @@ void add_family(fair_curves::Gallery& gallery, const std::vector<Point_2>& point
   c.samples_per_piece = 8;
   for (const auto& member : family) {
     const fair::Optimal_curve_2<Kernel> curve(points, member.second);
-    const fair::Polygon_spline_fit<Kernel> fit = fair::fit_cubic_spline<Kernel>(curve.polygon(), member.second.closed);
-    const std::vector<fair::Rational_bezier_2<Kernel>> p = fit.spline.pieces();
+    const fair::Polygon_spline_runs<Kernel> fit =
+        fair::fit_cubic_spline_runs<Kernel>(curve.polygon(), member.second.closed, curve.corner_vertices());
+    const std::vector<fair::Rational_bezier_2<Kernel>> p = fit.pieces();
     pieces.insert(pieces.end(), p.begin(), p.end());
     const fair::Optimal_curve_report& r = curve.report();
     c.measurements.emplace_back(member.first, std::string(fair::to_string(r.status)) + ", " +
@@ -153,7 +155,7 @@ void add_optimal_cases(fair_curves::Gallery& gallery) {
       "Optimal curves (Gumhold)",
       "Minimisers of F = int beta + beta_0 |kappa L0|^alpha_0 (+ curvature-derivative terms) ds on adaptive polygons "
       "(fair::Optimal_curve_2, hierarchical Newton), delivered as the C2 cubic spline through the optimal polygon "
-      "(fair::fit_cubic_spline). The figures of Gumhold's paper, recomputed; see doc/optimal_curves.md.");
+      "(fair::fit_cubic_spline_runs: C2, G0 at corners). The figures of Gumhold's paper, recomputed; see doc/optimal_curves.md.");
   fair::Optimal_curve_options base;
 
   fair::Optimal_curve_options normal = base;

@@ -2,7 +2,7 @@
 //
 // fair-curves optimal: Gumhold's optimal curve through a point file (fair::Optimal_curve_2,
 // issue 11; doc/optimal_curves.md), delivered as the optimal polygon and the C2 cubic spline
-// through it (fair::fit_cubic_spline; with a derivative term k >= 1 also the C4 quintic). The
+// through it (fair::fit_cubic_spline_runs: C2 between corners, G0 at them; with a derivative term k >= 1 also the C4 quintic). The
 // weights of eq. 5 (--length-weight, --curvature-weight, --curvature-exponent,
 // --derivative-weight K:BK[:AK]) or the lambda trade-off of eq. 10 (--lambda, or one lambda per
 // input segment from --lambda-file); tangent, normal and corner constraints from files (formats
@@ -181,7 +181,7 @@ bool has_derivative_term(const fair::Optimal_curve_options& o) {
 nlohmann::json xy(const fair_curves::Point_2& p) { return nlohmann::json::array({p.x(), p.y()}); }
 
 std::string curve_json(const fair::Optimal_curve_2<fair_curves::Kernel>& curve,
-                       const fair::Polygon_spline_fit<fair_curves::Kernel>& fit,
+                       const fair::Polygon_spline_runs<fair_curves::Kernel>& fit,
                        const fair::Polygon_quintic_fit<fair_curves::Kernel>* quintic) {
   const fair::Optimal_curve_report& r = curve.report();
   nlohmann::json levels = nlohmann::json::array(), polygon = nlohmann::json::array();
@@ -209,7 +209,11 @@ std::string curve_json(const fair::Optimal_curve_2<fair_curves::Kernel>& curve,
     extra["quintic"] = {{"degree", 5}, {"pieces", pieces}, {"max_distance", quintic->max_distance}};
   }
   std::ostringstream out;
-  fair::io::write_json(out, fair::io::spline_curve_to_json(fit.spline, extra));
+  // The curve format of the fit's pieces with its "bspline" member: one spline, or (with corners)
+  // the C2 runs between them as one NURBS with triple knots at the corners.
+  nlohmann::json j = fair::io::curve_to_json(fit.pieces(), extra);
+  j["bspline"] = fair::io::spline_runs_to_json(fit.splines, curve.options().closed);
+  fair::io::write_json(out, j);
   return out.str();
 }
 
@@ -243,7 +247,8 @@ void run_optimal(const Optimal_command_options& o) {
     read_constraints(o.corners, fair::Point_constraint_kind::CORNER, n, options.constraints, seen_line, seen_file);
 
   const fair::Optimal_curve_2<Kernel> curve(data.points, options);
-  const fair::Polygon_spline_fit<Kernel> fit = fair::fit_cubic_spline<Kernel>(curve.polygon(), options.closed);
+  const fair::Polygon_spline_runs<Kernel> fit =
+      fair::fit_cubic_spline_runs<Kernel>(curve.polygon(), options.closed, curve.corner_vertices());
   std::unique_ptr<fair::Polygon_quintic_fit<Kernel>> quintic;
   if (has_derivative_term(options))
     quintic.reset(new fair::Polygon_quintic_fit<Kernel>(fair::fit_quintic_spline<Kernel>(curve.polygon(), options.closed)));
@@ -255,7 +260,7 @@ void run_optimal(const Optimal_command_options& o) {
     c.title_in_figure = true;
     c.input_points = fair::io::to_xy(data.points);
     c.control_polygons = false;
-    svg_text = make_curve_figures(fit.spline.pieces(), c).curve_svg;
+    svg_text = make_curve_figures(fit.pieces(), c).curve_svg;
   }
   write_outputs(summary(o, curve, n, fit.max_distance), o.json_out, json_text, {{o.svg_out, svg_text}});
   if (curve.report().status != fair::Optimal_curve_status::CONVERGED) {
