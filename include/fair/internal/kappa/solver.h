@@ -276,6 +276,12 @@ inline void assemble_normal_equations(const Problem& pb, const Kappa_solver_stat
     build_window(pb, st, i, win);
     Dual<16> r[4];
     block_residuals(pb, st, i, win, r);
+    // The active set (as in newton()): a t_i on its face is fixed with its eq. 7 dropped -- the
+    // row r_2 of block i and the column of t_i (slot 11: only block row i depends on it) vanish.
+    if (t_on_face(st.t[i])) {
+      r[2] = Dual<16>(0.0);
+      for (int e = 0; e < 4; ++e) r[e].d[11] = 0.0;
+    }
     int m = 0;
     for (int k = 0; k < 4; ++k) {
       if (!win.valid[k]) continue;
@@ -358,6 +364,8 @@ inline double evaluate_range(const Problem& pb, const Kappa_solver_state& s, con
   return mx;
 }
 
+inline bool snap_to_faces(const Problem& pb, const Block_range& range, Kappa_solver_state& st);
+
 /// Levenberg-Marquardt from `st` on the blocks of `range` (all by default); returns the final
 /// max |r|. Counts iterations in res.
 inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
@@ -369,7 +377,13 @@ inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, con
   auto pos = [&](std::size_t ii) { return range.all ? (pb.closed ? cyclic_position(ii, n) : ii) : ii; };
   const std::size_t h = range.all ? normal_bandwidth(pb) : std::min<std::size_t>(range_bandwidth, N - 1);
   std::vector<double> F, Ftrial, g(N), D(N), delta(N), Abase;
-  double fmax = evaluate_range(pb, st, range, F);
+  // The residuals of the equations that remain (the active set of newton(): a t_i on its face
+  // has its eq. 7 dropped, see assemble_normal_equations).
+  auto residuals = [&](const Kappa_solver_state& s, std::vector<double>& R) {
+    evaluate_range(pb, s, range, R);
+    return drop_face_equations(pb, s, range, R);
+  };
+  double fmax = residuals(st, F);
   double cost = half_squared_norm(F);
   double mu = -1, nu = 2;
   Banded_cholesky chol;
@@ -401,7 +415,7 @@ inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, con
       for (std::size_t k = 0; k < N; ++k) delta[k] = -g[k];
       chol.solve(delta.data());
       stepped_state(pb, range, st, delta, 1.0, pos, trial);
-      const double fm = evaluate_range(pb, trial, range, Ftrial);
+      const double fm = residuals(trial, Ftrial);
       const double ct = half_squared_norm(Ftrial);
       double pred = 0;
       for (std::size_t k = 0; k < N; ++k) pred += delta[k] * (mu * D[k] * delta[k] - g[k]);
@@ -413,6 +427,12 @@ inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, con
         F.swap(Ftrial);
         cost = ct;
         fmax = fm;
+        // The fixing rule of newton(): a t_i that the step leaves within bound_margin of a bound
+        // goes onto its face (no linear creep into the singular face root).
+        if (snap_to_faces(pb, range, st)) {
+          fmax = residuals(st, F);
+          cost = half_squared_norm(F);
+        }
         // Nielsen's update, but faster towards Gauss-Newton on very good steps: from the
         // refined initial guess the full Newton step is almost always right.
         const double q = 2 * rho - 1;
@@ -971,17 +991,43 @@ inline bool global_warm_newton(const Problem& pb, Kappa_solver_state& st, const 
   return false;
 }
 
-/// The fallback: Levenberg-Marquardt from st; if that stalls away from a root, one restart (up
-/// to restart_pass_factor x `refinement_passes` more passes from the best state, then
-/// Levenberg-Marquardt again), keeping the better. Returns the max |r| reached.
+/// Jacobians kept back from each Levenberg-Marquardt run of the fallback for the Newton polish
+/// that follows it (newton_polish).
+constexpr std::size_t polish_reserve = 8;
+
+/// Newton's method with the active set from the state a Levenberg-Marquardt run stopped at:
+/// Levenberg-Marquardt creeps into a root (linearly, where its Jacobian is nearly singular or a
+/// t_i approaches its face) that Newton's method, from close by, reaches quadratically. At most
+/// polish_reserve Jacobians; st is kept (and fmax returned) only when the polish ends at a root
+/// or lowers max |r|.
+inline double newton_polish(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                            Kappa_solve_report& res, double fmax) {
+  if (is_root(pb, st, fmax, settings) || remaining_iterations(settings, res) == 0) return fmax;
+  Kappa_solver_state trial = st;
+  const double f = newton(pb, trial, settings, res, std::min(remaining_iterations(settings, res), polish_reserve));
+  if (is_root(pb, trial, f, settings) || f < fmax) {
+    st = std::move(trial);
+    return f;
+  }
+  return fmax;
+}
+
+/// The fallback: Levenberg-Marquardt from st, then newton_polish; if that stalls away from a
+/// root, one restart (up to restart_pass_factor x `refinement_passes` more passes from the best
+/// state, then Levenberg-Marquardt and newton_polish again), keeping the better. Returns the max
+/// |r| reached.
 inline double levenberg_marquardt_with_restart(const Problem& pb, Kappa_solver_state& st,
                                                const Solve_settings& settings, Kappa_solve_report& res) {
-  double fmax = levenberg_marquardt(pb, st, settings, res, remaining_iterations(settings, res));
-  if (!(fmax <= settings.tolerance) && remaining_iterations(settings, res) > 0 && settings.refinement_passes > 0) {
+  const auto lm_cap = [&]() {
+    const std::size_t left = remaining_iterations(settings, res);
+    return left > 2 * polish_reserve ? left - 2 * polish_reserve : left / 2;
+  };
+  double fmax = newton_polish(pb, st, settings, res, levenberg_marquardt(pb, st, settings, res, lm_cap()));
+  if (!is_root(pb, st, fmax, settings) && remaining_iterations(settings, res) > 0 && settings.refinement_passes > 0) {
     Kappa_solver_state best = st;
     refine(pb, st, restart_pass_factor * settings.refinement_passes, restart_stop, res);
-    const double f2 = levenberg_marquardt(pb, st, settings, res, remaining_iterations(settings, res));
-    if (!(f2 < fmax)) st = best; else fmax = f2;
+    const double f2 = newton_polish(pb, st, settings, res, levenberg_marquardt(pb, st, settings, res, lm_cap()));
+    if (!(f2 < fmax) && !is_root(pb, st, f2, settings)) st = best; else fmax = f2;
   }
   return fmax;
 }
