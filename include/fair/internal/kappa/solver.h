@@ -994,6 +994,8 @@ inline bool global_warm_newton(const Problem& pb, Kappa_solver_state& st, const 
 /// Jacobians kept back from each Levenberg-Marquardt run of the fallback for the Newton polish
 /// that follows it (newton_polish).
 constexpr std::size_t polish_reserve = 8;
+/// newton_polish's second try puts every t_i this close to a bound onto its face.
+constexpr double polish_face_margin = 1e-2;
 
 /// Newton's method with the active set from the state a Levenberg-Marquardt run stopped at:
 /// Levenberg-Marquardt creeps into a root (linearly, where its Jacobian is nearly singular or a
@@ -1004,8 +1006,28 @@ inline double newton_polish(const Problem& pb, Kappa_solver_state& st, const Sol
                             Kappa_solve_report& res, double fmax) {
   if (is_root(pb, st, fmax, settings) || remaining_iterations(settings, res) == 0) return fmax;
   Kappa_solver_state trial = st;
-  const double f = newton(pb, trial, settings, res, std::min(remaining_iterations(settings, res), polish_reserve));
-  if (is_root(pb, trial, f, settings) || f < fmax) {
+  const double f = newton(pb, trial, settings, res, std::min(remaining_iterations(settings, res), polish_reserve / 2));
+  if (is_root(pb, trial, f, settings)) {
+    st = std::move(trial);
+    return f;
+  }
+  // A crawl into a root on joins: every t_i within polish_face_margin of a bound onto its face
+  // (the release rule of newton() frees those whose multiplier says the interior is better).
+  Kappa_solver_state snapped = st;
+  bool any = false;
+  for (double& t : snapped.t) {
+    if (t_on_face(t)) continue;
+    if (t < polish_face_margin) { t = parameter_margin; any = true; }
+    else if (t > 1 - polish_face_margin) { t = 1 - parameter_margin; any = true; }
+  }
+  double f2 = std::numeric_limits<double>::infinity();
+  if (any && remaining_iterations(settings, res) > 0)
+    f2 = newton(pb, snapped, settings, res, std::min(remaining_iterations(settings, res), polish_reserve / 2));
+  if (is_root(pb, snapped, f2, settings)) {
+    st = std::move(snapped);
+    return f2;
+  }
+  if (f < fmax) {
     st = std::move(trial);
     return f;
   }
