@@ -28,7 +28,8 @@
 // Newton's method treats the t_i bounds as box constraints of an active-set method (a t_i on
 // its face is fixed with its eq. 7 dropped, released by the sign of its multiplier: see
 // newton() and doc/kappa_curves.md, "Points on joins"), so a root on joins (ON_JOINS) is solved
-// to the tolerance like an interior one. A singular pivot block of the block LU falls back to a
+// to the tolerance like an interior one; Levenberg-Marquardt keeps the same active set (fixing
+// only) and each of its runs is followed by a Newton polish (newton_polish). A singular pivot block of the block LU falls back to a
 // pivoted band LU of the same Jacobian (factor_pivoted).
 // The warm/cold start policy of Kappa_curve_2 is solve_with_warm_start(). Non-convergence
 // within the iteration caps is reported (Kappa_solve_report::status UNSOLVED); the caller
@@ -367,7 +368,10 @@ inline double evaluate_range(const Problem& pb, const Kappa_solver_state& s, con
 inline bool snap_to_faces(const Problem& pb, const Block_range& range, Kappa_solver_state& st);
 
 /// Levenberg-Marquardt from `st` on the blocks of `range` (all by default); returns the final
-/// max |r|. Counts iterations in res.
+/// max |r| of the equations that remain. Counts iterations in res. Keeps the active set of
+/// newton(): the eq. 7 of a t_i on its face and that t_i are dropped (assemble_normal_equations,
+/// drop_face_equations), and a t_i that an accepted step leaves within bound_margin of a bound is
+/// fixed on its face (snap_to_faces); it never releases (newton_polish does, through newton()).
 inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
                                   Kappa_solve_report& res, std::size_t max_iterations, const Block_range& range = {}) {
   const std::size_t n = pb.n;
