@@ -257,7 +257,8 @@ inline bool face_multiplier_negative(const Problem& pb, const Kappa_solver_state
 /// Assembles J^T J (into `chol`, reset to half bandwidth h) and g = J^T F, in block order
 /// `cyclic_position` for closed curves.
 inline void assemble_normal_equations(const Problem& pb, const Kappa_solver_state& st, Banded_cholesky& chol,
-                                      std::vector<double>& g, std::size_t h, const Block_range& range = {}) {
+                                      std::vector<double>& g, std::size_t h, const Block_range& range = {},
+                                      bool active_set = true) {
   const std::size_t n = pb.n;
   const std::size_t na = range.all ? n : range.count, N = 4 * na;
   const std::size_t none = static_cast<std::size_t>(-1);
@@ -279,7 +280,7 @@ inline void assemble_normal_equations(const Problem& pb, const Kappa_solver_stat
     block_residuals(pb, st, i, win, r);
     // The active set (as in newton()): a t_i on its face is fixed with its eq. 7 dropped -- the
     // row r_2 of block i and the column of t_i (slot 11: only block row i depends on it) vanish.
-    if (t_on_face(st.t[i])) {
+    if (active_set && t_on_face(st.t[i])) {
       r[2] = Dual<16>(0.0);
       for (int e = 0; e < 4; ++e) r[e].d[11] = 0.0;
     }
@@ -372,8 +373,11 @@ inline bool snap_to_faces(const Problem& pb, const Block_range& range, Kappa_sol
 /// newton(): the eq. 7 of a t_i on its face and that t_i are dropped (assemble_normal_equations,
 /// drop_face_equations), and a t_i that an accepted step leaves within bound_margin of a bound is
 /// fixed on its face (snap_to_faces); it never releases (newton_polish does, through newton()).
+/// `active_set` false: the plain method on all equations, t_i free within the projection bounds
+/// (the local warm-start stages).
 inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                                  Kappa_solve_report& res, std::size_t max_iterations, const Block_range& range = {}) {
+                                  Kappa_solve_report& res, std::size_t max_iterations, const Block_range& range = {},
+                                  bool active_set = true) {
   const std::size_t n = pb.n;
   project_bounds(st);
   const std::size_t na = range.all ? n : range.count, N = 4 * na;
@@ -384,8 +388,8 @@ inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, con
   // The residuals of the equations that remain (the active set of newton(): a t_i on its face
   // has its eq. 7 dropped, see assemble_normal_equations).
   auto residuals = [&](const Kappa_solver_state& s, std::vector<double>& R) {
-    evaluate_range(pb, s, range, R);
-    return drop_face_equations(pb, s, range, R);
+    const double mx = evaluate_range(pb, s, range, R);
+    return active_set ? drop_face_equations(pb, s, range, R) : mx;
   };
   double fmax = residuals(st, F);
   double cost = half_squared_norm(F);
@@ -404,7 +408,7 @@ inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, con
     }
     ++iterations;
     ++res.iterations;
-    assemble_normal_equations(pb, st, chol, g, h, range);
+    assemble_normal_equations(pb, st, chol, g, h, range, active_set);
     double maxdiag = 0;
     for (std::size_t k = 0; k < N; ++k) maxdiag = std::max(maxdiag, chol.diagonal(k));
     if (!(maxdiag > 0) || !std::isfinite(maxdiag)) break;
@@ -433,7 +437,7 @@ inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, con
         fmax = fm;
         // The fixing rule of newton(): a t_i that the step leaves within bound_margin of a bound
         // goes onto its face (no linear creep into the singular face root).
-        if (snap_to_faces(pb, range, st)) {
+        if (active_set && snap_to_faces(pb, range, st)) {
           fmax = residuals(st, F);
           cost = half_squared_norm(F);
         }
@@ -964,11 +968,18 @@ inline bool local_warm_start(const Problem& pb, Kappa_solver_state& st, const So
     Block_range range;
     if (!local_range(pb, settings.moved, R, range)) break;
     Kappa_solver_state trial = st;
+    // An edit can take a point off its join: a t_i of the range on its face whose multiplier is
+    // negative already at the start is released before Newton's method (whose own release acts
+    // only at a root of the reduced system, which the edited data may not have with t_i fixed).
+    std::vector<char> released(range.count, 0);
+    release_faces(pb, trial, range, released);
     const std::size_t newton_cap = std::min(remaining_iterations(settings, res), warm_newton_iterations);
     if (!(newton(pb, trial, settings, res, newton_cap, range) <= settings.tolerance)) {
       trial = st;
       const std::size_t lm_cap = std::min(remaining_iterations(settings, res), local_lm_iterations);
-      levenberg_marquardt(pb, trial, settings, res, lm_cap, range);
+      // Without the active set: after an edit that takes a point off its join the previous t_i
+      // sits on its face, and only the unconstrained run can move it off (there is no release).
+      levenberg_marquardt(pb, trial, settings, res, lm_cap, range, false);
     }
     const double fm = evaluate(pb, trial, F);
     if (is_root(pb, trial, fm, settings)) {
