@@ -104,6 +104,10 @@ BENCHMARK(BM_kappa_dense_inflected)
     ->Args({1000, 7, 30, 40, 0, 1})
     ->Args({10000, 7, 30, 40, 0, 0})
     ->Args({10000, 7, 30, 40, 0, 1})
+    ->Args({10000, 7, 30, 40, 10, 0})
+    ->Args({10000, 7, 30, 40, 10, 1})
+    ->Args({100000, 7, 30, 40, 0, 0})
+    ->Args({100000, 7, 30, 40, 0, 1})
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 

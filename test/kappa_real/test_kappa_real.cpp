@@ -6,7 +6,8 @@
 // weights, open where the data are open and closed where closed:
 //  - the independent property check of property_check.h (interpolation at the piece's
 //    curvature maximum, C0, G1, |kappa| continuity) from the returned pieces only;
-//  - the outcome INTERIOR or ON_JOINS (KappaRealOutcome.*: the target of issue 9; the cases
+//  - the outcome INTERIOR or ON_JOINS (KappaRealOutcome.*: the target of issue 9, with a floor of
+//    solved curves per data set asserted by KappaRealProperties.*; the cases
 //    that end UNSOLVED with the solver on main are listed in doc/real_data.md);
 //  - data the library must reject (all points collinear) throw Invalid_input_error.
 // Every test prints a per-data-set summary (counts per outcome, worst residual).
@@ -211,6 +212,19 @@ void expect_solved(const std::vector<Solve_record>& records) {
   }
 }
 
+/// A regression floor below the target of issue 9 (every curve solved, the DISABLED_ tests
+/// below): at least `unit` curves with w = 1 and `automatic` with automatic weights end INTERIOR
+/// or ON_JOINS. The floors are the counts measured on the branch that set them
+/// (doc/real_data.md, "Measured results"); the UNSOLVED curves are printed by solve_data_set.
+void expect_solved_at_least(const std::vector<Solve_record>& records, std::size_t unit, std::size_t automatic) {
+  std::size_t solved[2] = {0, 0};
+  for (const Solve_record& r : records)
+    if (!r.rejected && r.status != fair::Kappa_solve_status::UNSOLVED)
+      ++solved[r.weights == fair::Kappa_weights::UNIT ? 0 : 1];
+  EXPECT_GE(solved[0], unit) << "curves solved with w = 1";
+  EXPECT_GE(solved[1], automatic) << "curves solved with automatic weights";
+}
+
 // ---- the data and the check itself ---------------------------------------------------------
 
 TEST(KappaRealData, TheDataSetsAreThere) {
@@ -295,15 +309,29 @@ TEST(KappaRealData, ThePropertyCheckPassesThePublishedCurveAndCatchesBrokenOnes)
 
 // ---- kappa-curves: properties (hold on main) and outcome (the target of issue 9) ---------------
 
-TEST(KappaRealProperties, QuickDrawStrokes) { expect_properties(solve_data_set("quickdraw")); }
+// Each also asserts the regression floor of expect_solved_at_least (of 117 quickdraw strokes, 16
+// coastlines, 60 glyph contours).
+TEST(KappaRealProperties, QuickDrawStrokes) {
+  const std::vector<Solve_record> records = solve_data_set("quickdraw");
+  expect_properties(records);
+  expect_solved_at_least(records, 112, 98);
+}
 TEST(KappaRealProperties, FeatherIcons) { expect_properties(solve_data_set("feather")); }
-TEST(KappaRealProperties, NaturalEarthCoastlines) { expect_properties(solve_data_set("coastlines")); }
-TEST(KappaRealProperties, GlyphOutlines) { expect_properties(solve_data_set("glyphs")); }
+TEST(KappaRealProperties, NaturalEarthCoastlines) {
+  const std::vector<Solve_record> records = solve_data_set("coastlines");
+  expect_properties(records);
+  expect_solved_at_least(records, 15, 8);
+}
+TEST(KappaRealProperties, GlyphOutlines) {
+  const std::vector<Solve_record> records = solve_data_set("glyphs");
+  expect_properties(records);
+  expect_solved_at_least(records, 46, 22);
+}
 TEST(KappaRealProperties, GlyphOutlinesDenseStress) { expect_properties(solve_data_set("glyphs-dense")); }
 
 TEST(KappaRealOutcome, FeatherIcons) { expect_solved(solve_data_set("feather")); }
 // The target of issue 9 §5, not met yet: some curves of these sets end UNSOLVED (counts per set in
-// doc/real_data.md). Disabled so that CI passes, kept so that the gap is visible in every run
+// doc/real_data.md; the floors reached so far are asserted by KappaRealProperties.*). Disabled so that CI passes, kept so that the gap is visible in every run
 // ("YOU HAVE 4 DISABLED TESTS") and measurable: --gtest_also_run_disabled_tests.
 TEST(KappaRealOutcome, DISABLED_QuickDrawStrokes) { expect_solved(solve_data_set("quickdraw")); }
 TEST(KappaRealOutcome, DISABLED_NaturalEarthCoastlines) { expect_solved(solve_data_set("coastlines")); }

@@ -28,7 +28,8 @@
 // Newton's method treats the t_i bounds as box constraints of an active-set method (a t_i on
 // its face is fixed with its eq. 7 dropped, released by the sign of its multiplier: see
 // newton() and doc/kappa_curves.md, "Points on joins"), so a root on joins (ON_JOINS) is solved
-// to the tolerance like an interior one. A singular pivot block of the block LU falls back to a
+// to the tolerance like an interior one; Levenberg-Marquardt keeps the same active set (fixing
+// only) and each of its runs is followed by a Newton polish (newton_polish). A singular pivot block of the block LU falls back to a
 // pivoted band LU of the same Jacobian (factor_pivoted).
 // The warm/cold start policy of Kappa_curve_2 is solve_with_warm_start(). Non-convergence
 // within the iteration caps is reported (Kappa_solve_report::status UNSOLVED); the caller
@@ -256,7 +257,8 @@ inline bool face_multiplier_negative(const Problem& pb, const Kappa_solver_state
 /// Assembles J^T J (into `chol`, reset to half bandwidth h) and g = J^T F, in block order
 /// `cyclic_position` for closed curves.
 inline void assemble_normal_equations(const Problem& pb, const Kappa_solver_state& st, Banded_cholesky& chol,
-                                      std::vector<double>& g, std::size_t h, const Block_range& range = {}) {
+                                      std::vector<double>& g, std::size_t h, const Block_range& range = {},
+                                      bool active_set = true) {
   const std::size_t n = pb.n;
   const std::size_t na = range.all ? n : range.count, N = 4 * na;
   const std::size_t none = static_cast<std::size_t>(-1);
@@ -276,6 +278,12 @@ inline void assemble_normal_equations(const Problem& pb, const Kappa_solver_stat
     build_window(pb, st, i, win);
     Dual<16> r[4];
     block_residuals(pb, st, i, win, r);
+    // The active set (as in newton()): a t_i on its face is fixed with its eq. 7 dropped -- the
+    // row r_2 of block i and the column of t_i (slot 11: only block row i depends on it) vanish.
+    if (active_set && t_on_face(st.t[i])) {
+      r[2] = Dual<16>(0.0);
+      for (int e = 0; e < 4; ++e) r[e].d[11] = 0.0;
+    }
     int m = 0;
     for (int k = 0; k < 4; ++k) {
       if (!win.valid[k]) continue;
@@ -358,10 +366,18 @@ inline double evaluate_range(const Problem& pb, const Kappa_solver_state& s, con
   return mx;
 }
 
+inline bool snap_to_faces(const Problem& pb, const Block_range& range, Kappa_solver_state& st);
+
 /// Levenberg-Marquardt from `st` on the blocks of `range` (all by default); returns the final
-/// max |r|. Counts iterations in res.
+/// max |r| of the equations that remain. Counts iterations in res. Keeps the active set of
+/// newton(): the eq. 7 of a t_i on its face and that t_i are dropped (assemble_normal_equations,
+/// drop_face_equations), and a t_i that an accepted step leaves within bound_margin of a bound is
+/// fixed on its face (snap_to_faces); it never releases (newton_polish does, through newton()).
+/// `active_set` false: the plain method on all equations, t_i free within the projection bounds
+/// (the local warm-start stages).
 inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                                  Kappa_solve_report& res, std::size_t max_iterations, const Block_range& range = {}) {
+                                  Kappa_solve_report& res, std::size_t max_iterations, const Block_range& range = {},
+                                  bool active_set = true) {
   const std::size_t n = pb.n;
   project_bounds(st);
   const std::size_t na = range.all ? n : range.count, N = 4 * na;
@@ -369,7 +385,13 @@ inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, con
   auto pos = [&](std::size_t ii) { return range.all ? (pb.closed ? cyclic_position(ii, n) : ii) : ii; };
   const std::size_t h = range.all ? normal_bandwidth(pb) : std::min<std::size_t>(range_bandwidth, N - 1);
   std::vector<double> F, Ftrial, g(N), D(N), delta(N), Abase;
-  double fmax = evaluate_range(pb, st, range, F);
+  // The residuals of the equations that remain (the active set of newton(): a t_i on its face
+  // has its eq. 7 dropped, see assemble_normal_equations).
+  auto residuals = [&](const Kappa_solver_state& s, std::vector<double>& R) {
+    const double mx = evaluate_range(pb, s, range, R);
+    return active_set ? drop_face_equations(pb, s, range, R) : mx;
+  };
+  double fmax = residuals(st, F);
   double cost = half_squared_norm(F);
   double mu = -1, nu = 2;
   Banded_cholesky chol;
@@ -386,7 +408,7 @@ inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, con
     }
     ++iterations;
     ++res.iterations;
-    assemble_normal_equations(pb, st, chol, g, h, range);
+    assemble_normal_equations(pb, st, chol, g, h, range, active_set);
     double maxdiag = 0;
     for (std::size_t k = 0; k < N; ++k) maxdiag = std::max(maxdiag, chol.diagonal(k));
     if (!(maxdiag > 0) || !std::isfinite(maxdiag)) break;
@@ -401,7 +423,7 @@ inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, con
       for (std::size_t k = 0; k < N; ++k) delta[k] = -g[k];
       chol.solve(delta.data());
       stepped_state(pb, range, st, delta, 1.0, pos, trial);
-      const double fm = evaluate_range(pb, trial, range, Ftrial);
+      const double fm = residuals(trial, Ftrial);
       const double ct = half_squared_norm(Ftrial);
       double pred = 0;
       for (std::size_t k = 0; k < N; ++k) pred += delta[k] * (mu * D[k] * delta[k] - g[k]);
@@ -413,6 +435,12 @@ inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, con
         F.swap(Ftrial);
         cost = ct;
         fmax = fm;
+        // The fixing rule of newton(): a t_i that the step leaves within bound_margin of a bound
+        // goes onto its face (no linear creep into the singular face root).
+        if (active_set && snap_to_faces(pb, range, st)) {
+          fmax = residuals(st, F);
+          cost = half_squared_norm(F);
+        }
         // Nielsen's update, but faster towards Gauss-Newton on very good steps: from the
         // refined initial guess the full Newton step is almost always right.
         const double q = 2 * rho - 1;
@@ -940,11 +968,18 @@ inline bool local_warm_start(const Problem& pb, Kappa_solver_state& st, const So
     Block_range range;
     if (!local_range(pb, settings.moved, R, range)) break;
     Kappa_solver_state trial = st;
+    // An edit can take a point off its join: a t_i of the range on its face whose multiplier is
+    // negative already at the start is released before Newton's method (whose own release acts
+    // only at a root of the reduced system, which the edited data may not have with t_i fixed).
+    std::vector<char> released(range.count, 0);
+    release_faces(pb, trial, range, released);
     const std::size_t newton_cap = std::min(remaining_iterations(settings, res), warm_newton_iterations);
     if (!(newton(pb, trial, settings, res, newton_cap, range) <= settings.tolerance)) {
       trial = st;
       const std::size_t lm_cap = std::min(remaining_iterations(settings, res), local_lm_iterations);
-      levenberg_marquardt(pb, trial, settings, res, lm_cap, range);
+      // Without the active set: after an edit that takes a point off its join the previous t_i
+      // sits on its face, and only the unconstrained run can move it off (there is no release).
+      levenberg_marquardt(pb, trial, settings, res, lm_cap, range, false);
     }
     const double fm = evaluate(pb, trial, F);
     if (is_root(pb, trial, fm, settings)) {
@@ -971,17 +1006,65 @@ inline bool global_warm_newton(const Problem& pb, Kappa_solver_state& st, const 
   return false;
 }
 
-/// The fallback: Levenberg-Marquardt from st; if that stalls away from a root, one restart (up
-/// to restart_pass_factor x `refinement_passes` more passes from the best state, then
-/// Levenberg-Marquardt again), keeping the better. Returns the max |r| reached.
+/// Jacobians kept back from each Levenberg-Marquardt run of the fallback for the Newton polish
+/// that follows it (newton_polish).
+constexpr std::size_t polish_reserve = 8;
+/// newton_polish's second try puts every t_i this close to a bound onto its face.
+constexpr double polish_face_margin = 1e-2;
+
+/// Newton's method with the active set from the state a Levenberg-Marquardt run stopped at:
+/// Levenberg-Marquardt creeps into a root (linearly, where its Jacobian is nearly singular or a
+/// t_i approaches its face) that Newton's method, from close by, reaches quadratically. At most
+/// polish_reserve Jacobians; st is kept (and fmax returned) only when the polish ends at a root
+/// or lowers max |r|.
+inline double newton_polish(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                            Kappa_solve_report& res, double fmax) {
+  if (is_root(pb, st, fmax, settings) || remaining_iterations(settings, res) == 0) return fmax;
+  Kappa_solver_state trial = st;
+  const double f = newton(pb, trial, settings, res, std::min(remaining_iterations(settings, res), polish_reserve / 2));
+  if (is_root(pb, trial, f, settings)) {
+    st = std::move(trial);
+    return f;
+  }
+  // A crawl into a root on joins: every t_i within polish_face_margin of a bound onto its face
+  // (the release rule of newton() frees those whose multiplier says the interior is better).
+  Kappa_solver_state snapped = st;
+  bool any = false;
+  for (double& t : snapped.t) {
+    if (t_on_face(t)) continue;
+    if (t < polish_face_margin) { t = parameter_margin; any = true; }
+    else if (t > 1 - polish_face_margin) { t = 1 - parameter_margin; any = true; }
+  }
+  double f2 = std::numeric_limits<double>::infinity();
+  if (any && remaining_iterations(settings, res) > 0)
+    f2 = newton(pb, snapped, settings, res, std::min(remaining_iterations(settings, res), polish_reserve / 2));
+  if (is_root(pb, snapped, f2, settings)) {
+    st = std::move(snapped);
+    return f2;
+  }
+  if (f < fmax) {
+    st = std::move(trial);
+    return f;
+  }
+  return fmax;
+}
+
+/// The fallback: Levenberg-Marquardt from st, then newton_polish; if that stalls away from a
+/// root, one restart (up to restart_pass_factor x `refinement_passes` more passes from the best
+/// state, then Levenberg-Marquardt and newton_polish again), keeping the better. Returns the max
+/// |r| reached.
 inline double levenberg_marquardt_with_restart(const Problem& pb, Kappa_solver_state& st,
                                                const Solve_settings& settings, Kappa_solve_report& res) {
-  double fmax = levenberg_marquardt(pb, st, settings, res, remaining_iterations(settings, res));
-  if (!(fmax <= settings.tolerance) && remaining_iterations(settings, res) > 0 && settings.refinement_passes > 0) {
+  const auto lm_cap = [&]() {
+    const std::size_t left = remaining_iterations(settings, res);
+    return left > 2 * polish_reserve ? left - 2 * polish_reserve : left / 2;
+  };
+  double fmax = newton_polish(pb, st, settings, res, levenberg_marquardt(pb, st, settings, res, lm_cap()));
+  if (!is_root(pb, st, fmax, settings) && remaining_iterations(settings, res) > 0 && settings.refinement_passes > 0) {
     Kappa_solver_state best = st;
     refine(pb, st, restart_pass_factor * settings.refinement_passes, restart_stop, res);
-    const double f2 = levenberg_marquardt(pb, st, settings, res, remaining_iterations(settings, res));
-    if (!(f2 < fmax)) st = best; else fmax = f2;
+    const double f2 = newton_polish(pb, st, settings, res, levenberg_marquardt(pb, st, settings, res, lm_cap()));
+    if (!(f2 < fmax) && !is_root(pb, st, f2, settings)) st = best; else fmax = f2;
   }
   return fmax;
 }
