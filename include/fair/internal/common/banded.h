@@ -113,6 +113,8 @@ public:
 
   /// Adds v to entry (i,j) with j <= i <= j + h.
   void add_lower(std::size_t i, std::size_t j, double v) { a_[i * w_ + (j + h_ - i)] += v; }
+  /// Sets entry (i,j) with j <= i <= j + h.
+  void set_lower(std::size_t i, std::size_t j, double v) { a_[i * w_ + (j + h_ - i)] = v; }
   double diagonal(std::size_t i) const { return a_[i * w_ + h_]; }
   void add_diagonal(std::size_t i, double v) { a_[i * w_ + h_] += v; }
   std::vector<double>& storage() { return a_; }

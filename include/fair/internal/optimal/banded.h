@@ -14,6 +14,7 @@
 #define FAIR_INTERNAL_OPTIMAL_BANDED_H
 
 #include <fair/Errors.h>
+#include <fair/internal/common/banded.h>
 
 #include <algorithm>
 #include <cmath>
@@ -148,13 +149,8 @@ namespace banded_detail {
 /// half-bandwidth w into a plain band of half-bandwidth <= 2w (doc/optimal_curves.md, "Banded solve":
 /// neighbours i, i+d at positions 2i, 2i+2d; across the wrap and across the fold |4m + 3 - 2d| <= 2d - 1).
 inline void folding_order(std::size_t n, std::vector<std::size_t>& order) {
-  order.clear();
-  order.reserve(n);
-  std::size_t lo = 0, hi = n;
-  while (lo < hi) {
-    order.push_back(lo++);
-    if (lo < hi) order.push_back(--hi);
-  }
+  order.resize(n);  // the zig-zag order 0, n-1, 1, n-2, ... of common::cyclic_position
+  for (std::size_t j = 0; j < n; ++j) order[common::cyclic_position(j, n)] = j;
 }
 
 }  // namespace banded_detail
@@ -173,7 +169,7 @@ inline bool solve_banded_positive_definite(const Banded_symmetric& a, std::vecto
   // repeatedly, and fresh multi-megabyte buffers cost a page fault per 4 KiB each time (more than the
   // factorisation itself at n = 1e5). It holds O(n w) doubles of the largest system solved so far.
   thread_local std::vector<std::size_t> order, position;  // position -> original index, and back
-  thread_local std::vector<double> l, x;
+  thread_local std::vector<double> x;
   std::size_t wb;  // half-bandwidth of the reordered plain band
   const std::size_t w = a.half_bandwidth();
   if (!a.cyclic()) {
@@ -190,8 +186,10 @@ inline bool solve_banded_positive_definite(const Banded_symmetric& a, std::vecto
   }
   position.resize(n);
   for (std::size_t p = 0; p < n; ++p) position[order[p]] = p;
-  // Lower band of the reordered matrix: L[p * (wb + 1) + (p - q)] = entry (p, q), q in [p - wb, p].
-  l.assign(n * (wb + 1), 0.0);
+  // The reordered matrix, entry (p, q) with q in [p - wb, p], factored by the library's one banded
+  // Cholesky (internal/common/banded.h).
+  thread_local common::Banded_cholesky chol;
+  chol.reset(n, wb);
   const std::size_t reach = a.cyclic() ? std::min(w, n - 1) : w;
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t d = 0; d <= reach; ++d) {
@@ -201,36 +199,12 @@ inline bool solve_banded_positive_definite(const Banded_symmetric& a, std::vecto
       std::size_t p = position[i], q = position[j];
       if (p < q) std::swap(p, q);
       FAIR_ASSERT_MSG(p - q <= wb, "reordered entry (", p, ", ", q, ") outside the band ", wb);
-      l[p * (wb + 1) + (p - q)] = a.at(i, j);
+      chol.set_lower(p, q, a.at(i, j));  // set, not add: a small cyclic matrix meets a pair twice
     }
-  for (std::size_t p = 0; p < n; ++p) {
-    const std::size_t first = p >= wb ? p - wb : 0;
-    for (std::size_t q = first; q <= p; ++q) {
-      double sum = l[p * (wb + 1) + (p - q)];
-      const std::size_t k0 = std::max(first, q >= wb ? q - wb : 0);
-      for (std::size_t k = k0; k < q; ++k) sum -= l[p * (wb + 1) + (p - k)] * l[q * (wb + 1) + (q - k)];
-      if (q == p) {
-        if (!(sum > 0) || !std::isfinite(sum)) return false;
-        l[p * (wb + 1)] = std::sqrt(sum);
-      } else {
-        l[p * (wb + 1) + (p - q)] = sum / l[q * (wb + 1)];
-      }
-    }
-  }
+  if (!chol.factor()) return false;
   x.resize(n);
   for (std::size_t p = 0; p < n; ++p) x[p] = rhs_in_solution_out[order[p]];
-  for (std::size_t p = 0; p < n; ++p) {  // L y = b
-    const std::size_t first = p >= wb ? p - wb : 0;
-    double sum = x[p];
-    for (std::size_t k = first; k < p; ++k) sum -= l[p * (wb + 1) + (p - k)] * x[k];
-    x[p] = sum / l[p * (wb + 1)];
-  }
-  for (std::size_t p = n; p-- > 0;) {  // L^T x = y
-    double sum = x[p];
-    const std::size_t last = std::min(n - 1, p + wb);
-    for (std::size_t k = p + 1; k <= last; ++k) sum -= l[k * (wb + 1) + (k - p)] * x[k];
-    x[p] = sum / l[p * (wb + 1)];
-  }
+  chol.solve(x.data());
   for (std::size_t p = 0; p < n; ++p)
     if (!std::isfinite(x[p])) return false;
   for (std::size_t p = 0; p < n; ++p) rhs_in_solution_out[order[p]] = x[p];
