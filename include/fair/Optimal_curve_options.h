@@ -76,11 +76,13 @@ struct Optimal_curve_level {
   Optimal_curve_status status;
 };
 /// The whole solve: outcome (the worst of the levels, or CAPPED if a level/vertex cap stopped the
-/// hierarchy before the target resolution), final energy, total iterations, per-level records.
+/// hierarchy before the target resolution), final energy, total iterations, the reduced gradient
+/// norm of the final polygon (that of the last level), per-level records.
 struct Optimal_curve_report {
   Optimal_curve_status status;
   double energy;
   std::size_t iterations;
+  double gradient_norm = 0;
   std::vector<Optimal_curve_level> levels;
 };
 

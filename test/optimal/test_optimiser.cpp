@@ -603,6 +603,11 @@ TEST(OptimiserSolver, ConjugateGradientReachesNoLowerEnergyAndNeedsMoreSteps) {
   EXPECT_GE(cg.energy(), newton.energy() * (1 - 1e-9));
   EXPECT_GT(cg.report().iterations, newton.report().iterations);
   for (const auto& level : newton.report().levels) EXPECT_LE(level.iterations, 12u);
+  // The whole solve's gradient norm is that of the final polygon (the last level), and Newton's
+  // is far below CG's after 20 steps per level.
+  EXPECT_EQ(newton.report().gradient_norm, newton.report().levels.back().gradient_norm);
+  EXPECT_EQ(cg.report().gradient_norm, cg.report().levels.back().gradient_norm);
+  EXPECT_LT(newton.report().gradient_norm, cg.report().gradient_norm);
 }
 
 // ---------------------------------------------------------------------------------------------

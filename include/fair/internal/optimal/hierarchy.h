@@ -236,6 +236,7 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
     r.report.levels.push_back({c.size(), out.iterations, out.energy, out.gradient_norm, out.status});
     r.report.iterations += out.iterations;
     r.report.energy = out.energy;
+    r.report.gradient_norm = out.gradient_norm;
     overall = worse(overall, out.status);
     if (out.status == Status::DIVERGING) break;
     std::vector<Vec2> d = c;
