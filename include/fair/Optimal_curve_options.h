@@ -69,7 +69,8 @@ struct Optimal_curve_options {
 };
 
 /// One level of the hierarchy: its vertices, solver iterations, final energy, the Euclidean
-/// norm of the reduced gradient (dF/d offsets) and its outcome.
+/// norm of the reduced gradient (dF/d offsets; on a CONVERGED level: at the start of the final
+/// Newton step, which is then still taken and squares it) and its outcome.
 struct Optimal_curve_level {
   std::size_t vertices, iterations;
   double energy, gradient_norm;
@@ -77,7 +78,7 @@ struct Optimal_curve_level {
 };
 /// The whole solve: outcome (the worst of the levels, or CAPPED if a level/vertex cap stopped the
 /// hierarchy before the target resolution), final energy, total iterations, the reduced gradient
-/// norm of the final polygon (that of the last level), per-level records.
+/// norm of the last level (as in Optimal_curve_level), per-level records.
 struct Optimal_curve_report {
   Optimal_curve_status status;
   double energy;

@@ -668,7 +668,7 @@ TEST(OptimiserErrors, BadConstraints) {
   expect_error<fair::Invalid_input_error>({P(0, 0), P(1, 0), P(2, 0)}, o, "cannot be met");
   // A tangent back along a chord (reviewer finding 3: was an Internal_error from the tie setup).
   o.constraints = {tangent(1, -1, 0)};
-  expect_error<fair::Invalid_input_error>({P(0, 0), P(1, 0), P(2, 0)}, o, "fold back");
+  expect_error<fair::Invalid_input_error>({P(0, 0), P(1, 0), P(2, 0)}, o, "folds back");
 }
 
 // ---- Real data (issue 11, "converge on data nobody here wrote") ----
@@ -771,6 +771,49 @@ TEST(OptimiserRealData, StressEveryFeatherAndQuickDrawSetConverges) {
       EXPECT_EQ(status, known_capped(s, lambda) ? Optimal_curve_status::CAPPED : Optimal_curve_status::CONVERGED)
           << s.data_set << " " << s.name << " lambda " << lambda;
     }
+}
+
+} // namespace
+
+namespace {
+
+// The lambda design's pieces (Sec. 3.2, eq. 12 times 4): phi_4 is the C4 smoothstep, i.e. its
+// derivative is 630 x^4 (1 - x)^4 (checked by central differences against that closed form, an
+// independent construction), so the blended lambda(s) and eta(s) are C4 across the segment middles
+// and the points; q(eta) = 4 * 10^(3.5 eta + 0.08).
+TEST(OptimiserLambdaDesign, Phi4BlendAndScale) {
+  using fair::internal::optimal::blended;
+  using fair::internal::optimal::lambda_scale;
+  using fair::internal::optimal::phi4;
+  EXPECT_EQ(phi4(0), 0);
+  EXPECT_EQ(phi4(1), 1);
+  EXPECT_NEAR(phi4(0.5), 0.5, 1e-15);
+  const double h = 1e-5;
+  for (int k = 1; k < 20; ++k) {
+    const double x = k / 20.0;
+    const double slope = (phi4(x + h) - phi4(x - h)) / (2 * h);
+    EXPECT_NEAR(slope, 630 * std::pow(x * (1 - x), 4), 1e-7) << "x = " << x;
+    // Horner with coefficients up to 540 in double: rounding up to ~9 * 540 eps ~ 1e-12
+    EXPECT_NEAR(phi4(x) + phi4(1 - x), 1, 1e-12) << "symmetry, x = " << x;
+  }
+  const std::vector<double> v{0.2, 0.9, 0.5, 0.0};
+  for (bool closed : {false, true}) {
+    const std::size_t segments = v.size();
+    for (std::size_t i = 0; i < segments; ++i) {
+      EXPECT_NEAR(blended(v, closed, i, 0.5), v[i], 1e-15) << "the segment's own value at its middle";
+      if (i + 1 < segments || closed) {
+        const std::size_t j = (i + 1) % segments;
+        EXPECT_NEAR(blended(v, closed, i, 1), blended(v, closed, j, 0), 1e-15) << "continuous at point " << j;
+        EXPECT_NEAR(blended(v, closed, i, 1), 0.5 * (v[i] + v[j]), 1e-15) << "the averaged value at the point";
+      }
+    }
+    if (!closed) {
+      EXPECT_NEAR(blended(v, false, 0, 0), v[0], 1e-15) << "an open end keeps its segment's value";
+      EXPECT_NEAR(blended(v, false, 3, 1), v[3], 1e-15);
+    }
+  }
+  EXPECT_NEAR(lambda_scale(0), 4 * std::pow(10.0, 0.08), 1e-12);
+  EXPECT_NEAR(lambda_scale(1) / lambda_scale(0), std::pow(10.0, 3.5), 1e-9);
 }
 
 } // namespace

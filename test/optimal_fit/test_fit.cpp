@@ -450,6 +450,17 @@ TEST(Optimal_fit_runs, StitchedNurbsReproducesThePieces) {
     EXPECT_NEAR(got[0], expected[0], 1e-12) << "piece " << i;
     EXPECT_NEAR(got[1], expected[1], 1e-12) << "piece " << i;
   }
+  // A closed polygon with one corner: one open run from the corner round to itself, still written
+  // as a closed curve whose corner is its start.
+  const auto one = fair::fit_cubic_spline_runs<Kd>(p, true, {3});
+  ASSERT_EQ(one.splines.size(), 1u);
+  EXPECT_EQ(one.first_vertex.front(), 3u);
+  const nlohmann::json j1 = fair::io::spline_runs_to_json(one.splines, true);
+  EXPECT_TRUE(j1["closed"].get<bool>());
+  EXPECT_TRUE(j1["clamped"].get<bool>());
+  ASSERT_EQ(j1["corners"].size(), 1u);
+  EXPECT_EQ(j1["corners"][0].get<std::size_t>(), 0u);
+  EXPECT_EQ(j1["knots"].size(), j1["control_points"].size() + 4);
   // One run (no corners): the plain spline_to_json.
   const auto whole = fair::fit_cubic_spline_runs<Kd>(p, true, {});
   ASSERT_EQ(whole.splines.size(), 1u);

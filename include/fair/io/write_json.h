@@ -199,11 +199,13 @@ nlohmann::json spline_to_json(const Cubic_spline_2<K>& spline) {
 /// parameter is shifted to start where run r ends. "closed" says whether the last run ends where
 /// the first starts (a closed polygon); the form is always clamped ("clamped": true), so
 /// #knots = #control points + 4 still holds. "breakpoints" lists every distinct breakpoint and
-/// "corners" the indices into "breakpoints" of the joins. One run: spline_to_json of it.
+/// "corners" the indices into "breakpoints" of the joins (a closed curve's start, 0, included).
+/// One run of an open curve, or one periodic run: spline_to_json of it.
 template <class K>
 nlohmann::json spline_runs_to_json(const std::vector<Cubic_spline_2<K>>& runs, bool closed) {
   fair::internal::require(!runs.empty(), "fair::io::spline_runs_to_json: no runs");
-  if (runs.size() == 1) return spline_to_json(runs.front());
+  // One run is the spline itself, unless it is the open run of a closed polygon with one corner.
+  if (runs.size() == 1 && (runs.front().is_closed() || !closed)) return spline_to_json(runs.front());
   nlohmann::json knots = nlohmann::json::array(), breakpoints = nlohmann::json::array(),
                  control = nlohmann::json::array(), weights = nlohmann::json::array(),
                  corners = nlohmann::json::array();

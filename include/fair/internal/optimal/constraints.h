@@ -105,7 +105,8 @@ inline std::vector<Placed_constraint> check_constraints(const std::vector<Point_
       if (back_a || back_b)
         throw Invalid_input_error(message(fn, ": the tangent constraint (", d[0], ", ", d[1], ") at point ", c.index,
                                           " points back along the chord (", back_a ? a[0] : b[0], ", ", back_a ? a[1] : b[1],
-                                          ") ", back_a ? "from the previous" : "to the next", " point: the curve would fold back onto it"));
+                                          ") ", back_a ? "from the previous" : "to the next", " point: the solver's start polygon folds back there (a limitation of the start, not of the design; "
+                                          "tilting the tangent by 1e-11 is enough)"));
     }
     out.push_back({c.index, corner, d, o});
   }

@@ -35,7 +35,7 @@ struct Solve_result {
   std::vector<Vec2> polygon;
   std::vector<std::size_t> interpolation_indices;
   std::vector<double> curvatures;
-  Optimal_curve_report report{Status::CAPPED, 0, 0, {}};
+  Optimal_curve_report report{Status::CAPPED, 0, 0, 0, {}};
   std::vector<double> eta;  // per segment, when the lambda design ran (eq. 11)
   bool eta_reference_guarded = false;  // lambda = 1 diverged: eta from the lambda = 0.99 curve
 };

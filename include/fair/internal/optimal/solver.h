@@ -55,8 +55,10 @@ constexpr double degenerate_edge_fraction = 1e-12;
 constexpr double rounding_floor = 1e-8;
 /// Largest move of a vertex in one step, as a fraction of its shorter incident edge.
 constexpr double max_step_fraction = 0.5;
-/// A level ending on its iteration cap with its extent grown by this factor is DIVERGING.
+/// A level ending on its iteration cap with its extent grown by this factor since its start, and
+/// by still_growing since half its iterations, is DIVERGING (else CAPPED).
 constexpr double runaway_growth = 4;
+constexpr double still_growing = 1.5;
 /// Re-anchoring (see solve_level): an edge shorter than this fraction of its length at the last
 /// anchor means the fixed lines of motion have crowded its vertices together.
 constexpr double anchor_shrink = 0.5;
@@ -251,7 +253,11 @@ inline void add_tie_curvature(const std::vector<Vec2>& c, const std::vector<Vec2
     const double move = std::max(vec::norm(u.dir[a]), vec::norm(u.dir[b]));
     if (!(l > 0 && move > 0)) continue;
     const double step = 1e-4 * l / move;
-    std::vector<Vec2> plus = c, minus = c;
+    // Differenced in a frame centred on the tie: in absolute coordinates the rounding of
+    // plus + minus - 2c grows like eps |c| / l (wrong signs for short edges far from the origin).
+    std::vector<Vec2> local = c;
+    for (Vec2& q : local) q = vec::sub(q, c[j]);
+    std::vector<Vec2> plus = local, minus = local;
     for (std::size_t v : {a, b})
       for (int r = 0; r < 2; ++r) {
         plus[v][r] += step * u.dir[v][r];
@@ -263,7 +269,7 @@ inline void add_tie_curvature(const std::vector<Vec2>& c, const std::vector<Vec2
     restore_ties(one, minus);
     double term = 0;
     for (std::size_t v : {a, b})
-      for (int r = 0; r < 2; ++r) term += g[v][r] * (plus[v][r] + minus[v][r] - 2 * c[v][r]) / (step * step);
+      for (int r = 0; r < 2; ++r) term += g[v][r] * (plus[v][r] + minus[v][r] - 2 * local[v][r]) / (step * step);
     rh.at(static_cast<std::size_t>(k), static_cast<std::size_t>(k)) += term;
   }
 }
@@ -498,6 +504,7 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
   const double start_extent = polygon_extent(c);
   const std::vector<double> fractions = edge_lengths(c, f.closed);
   std::vector<double> anchor = fractions;
+  double half_way_extent = 0;  // the extent after half the iteration cap (runaway test)
   int reanchors = 0;
   bool reanchored = false;
   for (std::size_t it = 0;; ++it) {
@@ -514,9 +521,14 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
     out.iterations = it;
     const double scale = std::max(std::abs(e), std::numeric_limits<double>::min());
     if (u.count == 0 || out.gradient_norm == 0) { out.status = Status::CONVERGED; return out; }
+    if (it == s.max_iterations / 2) half_way_extent = polygon_extent(c);
     if (it >= s.max_iterations) {
-      // A level that ends on the cap with its extent grown many times is running away.
-      out.status = polygon_extent(c) > runaway_growth * start_extent ? Status::DIVERGING : Status::CAPPED;
+      // A level that ends on the cap with its extent grown many times, and still growing over
+      // the second half of its iterations, is running away; one that grew and then settled
+      // (a nearly collinear start bulging out to its minimiser) is only CAPPED.
+      const double extent = polygon_extent(c);
+      const bool runaway = extent > runaway_growth * start_extent && extent > still_growing * half_way_extent;
+      out.status = runaway ? Status::DIVERGING : Status::CAPPED;
       return out;
     }
     double decrement;  // predicted decrease of a full step
