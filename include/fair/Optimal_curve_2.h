@@ -15,8 +15,8 @@
 
 #include <CGAL/number_utils.h>
 
-#include <cstddef>
 #include <algorithm>
+#include <cstddef>
 #include <vector>
 
 namespace fair {

@@ -95,8 +95,7 @@ Polygon_spline_fit<K> fit_cubic_spline(const std::vector<typename K::Point_2>& p
   typedef CGAL::Simple_cartesian<double> Kd;
   const char* fn = "fair::fit_cubic_spline";
   const std::vector<Vec2> p = polygon_to_double<K>(polygon, closed, fn);
-  chord_breakpoints(p, closed, fn);  // the typed error for a chord that vanishes in double
-  std::vector<Kd::Point_2> q;
+  std::vector<Kd::Point_2> q;  // a chord that vanishes in double: the spline's Invalid_input_error
   q.reserve(p.size());
   for (const Vec2& v : p) q.emplace_back(v[0], v[1]);
   const Cubic_interpolating_spline_2<Kd> c(

@@ -258,7 +258,7 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
   return r;
 }
 
-/// The whole solve of Optimal_curve_2 (checks, the lambda design, the hierarchy).
+/// The lambda design and the hierarchy on points already normalised (defined below).
 inline Solve_result solve_normalised(const std::vector<Vec2>& points, const Optimal_curve_options& o);
 
 /// The whole solve of Optimal_curve_2 (checks, the lambda design, the hierarchy), on the points
@@ -291,7 +291,8 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
   return res;
 }
 
-/// solve_optimal_curve on the (normalised) points.
+/// solve_optimal_curve after its checks and normalisation: the lambda design (eqs. 10-12) and the
+/// hierarchy.
 inline Solve_result solve_normalised(const std::vector<Vec2>& points, const Optimal_curve_options& o) {
   const bool lambda_design = o.lambda != -1 || !o.segment_lambda.empty();
   if (!lambda_design) {

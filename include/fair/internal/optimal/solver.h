@@ -173,13 +173,6 @@ inline double polygon_extent(const std::vector<Vec2>& c) {
   return std::max(x1 - x0, y1 - y0);
 }
 
-inline double min_edge(const std::vector<Vec2>& c, bool closed) {
-  const std::size_t n = c.size(), e = closed ? n : n - 1;
-  double m = std::numeric_limits<double>::infinity();
-  for (std::size_t j = 0; j < e; ++j) m = std::min(m, vec::norm(vec::sub(c[(j + 1) % n], c[j])));
-  return m;
-}
-
 /// The shortest edge with at least one free end (edges between two fixed vertices do not move).
 inline double free_min_edge(const std::vector<Vec2>& c, bool closed, const Vertex_roles& roles) {
   const std::size_t n = c.size(), e = closed ? n : n - 1;
