@@ -1116,7 +1116,20 @@ inline Kappa_solve_report solve_with_warm_start(const Problem& pb, const Kappa_s
   // costs more than the whole warm one and would jump to another root far from the edit).
   if (warm_report.status != Kappa_solve_status::UNSOLVED) return warm_report;
   Kappa_solver_state cold;
-  Kappa_solve_report cold_report = solve(pb, cold, settings);
+  Kappa_solve_report cold_report;
+  if (warm_report.residual <= settings.tolerance) {
+    cold_report = solve(pb, cold, settings);  // a warm root with a point at a minimum: all paths
+  } else {
+    // The warm solve ended away from a root, so its fallback already ran cold_start_newton on
+    // these data (deterministic: the same start, passes and Newton caps) and it failed; what
+    // the cold solve adds is Levenberg-Marquardt from the passes. Repeating the Newton paths
+    // cost up to 2 x newton_iterations Jacobians for nothing (fuzz finding
+    // slow-fixed-weights-25-points).
+    initial_guess(pb, cold);
+    refine(pb, cold, settings.refinement_passes, refinement_stop, cold_report);
+    const double fmax = levenberg_marquardt_with_restart(pb, cold, settings, cold_report);
+    cold_report = finish(pb, cold, settings, cold_report, fmax);
+  }
   // Ranked by outcome (INTERIOR, ON_JOINS, UNSOLVED: the enum's order), then by residual (NaN last).
   const auto rank = [](const Kappa_solve_report& r) { return static_cast<int>(r.status); };
   const bool cold_better = rank(cold_report) < rank(warm_report) ||
