@@ -598,4 +598,76 @@ TEST(KappaSolver, WarmStartPolicy) {
   EXPECT_FALSE(solve_with_warm_start(pb, &other_size, 30, Solve_settings{}, moved).warm_started);
 }
 
+// cold_solve with newton_paths_failed (what solve_with_warm_start runs after a warm solve whose
+// fallback ran the cold Newton paths and failed) loses nothing: on random sets where
+// cold_start_newton fails, it reaches exactly the state of the full cold solve, with the
+// Newton paths' Jacobians fewer -- unless the full solve's Levenberg-Marquardt ran into the
+// iteration cap, which the skip leaves further away.
+TEST(KappaSolver, SkippingFailedColdNewtonPathsLosesNothing) {
+  std::mt19937 g(20261202);
+  std::size_t compared = 0, failed_paths = 0;
+  for (int trial = 0; trial < 3000 && compared < 6; ++trial) {
+    const std::size_t n = 5 + static_cast<std::size_t>(trial % 26);
+    const Kappa_weights mode = trial % 2 == 0 ? Kappa_weights::FIXED : Kappa_weights::AUTOMATIC;
+    const Problem pb = random_problem(g, n, trial % 3 != 0, mode, trial % 4 < 2 ? 0.9 : 0.05);
+    const Solve_settings s;
+    Kappa_solver_state probe;
+    Kappa_solve_report newton_paths;
+    double fmax = 0;
+    if (cold_start_newton(pb, probe, s, newton_paths, fmax)) continue;
+    ++failed_paths;
+    Kappa_solver_state full, skipped;
+    Kappa_solve_report rf, rs;
+    const double ff = cold_solve(pb, full, s, rf, false);
+    const double fs = cold_solve(pb, skipped, s, rs, true);
+    if (rf.iterations + 2 * polish_reserve >= s.max_iterations) continue;  // the full one was capped
+    ++compared;
+    EXPECT_EQ(rs.iterations + newton_paths.iterations, rf.iterations) << "trial " << trial;
+    EXPECT_EQ(fs, ff) << "trial " << trial;
+    EXPECT_EQ(skipped.t, full.t) << "trial " << trial;
+    EXPECT_EQ(skipped.lambda, full.lambda) << "trial " << trial;
+    EXPECT_EQ(skipped.dx, full.dx) << "trial " << trial;
+  }
+  EXPECT_GE(compared, 3u) << failed_paths << " sets with failed Newton paths";
+}
+
+// A warm solve whose edit (automatic weights, small clamp: hard sets) leaves the previous
+// solution and the cold Newton paths without a root reports it in its trace, and
+// solve_with_warm_start, which then skips the repeated Newton paths, still returns the better of
+// the warm solve and the full cold solve (when the latter was not capped).
+TEST(KappaSolver, WarmFallbackTraceSkipsTheRepeatedNewtonPaths) {
+  std::mt19937 g(7);
+  std::size_t traced = 0;
+  std::size_t unsolved = 0;
+  for (int trial = 0; trial < 300 && traced < 3; ++trial) {
+    const std::size_t n = 6 + static_cast<std::size_t>(trial % 20);
+    Problem pb = random_problem(g, n, trial % 2 == 0, Kappa_weights::AUTOMATIC, 0.05);
+    Kappa_solver_state previous;
+    solve(pb, previous, Solve_settings{});
+    const std::size_t moved = static_cast<std::size_t>(trial) % n;
+    pb.qx[moved] += 0.5;
+    Solve_settings warm;
+    warm.warm = true;
+    warm.moved = moved;
+    Kappa_solver_state st = previous;
+    Solve_trace trace;
+    const Kappa_solve_report wr = solve(pb, st, warm, &trace);
+    unsolved += wr.status == fair::Kappa_solve_status::UNSOLVED;
+    if (!trace.cold_newton_paths_failed) continue;
+    ++traced;
+    EXPECT_EQ(wr.status, fair::Kappa_solve_status::UNSOLVED) << "trial " << trial;
+    Kappa_solver_state cold;
+    const Kappa_solve_report cr = solve(pb, cold, Solve_settings{});
+    Kappa_solver_state policy;
+    const Kappa_solve_report pr = solve_with_warm_start(pb, &previous, moved, Solve_settings{}, policy);
+    const bool cold_better = static_cast<int>(cr.status) < static_cast<int>(wr.status) ||
+                             (cr.status == wr.status && cr.residual < wr.residual);
+    if (cr.iterations + 2 * polish_reserve < Solve_settings{}.max_iterations) {
+      EXPECT_EQ(pr.residual, cold_better ? cr.residual : wr.residual) << "trial " << trial;
+      EXPECT_EQ(pr.status, cold_better ? cr.status : wr.status) << "trial " << trial;
+    }
+  }
+  EXPECT_GE(traced, 1u) << unsolved;
+}
+
 } // namespace

@@ -1069,27 +1069,58 @@ inline double levenberg_marquardt_with_restart(const Problem& pb, Kappa_solver_s
   return fmax;
 }
 
+/// The cold solve after its Newton paths (cold_start_newton): on failure, Levenberg-Marquardt
+/// with restart from the passes. `newton_paths_failed`: this caller already ran
+/// cold_start_newton on these data with its full caps and it failed; it is deterministic, so
+/// the run is skipped and only the start and passes are recomputed (st is then the state after
+/// the passes, as cold_start_newton leaves it on failure). Returns max |r|.
+inline double cold_solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                         Kappa_solve_report& res, bool newton_paths_failed) {
+  double fmax = std::numeric_limits<double>::infinity();
+  if (!newton_paths_failed) {
+    if (cold_start_newton(pb, st, settings, res, fmax)) return fmax;
+  } else {
+    initial_guess(pb, st);
+    refine(pb, st, settings.refinement_passes, refinement_stop, res);
+  }
+  return levenberg_marquardt_with_restart(pb, st, settings, res);
+}
+
+/// What solve() did beyond its report, for solve_with_warm_start.
+struct Solve_trace {
+  /// A warm solve ran cold_start_newton with its full caps (as a cold solve runs it) and it
+  /// failed.
+  bool cold_newton_paths_failed = false;
+};
+
 /// Solves the kappa-curve system; `st` holds the initial state when settings.warm.
-/// Cold start: cold_start_newton, else (from the passes) levenberg_marquardt_with_restart.
-/// Warm start (st of size n): local_warm_start around the moved block, else global_warm_newton,
-/// else cold_start_newton (report().warm_started false then), else
+/// Cold start: cold_solve. Warm start (st of size n): local_warm_start around the moved block,
+/// else global_warm_newton, else cold_start_newton (report().warm_started false then), else
 /// levenberg_marquardt_with_restart from the previous solution.
-inline Kappa_solve_report solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings) {
+inline Kappa_solve_report solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                                Solve_trace* trace = nullptr) {
   Kappa_solve_report res;
   const bool cold = !settings.warm || st.t.size() != pb.n;
   res.warm_started = !cold;
+  if (cold) {
+    const double fmax = cold_solve(pb, st, settings, res, false);
+    return finish(pb, st, settings, res, fmax);
+  }
   double fmax = std::numeric_limits<double>::infinity();
-  bool root = cold ? cold_start_newton(pb, st, settings, res, fmax)
-                   : local_warm_start(pb, st, settings, res, fmax) || global_warm_newton(pb, st, settings, res, fmax);
-  if (!root && !cold) {
+  bool root = local_warm_start(pb, st, settings, res, fmax) || global_warm_newton(pb, st, settings, res, fmax);
+  if (!root) {
     // The Newton paths of a cold start (a few Jacobians) before Levenberg-Marquardt from the
     // previous solution: an edit that moves points onto or off joins can leave the previous
     // solution outside Newton's basin while the cold start's passes land inside it.
+    // With two Newton runs' worth of Jacobians left their caps are those of a cold solve.
+    const bool full_caps = remaining_iterations(settings, res) >= std::min(settings.max_iterations, 2 * newton_iterations);
     Kappa_solver_state fresh;
     if (cold_start_newton(pb, fresh, settings, res, fmax)) {
       st = std::move(fresh);
       res.warm_started = false;
       root = true;
+    } else if (trace != nullptr) {
+      trace->cold_newton_paths_failed = full_caps;
     }
   }
   if (!root) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
@@ -1111,25 +1142,18 @@ inline Kappa_solve_report solve_with_warm_start(const Problem& pb, const Kappa_s
   Solve_settings warm = settings;
   warm.warm = true;
   warm.moved = pb.block_of_point(moved_point);
-  const Kappa_solve_report warm_report = solve(pb, st, warm);
+  Solve_trace trace;
+  const Kappa_solve_report warm_report = solve(pb, st, warm, &trace);
   // A warm root on joins is the constrained solution near the previous one: kept (a cold solve
   // costs more than the whole warm one and would jump to another root far from the edit).
   if (warm_report.status != Kappa_solve_status::UNSOLVED) return warm_report;
+  // The cold solve; when the warm one's fallback already ran the cold Newton paths and they
+  // failed, they are not repeated (up to 2 x newton_iterations Jacobians for nothing: fuzz
+  // finding slow-fixed-weights-25-points). A warm root with a point at a minimum gets all paths.
   Kappa_solver_state cold;
   Kappa_solve_report cold_report;
-  if (warm_report.residual <= settings.tolerance) {
-    cold_report = solve(pb, cold, settings);  // a warm root with a point at a minimum: all paths
-  } else {
-    // The warm solve ended away from a root, so its fallback already ran cold_start_newton on
-    // these data (deterministic: the same start, passes and Newton caps) and it failed; what
-    // the cold solve adds is Levenberg-Marquardt from the passes. Repeating the Newton paths
-    // cost up to 2 x newton_iterations Jacobians for nothing (fuzz finding
-    // slow-fixed-weights-25-points).
-    initial_guess(pb, cold);
-    refine(pb, cold, settings.refinement_passes, refinement_stop, cold_report);
-    const double fmax = levenberg_marquardt_with_restart(pb, cold, settings, cold_report);
-    cold_report = finish(pb, cold, settings, cold_report, fmax);
-  }
+  const double cold_fmax = cold_solve(pb, cold, settings, cold_report, trace.cold_newton_paths_failed);
+  cold_report = finish(pb, cold, settings, cold_report, cold_fmax);
   // Ranked by outcome (INTERIOR, ON_JOINS, UNSOLVED: the enum's order), then by residual (NaN last).
   const auto rank = [](const Kappa_solve_report& r) { return static_cast<int>(r.status); };
   const bool cold_better = rank(cold_report) < rank(warm_report) ||
