@@ -10,6 +10,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <new>
 #include <random>
 #include <utility>
 #include <vector>
@@ -22,6 +24,34 @@ using fair::Kappa_solver_state;
 using fair::Kappa_weights;
 
 // ------------------------------------------------------------------ block LU
+
+// The block LU's storage: room for what was asked, kept when less is asked, dropped on growth;
+// buffers of 2 MiB or more start on a 2 MiB boundary (transparent huge pages); moves transfer it.
+TEST(KappaBlockLu, LargeBufferStorage) {
+  fair::internal::Large_buffer<Block4> small, large;
+  small.reserve(3);
+  ASSERT_GE(small.capacity(), 3u);
+  small[2][15] = 7.0;
+  const Block4* before = small.data();
+  small.reserve(2);
+  EXPECT_EQ(small.data(), before);
+  EXPECT_EQ(small[2][15], 7.0);
+  const std::size_t many = (std::size_t(5) << 20) / sizeof(Block4);  // 5 MiB
+  large.reserve(many);
+  ASSERT_GE(large.capacity(), many);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(large.data()) % fair::internal::Large_buffer<Block4>::huge_page, 0u);
+  for (std::size_t i = 0; i < many; i += 4096) large[i][0] = static_cast<double>(i);
+  large[many - 1][15] = -1.0;
+  fair::internal::Large_buffer<Block4> moved(std::move(large));
+  EXPECT_EQ(large.data(), nullptr);
+  EXPECT_EQ(large.capacity(), 0u);
+  EXPECT_EQ(moved[4096][0], 4096.0);
+  EXPECT_EQ(moved[many - 1][15], -1.0);
+  small = std::move(moved);
+  EXPECT_EQ(small[8192][0], 8192.0);
+  EXPECT_THROW(small.reserve(static_cast<std::size_t>(-1) / 8), std::bad_alloc);
+  EXPECT_EQ(small.capacity(), 0u);  // dropped: growth never keeps the old contents
+}
 
 /// Random block matrix of the kappa structure (row i: column blocks i-2..i+1), the diagonal
 /// blocks shifted by `shift` * I; filled into both the block LU and a dense pivoted LU.

@@ -33,6 +33,7 @@
 #ifndef FAIR_INTERNAL_KAPPA_BLOCK_LU_H
 #define FAIR_INTERNAL_KAPPA_BLOCK_LU_H
 
+#include <fair/internal/common/large_buffer.h>
 #include <fair/internal/kappa/banded.h>
 
 #include <algorithm>
@@ -109,7 +110,7 @@ public:
   /// n block rows; cyclic: closed-curve structure, else clipped.
   void reset(std::size_t n, bool cyclic) {
     resize(n, cyclic);
-    std::fill(a_.get(), a_.get() + 4 * n_, Block4{});
+    std::fill(a_.data(), a_.data() + 4 * n_, Block4{});
   }
   /// As reset(), but the blocks keep stale values: the caller sets every block (all four slots
   /// of every row, zero where the structure has no block). Saves one pass over the storage.
@@ -117,10 +118,7 @@ public:
     n_ = n;
     cyclic_ = cyclic;
     dense_ = cyclic && n < small_cyclic;
-    if (4 * n_ > capacity_) {  // default-initialised: no zero-fill of storage about to be set
-      a_.reset(new Block4[4 * n_]);
-      capacity_ = 4 * n_;
-    }
+    a_.reserve(4 * n_);  // uninitialised: no zero-fill of storage about to be set
     wrap_columns_.clear();
   }
   std::size_t blocks() const { return n_; }
@@ -422,8 +420,7 @@ private:
 
   std::size_t n_ = 0;
   bool cyclic_ = false, dense_ = false;
-  std::unique_ptr<Block4[]> a_;
-  std::size_t capacity_ = 0;
+  Large_buffer<Block4> a_;  // 4 blocks per row (512 bytes): huge pages for large n
   Spike top_, bottom_;                     // Z = B^{-1} U
   std::vector<std::size_t> wrap_columns_;  // unknown index picked by each column of V
   Banded_lu capacitance_;                  // I + V^T Z (dense: bandwidths m-1)
