@@ -791,6 +791,15 @@ inline bool join_point_not_at_maximum(const Problem& pb, const Kappa_solver_stat
   return false;
 }
 
+/// Whether the point of block i is not where its piece's |kappa| is largest, the test of the
+/// outcome (classify: points_at_minima): at an interior minimum (point_at_minimum), on its face
+/// with |kappa| falling towards the join (face_multiplier_negative), or on a join whose piece
+/// has larger |kappa| elsewhere (join_point_not_at_maximum).
+inline bool not_at_piece_maximum(const Problem& pb, const Kappa_solver_state& st, std::size_t i) {
+  return point_at_minimum(pb, st, i) || (t_on_face(st.t[i]) && face_multiplier_negative(pb, st, i)) ||
+         join_point_not_at_maximum(pb, st, i);
+}
+
 /// The outcome of a solve whose per-block residuals are F (4 per block, as evaluate()) and, with
 /// automatic weights, weight_error (|w_i - eq. 16|, per block; empty otherwise): status, points
 /// at minima, worst points, and the deprecated aliases converged and boundary_points.
@@ -802,9 +811,7 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
   // join) is at a minimum of |kappa| over its piece too, at the piece's end; a point on a join
   // whose piece has larger |kappa| elsewhere is not at the piece's maximum either.
   for (std::size_t i = 0; i < pb.n; ++i)
-    if (point_at_minimum(pb, st, i) || (t_on_face(st.t[i]) && face_multiplier_negative(pb, st, i)) ||
-        join_point_not_at_maximum(pb, st, i))
-      res.points_at_minima.push_back(pb.point_index(i));
+    if (not_at_piece_maximum(pb, st, i)) res.points_at_minima.push_back(pb.point_index(i));
   const bool solved = res.residual <= settings.tolerance;
   res.status = !solved || !res.points_at_minima.empty() ? Kappa_solve_status::UNSOLVED
                : res.bounds_active > 0                  ? Kappa_solve_status::ON_JOINS
@@ -1069,21 +1076,74 @@ inline double levenberg_marquardt_with_restart(const Problem& pb, Kappa_solver_s
   return fmax;
 }
 
-/// The cold solve after its Newton paths (cold_start_newton): on failure, Levenberg-Marquardt
-/// with restart from the passes. `newton_paths_failed`: this caller already ran
+/// Rounds of steer_off_minima.
+constexpr std::size_t steering_rounds = 3;
+/// Levenberg-Marquardt iterations of a steering round whose Newton run does not converge.
+constexpr std::size_t steering_lm_iterations = 60;
+
+/// Where |kappa| of the piece of block i is largest: its interior maximum
+/// (piece_maximum_parameter), else -- |kappa| monotone along the piece -- the end where it is
+/// larger (on that face).
+inline double piece_maximum_or_end(const Problem& pb, const Kappa_solver_state& st, std::size_t i) {
+  const Eq4_of_piece e = eq4_of_piece(pb, st, i);
+  const double lo = parameter_margin, hi = 1 - parameter_margin;
+  if (e.value(lo) < 0 && e.value(hi) > 0) return piece_maximum_parameter(pb, st, i);
+  return e.value(0.5) < 0 ? hi : lo;  // E < 0: |kappa| increasing
+}
+
+/// Sec. 3.2 steering: with weights w_i < 1 a root can put an input point at a curvature MINIMUM
+/// of its piece, and a point on a join can be where its piece's |kappa| is smallest
+/// (not_at_piece_maximum) -- a root of the equations that is not a kappa-curve. From such a root
+/// every such t_i is moved to where its piece's |kappa| is largest (piece_maximum_or_end; all
+/// decided on the same state) and Newton's method runs again (a fresh active set, at most
+/// newton_iterations Jacobians), then, if that ends away from a root, Levenberg-Marquardt (at
+/// most steering_lm_iterations) and newton_polish, all within the cap of the whole solve. The
+/// result is kept iff it is a root with fewer such points; at most steering_rounds rounds.
+/// Returns max |r| of st. (On the real-data sets it turns 2 of 5 unsolved quickdraw strokes with
+/// w = 1 and one glyph contour of each weight mode into solved ones: doc/real_data.md.)
+inline double steer_off_minima(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                               Kappa_solve_report& res, double fmax) {
+  for (std::size_t round = 0; round < steering_rounds; ++round) {
+    if (!(fmax <= settings.tolerance) || remaining_iterations(settings, res) == 0) break;
+    std::vector<std::size_t> minima;
+    for (std::size_t i = 0; i < pb.n; ++i)
+      if (not_at_piece_maximum(pb, st, i)) minima.push_back(i);
+    if (minima.empty()) break;
+    Kappa_solver_state trial = st;
+    for (const std::size_t i : minima) trial.t[i] = piece_maximum_or_end(pb, st, i);
+    double f = newton(pb, trial, settings, res, std::min(remaining_iterations(settings, res), newton_iterations));
+    if (!is_root(pb, trial, f, settings) && remaining_iterations(settings, res) > 0) {
+      const std::size_t left_now = remaining_iterations(settings, res);
+      f = newton_polish(pb, trial, settings, res,
+                        levenberg_marquardt(pb, trial, settings, res, left_now > polish_reserve ? std::min(left_now - polish_reserve, steering_lm_iterations) : left_now));
+    }
+    if (!is_root(pb, trial, f, settings)) break;
+    std::size_t left = 0;
+    for (std::size_t i = 0; i < pb.n; ++i) left += not_at_piece_maximum(pb, trial, i) ? 1 : 0;
+    if (left >= minima.size()) break;
+    st = std::move(trial);
+    fmax = f;
+  }
+  return fmax;
+}
+
+/// The cold solve: its Newton paths (cold_start_newton), on failure Levenberg-Marquardt with
+/// restart from the passes; then steer_off_minima. `newton_paths_failed`: this caller already ran
 /// cold_start_newton on these data with its full caps and it failed; it is deterministic, so
 /// the run is skipped and only the start and passes are recomputed (st is then the state after
 /// the passes, as cold_start_newton leaves it on failure). Returns max |r|.
 inline double cold_solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
                          Kappa_solve_report& res, bool newton_paths_failed) {
   double fmax = std::numeric_limits<double>::infinity();
+  bool root = false;
   if (!newton_paths_failed) {
-    if (cold_start_newton(pb, st, settings, res, fmax)) return fmax;
+    root = cold_start_newton(pb, st, settings, res, fmax);
   } else {
     initial_guess(pb, st);
     refine(pb, st, settings.refinement_passes, refinement_stop, res);
   }
-  return levenberg_marquardt_with_restart(pb, st, settings, res);
+  if (!root) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
+  return steer_off_minima(pb, st, settings, res, fmax);
 }
 
 /// What solve() did beyond its report, for solve_with_warm_start.
@@ -1124,7 +1184,7 @@ inline Kappa_solve_report solve(const Problem& pb, Kappa_solver_state& st, const
     }
   }
   if (!root) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
-  return finish(pb, st, settings, res, fmax);
+  return finish(pb, st, settings, res, steer_off_minima(pb, st, settings, res, fmax));
 }
 
 /// The warm/cold start policy of Kappa_curve_2: with a `previous` solution of the same size
