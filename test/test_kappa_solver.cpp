@@ -240,6 +240,14 @@ Problem random_problem(std::mt19937& g, std::size_t n, bool closed, Kappa_weight
   return pb;
 }
 
+/// Trial `trial` of a seeded series mixing what makes solves hard: 5 .. 4 + sizes points, fixed
+/// and automatic weights, open and closed, clamps 0.9 and 0.05 (random_problem).
+Problem mixed_random_problem(std::mt19937& g, int trial, std::size_t sizes) {
+  const std::size_t n = 5 + static_cast<std::size_t>(trial) % sizes;
+  const Kappa_weights mode = trial % 2 == 0 ? Kappa_weights::FIXED : Kappa_weights::AUTOMATIC;
+  return random_problem(g, n, trial % 3 != 0, mode, trial % 4 < 2 ? 0.9 : 0.05);
+}
+
 Kappa_solver_state random_state(std::mt19937& g, std::size_t n) {
   std::uniform_real_distribution<double> U(0, 1);
   Kappa_solver_state st;
@@ -601,9 +609,7 @@ TEST(KappaActiveSet, SteeringOffMinimaKeepsARootWithFewerMinima) {
     return k;
   };
   for (int trial = 0; trial < 600; ++trial) {
-    const std::size_t n = 5 + static_cast<std::size_t>(trial % 20);
-    const Kappa_weights mode = trial % 2 == 0 ? Kappa_weights::FIXED : Kappa_weights::AUTOMATIC;
-    const Problem pb = random_problem(g, n, trial % 3 != 0, mode, trial % 4 < 2 ? 0.9 : 0.05);
+    const Problem pb = mixed_random_problem(g, trial, 20);
     const Solve_settings s;
     Kappa_solver_state st;
     Kappa_solve_report res;
@@ -671,9 +677,7 @@ TEST(KappaSolver, SkippingFailedColdNewtonPathsLosesNothing) {
   std::mt19937 g(20261202);
   std::size_t compared = 0, failed_paths = 0;
   for (int trial = 0; trial < 3000 && compared < 6; ++trial) {
-    const std::size_t n = 5 + static_cast<std::size_t>(trial % 26);
-    const Kappa_weights mode = trial % 2 == 0 ? Kappa_weights::FIXED : Kappa_weights::AUTOMATIC;
-    const Problem pb = random_problem(g, n, trial % 3 != 0, mode, trial % 4 < 2 ? 0.9 : 0.05);
+    const Problem pb = mixed_random_problem(g, trial, 26);
     const Solve_settings s;
     Kappa_solver_state probe;
     Kappa_solve_report newton_paths;
