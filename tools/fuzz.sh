@@ -10,19 +10,22 @@
 # the wall time, the coverage (cov, ft) and the findings. Exit status 1 if a target found
 # something. Be kind to a shared machine: `nice -n 19 tools/fuzz.sh`.
 # Environment: FUZZ_JOBS (build parallelism, default 2), FUZZ_MAX_LEN (default 4096),
-# FUZZ_TIMEOUT (seconds per input, default 1), FUZZ_BUILD (default build-fuzz), FUZZ_FORK (default 0).
+# FUZZ_TIMEOUT (seconds per input, default 1), FUZZ_BUILD (default build-fuzz), FUZZ_WORKERS
+# (default 0).
 #
-# FUZZ_FORK=N runs libFuzzer's fork mode with N worker processes and -ignore_timeouts=1: a busy
-# shared machine makes single inputs exceed the timeout now and then, and the classic mode stops at
-# the first one. Each timeout input is then re-timed alone (three runs, the fastest counts) and is
-# a finding only if it is still slower than FUZZ_TIMEOUT; the others move to findings/<target>/loaded/.
+# FUZZ_WORKERS=N runs N libFuzzer processes in parallel on one shared corpus (-jobs=N -workers=N,
+# executions/N each, logs build-fuzz/logs/<target>/fuzz-<i>.log) with a hang limit of 10 x FUZZ_TIMEOUT
+# and -report_slow_units=FUZZ_TIMEOUT: a busy shared machine makes single inputs exceed the
+# timeout now and then, and a -timeout of FUZZ_TIMEOUT stops the run at the first one. The slow
+# and timed-out inputs are then re-timed alone (three runs, the fastest counts) and are findings
+# only if still slower than FUZZ_TIMEOUT; the others move to findings/<target>/loaded/.
 set -u
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${FUZZ_BUILD:-$root/build-fuzz}
 jobs=${FUZZ_JOBS:-2}
 max_len=${FUZZ_MAX_LEN:-4096}
 timeout=${FUZZ_TIMEOUT:-1}
-fork=${FUZZ_FORK:-0}
+workers=${FUZZ_WORKERS:-0}
 which=${1:-all}
 runs=${2:-1000000}
 
@@ -41,11 +44,12 @@ fi
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "${compiler[@]}" -DFAIR_FUZZ=ON \
   -DFAIR_BUILD_TOOLS=OFF -DFAIR_BUILD_EXAMPLES=OFF -DFAIR_BUILD_BENCHMARKS=OFF >/dev/null || exit 2
 
-# Fork mode: a timeout input is a finding only if it is slow alone (fastest of three runs).
-retime_timeouts() { # exe findings-dir
+# Parallel mode: a slow or timed-out input is a finding only if it is slow alone (fastest of
+# three runs).
+retime_slow_inputs() { # exe findings-dir
   local exe=$1 dir=$2 f best ms i t0
   mkdir -p "$dir/loaded"
-  for f in "$dir"/timeout-*; do
+  for f in "$dir"/timeout-* "$dir"/slow-unit-*; do
     [ -f "$f" ] || continue
     best=
     for i in 1 2 3; do
@@ -73,19 +77,25 @@ for t in "${targets[@]}"; do
   mkdir -p "$corpus" "$work" "$findings"
   log=$build/$t.log
   start=$(date +%s)
-  mode=()
-  [ "$fork" -gt 0 ] && mode=(-fork="$fork" -ignore_timeouts=1)
-  "$exe" "${mode[@]}" -runs="$runs" -max_len="$max_len" -timeout="$timeout" -rss_limit_mb=2048 \
-    -print_final_stats=1 -artifact_prefix="$findings/" "$work" "$corpus" >"$log" 2>&1
-  rc=$?
-  wall=$(( $(date +%s) - start ))
-  if [ "$fork" -gt 0 ]; then
-    execs=$(sed -n 's/^INFO: fuzzed for \([0-9]*\) iterations.*/\1/p' "$log" | tail -1)
-    [ -n "$execs" ] || execs=$(sed -n 's/^#\([0-9]*\): cov:.*/\1/p' "$log" | tail -1)
-    retime_timeouts "$exe" "$findings"
+  if [ "$workers" -gt 0 ]; then
+    # libFuzzer writes fuzz-<i>.log into the current directory (not a corpus directory).
+    logs=$build/logs/$t
+    rm -rf "$logs"; mkdir -p "$logs"
+    (cd "$logs" && "$exe" -jobs="$workers" -workers="$workers" -runs=$(( (runs + workers - 1) / workers )) \
+      -max_len="$max_len" -timeout=$(( 10 * timeout )) -report_slow_units="$timeout" -rss_limit_mb=2048 \
+      -print_final_stats=1 -artifact_prefix="$findings/" "$work" "$corpus") >"$log" 2>&1
+    rc=$?
+    for f in "$logs"/fuzz-*.log; do [ -f "$f" ] && grep -q 'ERROR\|FUZZ ORACLE' "$f" && rc=1; done
+    cat "$logs"/fuzz-*.log >>"$log" 2>/dev/null
+    execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | awk '{s += $1} END {print s}')
+    retime_slow_inputs "$exe" "$findings"
   else
+    "$exe" -runs="$runs" -max_len="$max_len" -timeout="$timeout" -rss_limit_mb=2048 \
+      -print_final_stats=1 -artifact_prefix="$findings/" "$work" "$corpus" >"$log" 2>&1
+    rc=$?
     execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   fi
+  wall=$(( $(date +%s) - start ))
   cov=$(grep -Eo 'cov: [0-9]+ ft: [0-9]+' "$log" | tail -1)
   # Merge the new coverage into a minimised corpus (keeps the seeds' coverage, drops redundancy).
   merged=$build/merged/$t
