@@ -599,7 +599,7 @@ TEST(KappaActiveSet, AutomaticWeightsOnRandomSetsExplainTheOutcome) {
 // piece's |kappa| is largest (weights below 1 make such roots): it keeps a root and never leaves
 // more such points. (On these random sets it finds no better root -- for most of them the moved
 // t_i returns to its minimum or Newton's method finds no root; on the real-data sets it solves
-// four curves more: test_kappa_real's floors.)
+// two curves more: test_kappa_real's floors.)
 TEST(KappaActiveSet, SteeringOffMinimaKeepsARootWithFewerMinima) {
   std::mt19937 g(31);
   std::size_t roots_with_minima = 0;

@@ -1078,8 +1078,6 @@ inline double levenberg_marquardt_with_restart(const Problem& pb, Kappa_solver_s
 
 /// Rounds of steer_off_minima.
 constexpr std::size_t steering_rounds = 3;
-/// Levenberg-Marquardt iterations of a steering round whose Newton run does not converge.
-constexpr std::size_t steering_lm_iterations = 60;
 
 /// Where |kappa| of the piece of block i is largest: its interior maximum
 /// (piece_maximum_parameter), else -- |kappa| monotone along the piece -- the end where it is
@@ -1096,11 +1094,11 @@ inline double piece_maximum_or_end(const Problem& pb, const Kappa_solver_state& 
 /// (not_at_piece_maximum) -- a root of the equations that is not a kappa-curve. From such a root
 /// every such t_i is moved to where its piece's |kappa| is largest (piece_maximum_or_end; all
 /// decided on the same state) and Newton's method runs again (a fresh active set, at most
-/// newton_iterations Jacobians), then, if that ends away from a root, Levenberg-Marquardt (at
-/// most steering_lm_iterations) and newton_polish, all within the cap of the whole solve. The
-/// result is kept iff it is a root with fewer such points; at most steering_rounds rounds.
-/// Returns max |r| of st. (On the real-data sets it turns 2 of 5 unsolved quickdraw strokes with
-/// w = 1 and one glyph contour of each weight mode into solved ones: doc/real_data.md.)
+/// newton_iterations Jacobians), then newton_polish if that ends away from a root, all within
+/// the cap of the whole solve. The result is kept iff it is a root with fewer such points; at
+/// most steering_rounds rounds. Returns max |r| of st. Measured (doc/kappa_curves.md,
+/// "Outcomes"): it solves a few real-data curves more; a Levenberg-Marquardt run after a failed
+/// Newton run solved two more but doubled the Jacobians of hard random sets, and was dropped.
 inline double steer_off_minima(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
                                Kappa_solve_report& res, double fmax) {
   for (std::size_t round = 0; round < steering_rounds; ++round) {
@@ -1112,11 +1110,7 @@ inline double steer_off_minima(const Problem& pb, Kappa_solver_state& st, const 
     Kappa_solver_state trial = st;
     for (const std::size_t i : minima) trial.t[i] = piece_maximum_or_end(pb, st, i);
     double f = newton(pb, trial, settings, res, std::min(remaining_iterations(settings, res), newton_iterations));
-    if (!is_root(pb, trial, f, settings) && remaining_iterations(settings, res) > 0) {
-      const std::size_t left_now = remaining_iterations(settings, res);
-      f = newton_polish(pb, trial, settings, res,
-                        levenberg_marquardt(pb, trial, settings, res, left_now > polish_reserve ? std::min(left_now - polish_reserve, steering_lm_iterations) : left_now));
-    }
+    f = newton_polish(pb, trial, settings, res, f);
     if (!is_root(pb, trial, f, settings)) break;
     std::size_t left = 0;
     for (std::size_t i = 0; i < pb.n; ++i) left += not_at_piece_maximum(pb, trial, i) ? 1 : 0;
