@@ -39,7 +39,9 @@ TEST(KappaBlockLu, LargeBufferStorage) {
   const std::size_t many = (std::size_t(5) << 20) / sizeof(Block4);  // 5 MiB
   large.reserve(many);
   ASSERT_GE(large.capacity(), many);
+#if defined(__linux__)
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(large.data()) % fair::internal::Large_buffer<Block4>::huge_page, 0u);
+#endif
   for (std::size_t i = 0; i < many; i += 4096) large[i][0] = static_cast<double>(i);
   large[many - 1][15] = -1.0;
   fair::internal::Large_buffer<Block4> moved(std::move(large));
@@ -705,9 +707,9 @@ TEST(KappaSolver, SkippingFailedColdNewtonPathsLosesNothing) {
 // the warm solve and the full cold solve (when the latter was not capped).
 TEST(KappaSolver, WarmFallbackTraceSkipsTheRepeatedNewtonPaths) {
   std::mt19937 g(7);
-  std::size_t traced = 0;
+  std::size_t traced = 0, compared = 0;
   std::size_t unsolved = 0;
-  for (int trial = 0; trial < 300 && traced < 3; ++trial) {
+  for (int trial = 0; trial < 300 && compared < 3; ++trial) {
     const std::size_t n = 6 + static_cast<std::size_t>(trial % 20);
     Problem pb = random_problem(g, n, trial % 2 == 0, Kappa_weights::AUTOMATIC, 0.05);
     Kappa_solver_state previous;
@@ -731,11 +733,12 @@ TEST(KappaSolver, WarmFallbackTraceSkipsTheRepeatedNewtonPaths) {
     const bool cold_better = static_cast<int>(cr.status) < static_cast<int>(wr.status) ||
                              (cr.status == wr.status && cr.residual < wr.residual);
     if (cr.iterations + 2 * polish_reserve < Solve_settings{}.max_iterations) {
+      ++compared;
       EXPECT_EQ(pr.residual, cold_better ? cr.residual : wr.residual) << "trial " << trial;
       EXPECT_EQ(pr.status, cold_better ? cr.status : wr.status) << "trial " << trial;
     }
   }
-  EXPECT_GE(traced, 1u) << unsolved;
+  EXPECT_GE(compared, 1u) << traced << " traced, " << unsolved << " warm solves unsolved";
 }
 
 } // namespace

@@ -13,6 +13,7 @@
 #define FAIR_INTERNAL_COMMON_LARGE_BUFFER_H
 
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <new>
 #include <type_traits>
@@ -30,9 +31,11 @@ template <class T>
 class Large_buffer {
   static_assert(std::is_trivially_copyable<T>::value && std::is_trivially_destructible<T>::value,
                 "Large_buffer holds trivially copyable values only");
+  static_assert(alignof(T) <= alignof(std::max_align_t), "Large_buffer: malloc's alignment must suffice");
 
 public:
-  /// Buffers of this size or more are aligned to it and offered to transparent huge pages.
+  /// On Linux, buffers of this size or more are aligned to it and offered to transparent huge
+  /// pages.
   static constexpr std::size_t huge_page = std::size_t(2) << 20;
 
   Large_buffer() = default;
@@ -64,15 +67,20 @@ public:
     if (count > static_cast<std::size_t>(-1) / sizeof(T)) throw std::bad_alloc();
     std::size_t bytes = count * sizeof(T);
     void* p = nullptr;
+#if defined(__linux__)
     if (bytes >= huge_page) {
+      if (bytes > SIZE_MAX - (huge_page - 1)) throw std::bad_alloc();
       bytes = (bytes + huge_page - 1) / huge_page * huge_page;  // aligned_alloc: a multiple of the alignment
       p = std::aligned_alloc(huge_page, bytes);
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
+#if defined(MADV_HUGEPAGE)
       if (p != nullptr) madvise(p, bytes, MADV_HUGEPAGE);  // advice only: failure changes nothing
 #endif
-    } else {
-      p = std::malloc(bytes > 0 ? bytes : 1);
     }
+#endif
+    if (p == nullptr && bytes < huge_page) p = std::malloc(bytes > 0 ? bytes : 1);
+#if !defined(__linux__)
+    if (p == nullptr) p = std::malloc(bytes);
+#endif
     if (p == nullptr) throw std::bad_alloc();
     data_ = static_cast<T*>(p);
     capacity_ = bytes / sizeof(T);

@@ -115,10 +115,10 @@ public:
   /// As reset(), but the blocks keep stale values: the caller sets every block (all four slots
   /// of every row, zero where the structure has no block). Saves one pass over the storage.
   void resize(std::size_t n, bool cyclic) {
+    a_.reserve(4 * n);  // first (may throw): uninitialised, no zero-fill of storage about to be set
     n_ = n;
     cyclic_ = cyclic;
     dense_ = cyclic && n < small_cyclic;
-    a_.reserve(4 * n_);  // uninitialised: no zero-fill of storage about to be set
     wrap_columns_.clear();
   }
   std::size_t blocks() const { return n_; }

@@ -1154,6 +1154,7 @@ struct Solve_trace {
 inline Kappa_solve_report solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
                                 Solve_trace* trace = nullptr) {
   Kappa_solve_report res;
+  if (trace != nullptr) *trace = Solve_trace{};
   const bool cold = !settings.warm || st.t.size() != pb.n;
   res.warm_started = !cold;
   if (cold) {
@@ -1203,7 +1204,8 @@ inline Kappa_solve_report solve_with_warm_start(const Problem& pb, const Kappa_s
   if (warm_report.status != Kappa_solve_status::UNSOLVED) return warm_report;
   // The cold solve; when the warm one's fallback already ran the cold Newton paths and they
   // failed, they are not repeated (up to 2 x newton_iterations Jacobians for nothing: fuzz
-  // finding slow-fixed-weights-25-points). A warm root with a point at a minimum gets all paths.
+  // finding slow-fixed-weights-25-points). Otherwise (e.g. a warm root with a point at a
+  // minimum from the warm Newton stages) the cold solve runs all paths.
   Kappa_solver_state cold;
   Kappa_solve_report cold_report;
   const double cold_fmax = cold_solve(pb, cold, settings, cold_report, trace.cold_newton_paths_failed);
