@@ -75,12 +75,11 @@ public:
 #if defined(MADV_HUGEPAGE)
       if (p != nullptr) madvise(p, bytes, MADV_HUGEPAGE);  // advice only: failure changes nothing
 #endif
+    } else
+#endif
+    {
+      p = std::malloc(bytes > 0 ? bytes : 1);
     }
-#endif
-    if (p == nullptr && bytes < huge_page) p = std::malloc(bytes > 0 ? bytes : 1);
-#if !defined(__linux__)
-    if (p == nullptr) p = std::malloc(bytes);
-#endif
     if (p == nullptr) throw std::bad_alloc();
     data_ = static_cast<T*>(p);
     capacity_ = bytes / sizeof(T);
