@@ -539,8 +539,7 @@ inline double first_crossing(const Problem& pb, const Block_range& range, const 
 
 /// A t in (0,1) of the maximum of |kappa| of the piece of block i (the sign change - to + of
 /// eq. 4's numerator E, by bisection on the Bernstein quartic), or 1/2 if E has none there.
-inline double piece_maximum_parameter(const Problem& pb, const Kappa_solver_state& st, std::size_t i) {
-  const Eq4_of_piece e = eq4_of_piece(pb, st, i);
+inline double piece_maximum_parameter(const Eq4_of_piece& e) {
   auto E = [&](double t) { return e.value(t); };
   double lo = parameter_margin, hi = 1 - parameter_margin;
   if (!(E(lo) < 0 && E(hi) > 0)) return 0.5;
@@ -549,6 +548,10 @@ inline double piece_maximum_parameter(const Problem& pb, const Kappa_solver_stat
     (E(mid) < 0 ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
+}
+/// The same for the piece of block i.
+inline double piece_maximum_parameter(const Problem& pb, const Kappa_solver_state& st, std::size_t i) {
+  return piece_maximum_parameter(eq4_of_piece(pb, st, i));
 }
 
 /// Releases of one t_i per Newton run: a t_i released this often and back on its face stays
@@ -1085,7 +1088,7 @@ constexpr std::size_t steering_rounds = 3;
 inline double piece_maximum_or_end(const Problem& pb, const Kappa_solver_state& st, std::size_t i) {
   const Eq4_of_piece e = eq4_of_piece(pb, st, i);
   const double lo = parameter_margin, hi = 1 - parameter_margin;
-  if (e.value(lo) < 0 && e.value(hi) > 0) return piece_maximum_parameter(pb, st, i);
+  if (e.value(lo) < 0 && e.value(hi) > 0) return piece_maximum_parameter(e);
   return e.value(0.5) < 0 ? hi : lo;  // E < 0: |kappa| increasing
 }
 
