@@ -114,6 +114,20 @@ BENCHMARK(BM_kappa_dense_inflected)
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 
+// Dense uniform samples of the ellipse (cos a, 0.95 sin a): no inflection, |kappa| varying by
+// +-15 %. UNSOLVED from n = 50 on (doc/kappa_curves.md, "Dense smooth data", session 9): the
+// time of a failing dense solve.
+void BM_kappa_dense_ellipse(benchmark::State& state) {
+  const std::size_t n = static_cast<std::size_t>(state.range(0));
+  std::vector<P> points;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    points.push_back(P(std::cos(a), 0.95 * std::sin(a)));
+  }
+  solve_points(state, points, fair::Kappa_weights::UNIT);
+}
+BENCHMARK(BM_kappa_dense_ellipse)->Arg(48)->Arg(1000)->Arg(10000)->Iterations(1)->Unit(benchmark::kMillisecond);
+
 // Warm re-solve: move one point of a converged 1000-point curve by 1 % and solve again from
 // the previous solution (alternating back and forth so every iteration does real work).
 void BM_kappa_warm_resolve_1000(benchmark::State& state) {
