@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <new>
@@ -739,6 +740,104 @@ TEST(KappaSolver, WarmFallbackTraceSkipsTheRepeatedNewtonPaths) {
     }
   }
   EXPECT_GE(compared, 1u) << traced << " traced, " << unsolved << " warm solves unsolved";
+}
+
+// ------------------------------------------------------------------ density start
+
+/// The problem of n uniform samples (cos a, b sin a) of an ellipse, closed (already normalised:
+/// its bounding box is [-1, 1] x [-b, b]).
+Problem sampled_ellipse(std::size_t n, double b) {
+  Problem pb;
+  pb.closed = true;
+  pb.n = n;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    pb.qx.push_back(std::cos(a));
+    pb.qy.push_back(b * std::sin(a));
+  }
+  return pb;
+}
+
+// The density estimate t_i - 1/2 = kappa_s / (3 kappa^3 h) (parameter_prediction.h, derived in
+// doc/kappa_existence.md, Sec. 7) against interior roots found without it: the paper's start
+// (t = 1/2), two passes, Newton's method.
+TEST(KappaDensityStart, PredictedParametersMatchTheInteriorRoot) {
+  const struct { double b; std::size_t n; double tolerance; } cases[] = {
+      {0.99, 50, 1e-3}, {0.99, 100, 1e-3}, {0.95, 24, 5e-3}, {0.95, 40, 5e-3}};
+  for (const auto& c : cases) {
+    const Problem pb = sampled_ellipse(c.n, c.b);
+    Kappa_solver_state st;
+    Kappa_solve_report res;
+    initial_guess(pb, st);
+    refine(pb, st, fast_passes, refinement_stop, res);
+    const double fmax = newton(pb, st, Solve_settings{}, res, newton_iterations);
+    ASSERT_LE(fmax, 1e-12) << "b = " << c.b << ", n = " << c.n;
+    ASSERT_EQ(bounds_active(pb, st), 0u);
+    std::vector<double> t;
+    const double spread = predicted_parameters(pb, t);
+    double worst = 0, root_spread = 0;
+    for (std::size_t i = 0; i < pb.n; ++i) {
+      worst = std::max(worst, std::abs(t[i] - st.t[i]));
+      root_spread = std::max(root_spread, std::abs(st.t[i] - 0.5));
+    }
+    EXPECT_LE(worst, c.tolerance) << "b = " << c.b << ", n = " << c.n << ": root spread " << root_spread;
+    EXPECT_NEAR(spread, root_spread, c.tolerance);
+  }
+}
+
+TEST(KappaDensityStart, NoPredictionForCoarseOrDegenerateData) {
+  std::vector<double> t;
+  // A square turns by pi/2 at each corner: not a dense sample.
+  Problem square;
+  square.closed = true;
+  square.n = 4;
+  square.qx = {1, -1, -1, 1};
+  square.qy = {1, 1, -1, -1};
+  EXPECT_EQ(predicted_parameters(square, t), 0.0);
+  EXPECT_EQ(t, std::vector<double>(4, 0.5));
+  // Two blocks: no curvature on both sides.
+  Problem two = sampled_ellipse(40, 0.95);
+  two.closed = false;
+  two.n = 2;
+  two.qx.resize(2);
+  two.qy.resize(2);
+  EXPECT_EQ(predicted_parameters(two, t), 0.0);
+  // A repeated point (no curvature there) keeps 1/2 at its block and its neighbours; every
+  // prediction is finite and inside the margins.
+  Problem repeated = sampled_ellipse(60, 0.95);
+  repeated.qx[10] = repeated.qx[11];
+  repeated.qy[10] = repeated.qy[11];
+  predicted_parameters(repeated, t);
+  for (const double v : t) {
+    EXPECT_TRUE(std::isfinite(v));
+    EXPECT_GE(v, predicted_parameter_margin);
+    EXPECT_LE(v, 1 - predicted_parameter_margin);
+  }
+  EXPECT_EQ(t[10], 0.5);
+  EXPECT_EQ(t[11], 0.5);
+  // An open curve: its end blocks keep 1/2 (kappa_s needs the curvature at the fixed ends).
+  Problem open = sampled_ellipse(60, 0.95);
+  open.closed = false;
+  open.sx = open.qx[0]; open.sy = open.qy[0];
+  open.ex = open.qx[59]; open.ey = open.qy[59];
+  open.qx = std::vector<double>(open.qx.begin() + 1, open.qx.end() - 1);
+  open.qy = std::vector<double>(open.qy.begin() + 1, open.qy.end() - 1);
+  open.n = 58;
+  EXPECT_GT(predicted_parameters(open, t), predicted_spread_min);
+  EXPECT_EQ(t.front(), 0.5);
+  EXPECT_EQ(t.back(), 0.5);
+}
+
+// Beyond the reach of the paper's start: the cold solve reaches the interior root from the
+// density start in a few Jacobians (before it: UNSOLVED after 94, doc/kappa_curves.md).
+TEST(KappaDensityStart, ColdSolveOfADenselySampledEllipse) {
+  for (const std::size_t n : {160, 200, 260}) {
+    const Problem pb = sampled_ellipse(n, 0.99);
+    Kappa_solver_state st;
+    const Kappa_solve_report r = solve(pb, st, Solve_settings{});
+    EXPECT_EQ(r.status, fair::Kappa_solve_status::INTERIOR) << "n = " << n << ": " << r;
+    EXPECT_LE(r.iterations, density_start_iterations) << "n = " << n;
+  }
 }
 
 } // namespace

@@ -43,6 +43,7 @@
 #include <fair/internal/kappa/block_lu.h>
 #include <fair/internal/kappa/dual.h>
 #include <fair/internal/kappa/jacobian.h>
+#include <fair/internal/kappa/parameter_prediction.h>
 #include <fair/internal/kappa/refinement.h>
 #include <fair/internal/kappa/system.h>
 #include <fair/internal/common/curvature.h>
@@ -904,16 +905,46 @@ inline std::size_t remaining_iterations(const Solve_settings& settings, const Ka
   return settings.max_iterations > res.iterations ? settings.max_iterations - res.iterations : 0;
 }
 
-/// Cold start, the Newton paths: initial guess, fast_passes alternating passes, Newton's
-/// method with the active set (the fast path: from a residual of ~0.05 it converges
-/// quadratically in two or three Jacobians on typical data). If that does not end at an
-/// interior root: the paper's way, up to `refinement_passes` passes from the initial guess, then
-/// Newton's method again (on random data in the unit square it then converges as often as
-/// Levenberg-Marquardt, and it finds an interior root for some sets whose fast path ended on
-/// joins). An interior root is preferred; else the first root on joins found.
+/// The density start of cold_start_newton runs when the predicted t_i move this far from 1/2.
+constexpr double predicted_spread_min = 0.1;
+/// Alternating passes between the density start and its Newton run: one brings lambda and P in
+/// line with the predicted t (eq. 10, eq. 18); more passes pull t back towards the passes' own
+/// fixed point near 1/2.
+constexpr std::size_t density_start_passes = 1;
+/// Jacobians of the density start's Newton run. From that start the ellipses of
+/// doc/kappa_curves.md converge in 1-10; a longer run that fails costs the fallback its
+/// Jacobians.
+constexpr std::size_t density_start_iterations = 10;
+
+/// Cold start, the Newton paths. On dense smooth data first the density start
+/// (parameter_prediction.h: predicted t_i, one pass, at most density_start_iterations Jacobians
+/// of Newton's method, kept only at an interior root). Then the initial guess, fast_passes
+/// alternating passes, Newton's method with the active set (the fast path: from a residual of
+/// ~0.05 it converges quadratically in two or three Jacobians on typical data). If that does
+/// not end at an interior root: the paper's way, up to `refinement_passes` passes from the
+/// initial guess, then Newton's method again (on random data in the unit square it then
+/// converges as often as Levenberg-Marquardt, and it finds an interior root for some sets whose
+/// fast path ended on joins). An interior root is preferred; else the first root on joins
+/// found.
 /// Returns true (fmax set) at a root; otherwise st is the state after the passes.
 inline bool cold_start_newton(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
                               Kappa_solve_report& res, double& fmax) {
+  // The density start (parameter_prediction.h): on densely sampled smooth data the interior
+  // root's t_i lie far from 1/2, where the paper's start begins (uniform samples of the ellipse
+  // (cos a, 0.99 sin a): n = 160-260 UNSOLVED from it, INTERIOR in 1-3 Jacobians from this one;
+  // doc/kappa_curves.md, "Dense smooth data"). Only when a prediction is made (the chords turn
+  // little at every point) and it moves some t_i by predicted_spread_min or more; kept only at
+  // an interior root (a root on joins from this start can be worse than what the paths below
+  // find).
+  std::vector<double> predicted;
+  if (predicted_parameters(pb, predicted) >= predicted_spread_min) {
+    initial_guess(pb, st);
+    st.t.swap(predicted);
+    solve_eq18(pb, st);
+    refine(pb, st, density_start_passes, refinement_stop, res);
+    fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), density_start_iterations));
+    if (is_root(pb, st, fmax, settings) && bounds_active(pb, st) == 0) return true;
+  }
   initial_guess(pb, st);
   const std::size_t first_passes = std::min<std::size_t>(fast_passes, settings.refinement_passes);
   refine(pb, st, first_passes, refinement_stop, res);
@@ -1170,8 +1201,10 @@ inline Kappa_solve_report solve(const Problem& pb, Kappa_solver_state& st, const
     // The Newton paths of a cold start (a few Jacobians) before Levenberg-Marquardt from the
     // previous solution: an edit that moves points onto or off joins can leave the previous
     // solution outside Newton's basin while the cold start's passes land inside it.
-    // With two Newton runs' worth of Jacobians left their caps are those of a cold solve.
-    const bool full_caps = remaining_iterations(settings, res) >= std::min(settings.max_iterations, 2 * newton_iterations);
+    // With the Jacobians of its three Newton runs left, their caps are those of a cold solve.
+    const bool full_caps =
+        remaining_iterations(settings, res) >=
+        std::min(settings.max_iterations, 2 * newton_iterations + density_start_iterations);
     Kappa_solver_state fresh;
     if (cold_start_newton(pb, fresh, settings, res, fmax)) {
       st = std::move(fresh);
@@ -1206,7 +1239,7 @@ inline Kappa_solve_report solve_with_warm_start(const Problem& pb, const Kappa_s
   // costs more than the whole warm one and would jump to another root far from the edit).
   if (warm_report.status != Kappa_solve_status::UNSOLVED) return warm_report;
   // The cold solve; when the warm one's fallback already ran the cold Newton paths and they
-  // failed, they are not repeated (up to 2 x newton_iterations Jacobians for nothing: fuzz
+  // failed, they are not repeated (up to 2 x newton_iterations + density_start_iterations Jacobians for nothing: fuzz
   // finding slow-fixed-weights-25-points). Otherwise (e.g. a warm root with a point at a
   // minimum from the warm Newton stages) the cold solve runs all paths.
   Kappa_solver_state cold;
