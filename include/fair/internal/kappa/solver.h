@@ -1239,9 +1239,9 @@ inline Kappa_solve_report solve_with_warm_start(const Problem& pb, const Kappa_s
   // costs more than the whole warm one and would jump to another root far from the edit).
   if (warm_report.status != Kappa_solve_status::UNSOLVED) return warm_report;
   // The cold solve; when the warm one's fallback already ran the cold Newton paths and they
-  // failed, they are not repeated (up to 2 x newton_iterations + density_start_iterations Jacobians for nothing: fuzz
-  // finding slow-fixed-weights-25-points). Otherwise (e.g. a warm root with a point at a
-  // minimum from the warm Newton stages) the cold solve runs all paths.
+  // failed, they are not repeated (up to 2 x newton_iterations + density_start_iterations
+  // Jacobians for nothing: fuzz finding slow-fixed-weights-25-points). Otherwise (e.g. a warm
+  // root with a point at a minimum from the warm Newton stages) the cold solve runs all paths.
   Kappa_solver_state cold;
   Kappa_solve_report cold_report;
   const double cold_fmax = cold_solve(pb, cold, settings, cold_report, trace.cold_newton_paths_failed);
