@@ -676,6 +676,22 @@ TEST(KappaSolver, WarmStartPolicy) {
 // cold_start_newton fails, it reaches exactly the state of the full cold solve, with the
 // Newton paths' Jacobians fewer -- unless the full solve's Levenberg-Marquardt ran into the
 // iteration cap, which the skip leaves further away.
+/// n points on the unit circle at angles 2 pi (i + jitter (u_i - 1/2)) / n, u_i uniform in
+/// [0, 1) (seeded), closed.
+Problem jittered_circle(std::size_t n, double jitter, unsigned seed) {
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<double> U(0, 1);
+  Problem pb;
+  pb.closed = true;
+  pb.n = n;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * (static_cast<double>(i) + jitter * (U(g) - 0.5)) / static_cast<double>(n);
+    pb.qx.push_back(std::cos(a));
+    pb.qy.push_back(std::sin(a));
+  }
+  return pb;
+}
+
 TEST(KappaSolver, SkippingFailedColdNewtonPathsLosesNothing) {
   std::mt19937 g(20261202);
   std::size_t compared = 0, failed_paths = 0;
@@ -700,6 +716,24 @@ TEST(KappaSolver, SkippingFailedColdNewtonPathsLosesNothing) {
     EXPECT_EQ(skipped.dx, full.dx) << "trial " << trial;
   }
   EXPECT_GE(compared, 3u) << failed_paths << " sets with failed Newton paths";
+  // Dense smooth data, where the density start runs first (and fails: a circle sampled with
+  // 40 % jitter, UNSOLVED).
+  const Problem dense = jittered_circle(100, 0.4, 7);
+  std::vector<double> predicted;
+  ASSERT_GE(predicted_parameters(dense, predicted), predicted_spread_min);
+  Solve_settings s;
+  s.max_iterations = 2000;  // its Levenberg-Marquardt stalls before this cap
+  Kappa_solver_state probe, full, skipped;
+  Kappa_solve_report newton_paths, rf, rs;
+  double fmax = 0;
+  ASSERT_FALSE(cold_start_newton(dense, probe, s, newton_paths, fmax));
+  const double ff = cold_solve(dense, full, s, rf, false);
+  const double fs = cold_solve(dense, skipped, s, rs, true);
+  ASSERT_LT(rf.iterations + 2 * polish_reserve, s.max_iterations);
+  EXPECT_EQ(rs.iterations + newton_paths.iterations, rf.iterations);
+  EXPECT_EQ(fs, ff);
+  EXPECT_EQ(skipped.t, full.t);
+  EXPECT_EQ(skipped.dx, full.dx);
 }
 
 // A warm solve whose edit (automatic weights, small clamp: hard sets) leaves the previous
@@ -802,36 +836,88 @@ TEST(KappaDensityStart, NoPredictionForCoarseOrDegenerateData) {
   two.qx.resize(2);
   two.qy.resize(2);
   EXPECT_EQ(predicted_parameters(two, t), 0.0);
-  // A repeated point (no curvature there) keeps 1/2 at its block and its neighbours; every
-  // prediction is finite and inside the margins.
-  Problem repeated = sampled_ellipse(60, 0.95);
+  // Beyond the density limit (aspect 0.95: about 61 points, doc/kappa_existence.md, Sec. 7)
+  // some t_i would leave (0, 1): no prediction.
+  EXPECT_EQ(predicted_parameters(sampled_ellipse(80, 0.95), t), 0.0);
+  EXPECT_EQ(t, std::vector<double>(80, 0.5));
+  // A repeated point keeps 1/2 at its blocks and their neighbours, the others are predicted.
+  Problem repeated = sampled_ellipse(100, 0.99);
   repeated.qx[10] = repeated.qx[11];
   repeated.qy[10] = repeated.qy[11];
-  predicted_parameters(repeated, t);
-  for (const double v : t) {
-    EXPECT_TRUE(std::isfinite(v));
-    EXPECT_GE(v, predicted_parameter_margin);
-    EXPECT_LE(v, 1 - predicted_parameter_margin);
-  }
-  EXPECT_EQ(t[10], 0.5);
-  EXPECT_EQ(t[11], 0.5);
+  EXPECT_GT(predicted_parameters(repeated, t), predicted_spread_min);
+  for (const std::size_t i : {9, 10, 11, 12}) EXPECT_EQ(t[i], 0.5) << i;
+  for (const double v : t) EXPECT_TRUE(v > 0 && v < 1);
   // An open curve: its end blocks keep 1/2 (kappa_s needs the curvature at the fixed ends).
-  Problem open = sampled_ellipse(60, 0.95);
+  Problem open = sampled_ellipse(100, 0.99);
   open.closed = false;
   open.sx = open.qx[0]; open.sy = open.qy[0];
-  open.ex = open.qx[59]; open.ey = open.qy[59];
+  open.ex = open.qx[99]; open.ey = open.qy[99];
   open.qx = std::vector<double>(open.qx.begin() + 1, open.qx.end() - 1);
   open.qy = std::vector<double>(open.qy.begin() + 1, open.qy.end() - 1);
-  open.n = 58;
+  open.n = 98;
+  std::vector<double> closed_t;
+  predicted_parameters(sampled_ellipse(100, 0.99), closed_t);
   EXPECT_GT(predicted_parameters(open, t), predicted_spread_min);
   EXPECT_EQ(t.front(), 0.5);
   EXPECT_EQ(t.back(), 0.5);
+  for (std::size_t i = 1; i + 1 < open.n; ++i) EXPECT_EQ(t[i], closed_t[i + 1]) << i;
+}
+
+// Curvatures enter only as kappa h: the same samples at 1e-200 and 1e+200 give the same t_i
+// (before, kappa^3 h underflowed below spacings of about 1e-102 and the shift vanished).
+TEST(KappaDensityStart, PredictionIsScaleFree) {
+  const Problem unit = sampled_ellipse(120, 0.99);
+  std::vector<double> t;
+  const double spread = predicted_parameters(unit, t);
+  ASSERT_GT(spread, predicted_spread_min);
+  for (const double scale : {1e-200, 1e200}) {
+    Problem scaled = unit;
+    for (double& v : scaled.qx) v *= scale;
+    for (double& v : scaled.qy) v *= scale;
+    std::vector<double> ts;
+    // Rounding differs (differences of kappa h over (kappa h)^3 amplify it to ~1e-12); an
+    // underflow or overflow would change t_i by the whole shift (0.1-0.3).
+    EXPECT_NEAR(predicted_parameters(scaled, ts), spread, 1e-9) << scale;
+    for (std::size_t i = 0; i < t.size(); ++i) EXPECT_NEAR(ts[i], t[i], 1e-9) << scale << ", block " << i;
+  }
+}
+
+// Uneven spacing: on a circle sampled at alternating steps 1 : 1.6 the root's t_i are far from
+// 1/2, and the prediction (the position of Q_i between the midpoints of its intervals) is near
+// them. The root is found from the paper's start.
+TEST(KappaDensityStart, UnevenSpacingOnACircle) {
+  const std::size_t n = 40;
+  Problem pb;
+  pb.closed = true;
+  pb.n = n;
+  const double step = 2 * M_PI / (n / 2 * 2.6);
+  double a = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    pb.qx.push_back(std::cos(a));
+    pb.qy.push_back(std::sin(a));
+    a += i % 2 == 0 ? step : 1.6 * step;
+  }
+  Kappa_solver_state st;
+  Kappa_solve_report res;
+  initial_guess(pb, st);
+  refine(pb, st, fast_passes, refinement_stop, res);
+  ASSERT_LE(newton(pb, st, Solve_settings{}, res, newton_iterations), 1e-12);
+  ASSERT_EQ(bounds_active(pb, st), 0u);
+  std::vector<double> t;
+  predicted_parameters(pb, t);
+  double worst = 0, root_spread = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    worst = std::max(worst, std::abs(t[i] - st.t[i]));
+    root_spread = std::max(root_spread, std::abs(st.t[i] - 0.5));
+  }
+  EXPECT_GT(root_spread, 0.05);
+  EXPECT_LE(worst, 0.2 * root_spread) << "root spread " << root_spread;
 }
 
 // Beyond the reach of the paper's start: the cold solve reaches the interior root from the
-// density start in a few Jacobians (before it: UNSOLVED after 94, doc/kappa_curves.md).
+// density start in a few Jacobians (before it: UNSOLVED after 73-94, doc/kappa_curves.md).
 TEST(KappaDensityStart, ColdSolveOfADenselySampledEllipse) {
-  for (const std::size_t n : {160, 200, 260}) {
+  for (const std::size_t n : {160, 200, 240}) {
     const Problem pb = sampled_ellipse(n, 0.99);
     Kappa_solver_state st;
     const Kappa_solve_report r = solve(pb, st, Solve_settings{});

@@ -22,10 +22,9 @@
 // of Sec. 7), so from a few hundred points on the passes from t = 1/2 end far from the root.
 // kappa_i is estimated from the data as the Menger curvature of Q_{i-1}, Q_i, Q_{i+1}.
 // Accuracy: first order in kappa h, and the discrete estimates are O(h)-accurate, so this is a
-// start, not a solution. Degenerate cases: a coincident neighbour (an interval of length 0, a
-// curvature that is not finite) gives t_i = 1/2 next to it, a straight stretch (kappa = 0 on
-// both sides of a join) delta = 0; the result is clamped to
-// [predicted_parameter_margin, 1 - predicted_parameter_margin].
+// start, not a solution. Degenerate cases: a coincident neighbour (an interval of length 0)
+// leaves t_i = 1/2 at its block and the blocks next to it; a t_i outside the margins (beyond
+// the density limit, or kappa near 0) means no prediction at all.
 
 #ifndef FAIR_INTERNAL_KAPPA_PARAMETER_PREDICTION_H
 #define FAIR_INTERNAL_KAPPA_PARAMETER_PREDICTION_H
@@ -41,8 +40,8 @@ namespace fair {
 namespace internal {
 namespace kappa {
 
-/// Predicted t_i are kept this far from 0 and 1: on the bound eq. 7 of the piece degenerates
-/// (the point is an end point), and eq. 18 would put the piece's end exactly on Q_i.
+/// A predicted t_i closer than this to 0 or 1 means no prediction: the data are beyond the
+/// density limit there, and the interior root the density start looks for does not exist.
 constexpr double predicted_parameter_margin = 0.02;
 /// The estimate is first order in kappa h, i.e. in the turning angle between consecutive
 /// chords; above this turning (radians, about 22 degrees) at some point the data are not a dense
@@ -59,45 +58,58 @@ inline void neighbour_points(const Problem& pb, std::size_t i, double& px, doubl
   else { nx = pb.ex; ny = pb.ey; }
 }
 
-/// The t_i of the density estimate (file comment), one per block. Returns max |t_i - 1/2|
-/// after clamping; 0, with every t_i = 1/2, for fewer than 3 blocks (kappa_s needs both
-/// neighbours' curvatures) or when the chords turn by more than predicted_max_turning at some
-/// point.
+/// The t_i of the density estimate (file comment), one per block. Returns max |t_i - 1/2|;
+/// 0, with every t_i = 1/2, when no prediction is made: fewer than 3 blocks (kappa_s needs
+/// both neighbours' curvatures), chords turning by more than predicted_max_turning at some
+/// point (not a dense sample), or a predicted t_i outside [predicted_parameter_margin,
+/// 1 - predicted_parameter_margin] (beyond the density limit of Sec. 7: no interior root to
+/// start near; near-straight stretches, where kappa is tiny, also end here).
+/// Scale-free: curvatures enter only as kappa h = 2 sin(turning) h / chord, from unit chord
+/// directions, so spacings of 1e-300 give the same t_i as spacings of 1.
 inline double predicted_parameters(const Problem& pb, std::vector<double>& t) {
   const std::size_t n = pb.n;
   t.assign(n, 0.5);
   if (n < 3) return 0;
-  // |kappa| (Menger) at each block's point and the interval to the next point.
-  std::vector<double> kappa(n), after(n), before(n);
+  // Per block: the intervals to its neighbours, the chord between them, the sine of the
+  // turning between the two unit chord directions; usable = no coincident neighbour.
+  std::vector<double> before(n), after(n), chord(n), sine(n);
+  std::vector<char> usable(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
     double px, py, nx, ny;
     neighbour_points(pb, i, px, py, nx, ny);
     const double x = pb.qx[i], y = pb.qy[i];
     const double a = std::hypot(x - px, y - py), b = std::hypot(nx - x, ny - y), c = std::hypot(nx - px, ny - py);
-    const double cross = (x - px) * (ny - py) - (y - py) * (nx - px);
-    const double turning = std::atan2(std::abs(cross), (x - px) * (nx - x) + (y - py) * (ny - y));
-    if (!(turning <= predicted_max_turning)) return 0;
-    kappa[i] = std::abs(2 * cross / (a * b * c));
+    if (!(a > 0 && b > 0 && c > 0 && std::isfinite(a + b + c))) continue;
+    const double ux = (x - px) / a, uy = (y - py) / a, vx = (nx - x) / b, vy = (ny - y) / b;
+    const double cross = ux * vy - uy * vx, dot = ux * vx + uy * vy;
+    if (!(std::atan2(std::abs(cross), dot) <= predicted_max_turning)) return 0;
     before[i] = a;
     after[i] = b;
+    chord[i] = c;
+    sine[i] = std::abs(cross);
+    usable[i] = 1;
   }
   double spread = 0;
   for (std::size_t i = 0; i < n; ++i) {
     // kappa_s needs the curvature on both sides: an open curve's end blocks keep 1/2.
     if (!pb.closed && (i == 0 || i + 1 == n)) continue;
-    const double hb = before[i], ha = after[i];
-    if (!(hb > 0 && ha > 0 && std::isfinite(kappa[i]))) continue;
     const std::size_t prev = i == 0 ? n - 1 : i - 1, next = i + 1 == n ? 0 : i + 1;
+    if (!usable[i] || !usable[prev] || !usable[next]) continue;
     // The linearisation of t_i above: the position of Q_i between the midpoints of its two
     // intervals, plus kappa_s / (3 kappa^3 h) with kappa_s the central difference of |kappa|
     // and h the mean interval (on uniform ellipse samples within 1e-4 to 2.5e-3 of the root;
-    // the quotient form with one-sided differences was 6-16 times worse).
-    const double k = kappa[i], h = 0.5 * (hb + ha);
-    const double kappa_s = (kappa[next] - kappa[prev]) / (hb + ha);
-    const double ti = hb / (hb + ha) + kappa_s / (3 * k * k * k * h);
-    if (!std::isfinite(ti)) continue;
-    t[i] = std::min(std::max(ti, predicted_parameter_margin), 1 - predicted_parameter_margin);
-    spread = std::max(spread, std::abs(t[i] - 0.5));
+    // the quotient form with one-sided differences was 6-16 times worse). In units of h:
+    // kappa_s / (3 kappa^3 h) = (K_next - K_prev) / (6 K^3) with K = kappa h.
+    const double h = 0.5 * (before[i] + after[i]);
+    auto kappa_h = [&](std::size_t j) { return 2 * sine[j] * (h / chord[j]); };
+    const double k = kappa_h(i);
+    const double ti = before[i] / (before[i] + after[i]) + (kappa_h(next) - kappa_h(prev)) / (6 * k * k * k);
+    if (!(ti >= predicted_parameter_margin && ti <= 1 - predicted_parameter_margin)) {
+      t.assign(n, 0.5);
+      return 0;
+    }
+    t[i] = ti;
+    spread = std::max(spread, std::abs(ti - 0.5));
   }
   return spread;
 }

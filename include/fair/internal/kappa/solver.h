@@ -916,7 +916,7 @@ constexpr std::size_t density_start_passes = 1;
 /// Jacobians.
 constexpr std::size_t density_start_iterations = 10;
 
-/// Cold start, the Newton paths. On dense smooth data first the density start
+/// Cold start, the Newton paths. On dense smooth data with w = 1 first the density start
 /// (parameter_prediction.h: predicted t_i, one pass, at most density_start_iterations Jacobians
 /// of Newton's method, kept only at an interior root). Then the initial guess, fast_passes
 /// alternating passes, Newton's method with the active set (the fast path: from a residual of
@@ -932,16 +932,17 @@ inline bool cold_start_newton(const Problem& pb, Kappa_solver_state& st, const S
   // The density start (parameter_prediction.h): on densely sampled smooth data the interior
   // root's t_i lie far from 1/2, where the paper's start begins (uniform samples of the ellipse
   // (cos a, 0.99 sin a): n = 160-260 UNSOLVED from it, INTERIOR in 1-3 Jacobians from this one;
-  // doc/kappa_curves.md, "Dense smooth data"). Only when a prediction is made (the chords turn
-  // little at every point) and it moves some t_i by predicted_spread_min or more; kept only at
-  // an interior root (a root on joins from this start can be worse than what the paths below
-  // find).
+  // doc/kappa_curves.md, "Dense smooth data"). Only with w = 1 (the estimate is that of
+  // parabolas), when a prediction is made (the chords turn little at every point, every t_i
+  // inside the density limit) and it moves some t_i by predicted_spread_min or more; kept only
+  // at an interior root (a root on joins from this start can be worse than what the paths
+  // below find).
   std::vector<double> predicted;
-  if (predicted_parameters(pb, predicted) >= predicted_spread_min) {
+  if (pb.mode == Kappa_weights::UNIT && predicted_parameters(pb, predicted) >= predicted_spread_min) {
     initial_guess(pb, st);
     st.t.swap(predicted);
     solve_eq18(pb, st);
-    refine(pb, st, density_start_passes, refinement_stop, res);
+    refine(pb, st, std::min(density_start_passes, settings.refinement_passes), refinement_stop, res);
     fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), density_start_iterations));
     if (is_root(pb, st, fmax, settings) && bounds_active(pb, st) == 0) return true;
   }
