@@ -325,21 +325,50 @@ TEST(KappaJacobian, DegenerateJoinsAndOpenEnds) {
 
 // ------------------------------------------------------------------ Newton
 
-Problem star(std::size_t n, unsigned seed, Kappa_weights mode) {
-  std::mt19937 g(seed);
-  std::uniform_real_distribution<double> U(0, 1);
+/// The closed problem of the n points point(i, x, y).
+template <class Point_at>
+Problem closed_samples(std::size_t n, Point_at point) {
   Problem pb;
   pb.closed = true;
   pb.n = n;
-  pb.mode = mode;
-  pb.tension.assign(n, 1.0);
   for (std::size_t i = 0; i < n; ++i) {
-    const double a = 2 * M_PI * (static_cast<double>(i) + 0.2 * (U(g) - 0.5)) / static_cast<double>(n);
-    const double r = 1 + 0.05 * (i % 2 ? 1 : -1) * (0.5 + U(g));
-    pb.qx.push_back(r * std::cos(a));
-    pb.qy.push_back(r * std::sin(a));
+    double x, y;
+    point(i, x, y);
+    pb.qx.push_back(x);
+    pb.qy.push_back(y);
   }
   return pb;
+}
+
+/// The angle 2 pi (i + jitter (u - 1/2)) / n of sample i.
+double jittered_angle(std::size_t i, std::size_t n, double jitter, double u) {
+  return 2 * M_PI * (static_cast<double>(i) + jitter * (u - 0.5)) / static_cast<double>(n);
+}
+
+/// A star: jittered angles (20 %), radii alternating around 1 by 2.5-7.5 %.
+Problem star(std::size_t n, unsigned seed, Kappa_weights mode) {
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<double> U(0, 1);
+  Problem pb = closed_samples(n, [&](std::size_t i, double& x, double& y) {
+    const double a = jittered_angle(i, n, 0.2, U(g));
+    const double r = 1 + 0.05 * (i % 2 ? 1 : -1) * (0.5 + U(g));
+    x = r * std::cos(a);
+    y = r * std::sin(a);
+  });
+  pb.mode = mode;
+  pb.tension.assign(n, 1.0);
+  return pb;
+}
+
+/// n points on the unit circle at jittered angles (seeded).
+Problem jittered_circle(std::size_t n, double jitter, unsigned seed) {
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<double> U(0, 1);
+  return closed_samples(n, [&](std::size_t i, double& x, double& y) {
+    const double a = jittered_angle(i, n, jitter, U(g));
+    x = std::cos(a);
+    y = std::sin(a);
+  });
 }
 
 // From the same start, Newton's method and Levenberg-Marquardt reach the same root; Newton in
@@ -676,22 +705,6 @@ TEST(KappaSolver, WarmStartPolicy) {
 // cold_start_newton fails, it reaches exactly the state of the full cold solve, with the
 // Newton paths' Jacobians fewer -- unless the full solve's Levenberg-Marquardt ran into the
 // iteration cap, which the skip leaves further away.
-/// n points on the unit circle at angles 2 pi (i + jitter (u_i - 1/2)) / n, u_i uniform in
-/// [0, 1) (seeded), closed.
-Problem jittered_circle(std::size_t n, double jitter, unsigned seed) {
-  std::mt19937 g(seed);
-  std::uniform_real_distribution<double> U(0, 1);
-  Problem pb;
-  pb.closed = true;
-  pb.n = n;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double a = 2 * M_PI * (static_cast<double>(i) + jitter * (U(g) - 0.5)) / static_cast<double>(n);
-    pb.qx.push_back(std::cos(a));
-    pb.qy.push_back(std::sin(a));
-  }
-  return pb;
-}
-
 TEST(KappaSolver, SkippingFailedColdNewtonPathsLosesNothing) {
   std::mt19937 g(20261202);
   std::size_t compared = 0, failed_paths = 0;
@@ -781,15 +794,11 @@ TEST(KappaSolver, WarmFallbackTraceSkipsTheRepeatedNewtonPaths) {
 /// The problem of n uniform samples (cos a, b sin a) of an ellipse, closed (already normalised:
 /// its bounding box is [-1, 1] x [-b, b]).
 Problem sampled_ellipse(std::size_t n, double b) {
-  Problem pb;
-  pb.closed = true;
-  pb.n = n;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
-    pb.qx.push_back(std::cos(a));
-    pb.qy.push_back(b * std::sin(a));
-  }
-  return pb;
+  return closed_samples(n, [&](std::size_t i, double& x, double& y) {
+    const double a = jittered_angle(i, n, 0, 0.5);
+    x = std::cos(a);
+    y = b * std::sin(a);
+  });
 }
 
 // The density estimate t_i - 1/2 = kappa_s / (3 kappa^3 h) (parameter_prediction.h, derived in
@@ -887,16 +896,12 @@ TEST(KappaDensityStart, PredictionIsScaleFree) {
 // them. The root is found from the paper's start.
 TEST(KappaDensityStart, UnevenSpacingOnACircle) {
   const std::size_t n = 40;
-  Problem pb;
-  pb.closed = true;
-  pb.n = n;
   const double step = 2 * M_PI / (n / 2 * 2.6);
-  double a = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    pb.qx.push_back(std::cos(a));
-    pb.qy.push_back(std::sin(a));
-    a += i % 2 == 0 ? step : 1.6 * step;
-  }
+  const Problem pb = closed_samples(n, [&](std::size_t i, double& x, double& y) {
+    const double a = static_cast<double>(i / 2) * 2.6 * step + (i % 2 == 1 ? step : 0.0);
+    x = std::cos(a);
+    y = std::sin(a);
+  });
   Kappa_solver_state st;
   Kappa_solve_report res;
   initial_guess(pb, st);
