@@ -4,9 +4,10 @@
 // residuals of block i and their derivatives with respect to the 16 unknowns of the blocks
 // i-2, i-1, i, i+1 (window slot k = block i-2+k, unknown c = x, y, lambda, t at column 4k+c).
 //
-// Accuracy: exact to rounding (forward-mode automatic differentiation, dual.h, through
-// the same templates that evaluate the residuals, so value and derivative cannot disagree;
-// checked against a differentiation over all 16 unknowns in test_kappa_solver.cpp).
+// Accuracy: exact to rounding. The values come from the templates that evaluate the residuals
+// (system.h); the derivatives of the piece residuals and of r_3 are written out by hand, those
+// of the automatic weight of eq. 16 by forward-mode automatic differentiation (dual.h). All are
+// checked against a differentiation over all 16 unknowns in test_kappa_solver.cpp.
 // Degenerate cases: abs() and the clamp of eq. 16 contribute the derivative of the active
 // branch; residuals defined as 0 at a degenerate configuration (system.h) have a zero
 // gradient there.
@@ -71,6 +72,48 @@ inline double piece_weight_gradient(const Problem& pb, const Kappa_solver_state&
   return w.v;
 }
 
+/// r_0..r_2 of a piece (piece_residuals, system.h, which gives the values) and their
+/// derivatives by hand: g[e][0..5] with respect to (E0, P, E2), g[e][6] to t, gw[e] to w.
+/// With u = 1 - t, b = (u^2, 2utw, t^2), D = b0 + b1 + b2 and N = b0 E0 + b1 P + b2 E2:
+///   r_c = N_c / D:  dr_c/dE0_c = b0/D, dr_c/dP_c = b1/D, dr_c/dE2_c = b2/D,
+///                   dr_c/dt = (N_c' - r_c D') / D,  dr_c/dw = 2ut (P_c - r_c) / D;
+///   r_2 = f / (A + C) with f of eq. 7 in A = E0.E0, B = E0.E2, C = E2.E2 (P does not enter):
+///     df/dA = -w u^4 - u^3 t, df/dB = u t^3 - u^3 t, df/dC = u t^3 + w t^4,
+///     df/dt = 4wA u^3 - (A+B)(u^3 - 3u^2 t) + (B+C)(3u t^2 - t^3) + 4wC t^3, df/dw = C t^4 - A u^4,
+///   and d(A + C) = 2 E0.dE0 + 2 E2.dE2.
+/// (Forward-mode differentiation of the same expressions cost 25 % of a random-star solve.)
+inline void piece_residual_gradients(const double* E0, const double* X, const double* E2, double t, double w,
+                                     double r[3], double g[3][7], double gw[3]) {
+  piece_residuals(E0, X, E2, t, w, r);
+  for (int e = 0; e < 3; ++e) {
+    for (int c = 0; c < 7; ++c) g[e][c] = 0.0;
+    gw[e] = 0.0;
+  }
+  const double u = 1.0 - t;
+  const double b0 = u * u, b1 = 2.0 * u * t * w, b2 = t * t, den = b0 + b1 + b2;
+  const double db0 = -2.0 * u, db1 = 2.0 * w * (u - t), db2 = 2.0 * t, dden = db0 + db1 + db2;
+  for (int c = 0; c < 2; ++c) {
+    g[c][c] = b0 / den;
+    g[c][2 + c] = b1 / den;
+    g[c][4 + c] = b2 / den;
+    g[c][6] = (db0 * E0[c] + db1 * X[c] + db2 * E2[c] - r[c] * dden) / den;
+    gw[c] = 2.0 * u * t * (X[c] - r[c]) / den;
+  }
+  const double A = E0[0] * E0[0] + E0[1] * E0[1];
+  const double B = E0[0] * E2[0] + E0[1] * E2[1];
+  const double C = E2[0] * E2[0] + E2[1] * E2[1];
+  const double AC = A + C;
+  if (!(AC > 0.0)) return;  // r_2 is defined as 0 there, with a zero gradient
+  const double u2 = u * u, u3 = u2 * u, u4 = u3 * u, t2 = t * t, t3 = t2 * t, t4 = t3 * t;
+  const double fA = -w * u4 - u3 * t, fB = u * t3 - u3 * t, fC = u * t3 + w * t4;
+  for (int c = 0; c < 2; ++c) {
+    g[2][c] = (2.0 * (fA - r[2]) * E0[c] + fB * E2[c]) / AC;
+    g[2][4 + c] = (fB * E0[c] + 2.0 * (fC - r[2]) * E2[c]) / AC;
+  }
+  g[2][6] = (4.0 * w * A * u3 - (A + B) * (u3 - 3.0 * u2 * t) + (B + C) * (3.0 * u * t2 - t3) + 4.0 * w * C * t3) / AC;
+  gw[2] = (C * t4 - A * u4) / AC;
+}
+
 /// Residuals r[e] of block i and J[e][4k+c] = d r[e] / d (unknown c of block i-2+k); columns
 /// of blocks that do not exist (open curves) are zero.
 ///  - r_0..r_2 depend on the unknowns only through the piece's control points E0, P_i, E2 and
@@ -88,22 +131,15 @@ inline void block_jacobian(const Problem& pb, const Kappa_solver_state& st, std:
   Piece_values<double> pv;
   piece_values(pb, st, i, win, 2, pv);
   const bool start = pb.has_start(i), end = pb.has_end(i);
-  // r_0..r_2 over (E0, P_i, E2, t_i).
-  typedef Dual<7> D7;
-  D7 E0[2], X[2], E2[2];
-  for (int c = 0; c < 2; ++c) {
-    E0[c] = D7::variable(pv.E0[c], c);
-    X[c] = D7::variable(win.X[2][c], 2 + c);
-    E2[c] = D7::variable(pv.E2[c], 4 + c);
-  }
-  const D7 t = D7::variable(win.t[2], 6);
-  const D7 w = piece_weight(pb, i, E0, X, E2);
-  D7 rp[3];
-  piece_residuals(E0, X, E2, t, w, rp);
+  // r_0..r_2 over (E0, P_i, E2, t_i), the weight's dependence on (E0, P_i, E2) by the chain rule.
+  double gwc[6];
+  const double wc = piece_weight_gradient(pb, st, i, win, 2, gwc);
+  double g[3][7], dr_dw[3];
+  piece_residual_gradients(pv.E0, win.X[2], pv.E2, win.t[2], wc, r, g, dr_dw);
   for (int e = 0; e < 3; ++e) {
-    r[e] = rp[e].v;
-    add_piece_gradient(win, 2, start, end, rp[e].d.data(), J[e]);
-    J[e][11] = rp[e].d[6];
+    for (int c = 0; c < 6; ++c) g[e][c] += dr_dw[e] * gwc[c];
+    add_piece_gradient(win, 2, start, end, g[e], J[e]);
+    J[e][11] = g[e][6];
   }
   if (!start) {
     r[3] = win.lam[2] - 0.5;
@@ -111,7 +147,6 @@ inline void block_jacobian(const Problem& pb, const Kappa_solver_state& st, std:
     return;
   }
   // r_3: value as join_residual computes it, gradient by hand.
-  const double wc = w.v;
   r[3] = join_residual(pb, st, i, win, wc);
   const std::size_t jm = win.block[1];
   const bool prev_start = pb.has_start(jm);
@@ -159,7 +194,7 @@ inline void block_jacobian(const Problem& pb, const Kappa_solver_state& st, std:
   dk2[10] += 2.0 * k2 / (1.0 - lam);                      // (1 - lambda_i)^-2
   if (pb.mode == Kappa_weights::AUTOMATIC) {
     for (int c = 0; c < 16; ++c) gw[c] = 0.0;
-    add_piece_gradient(win, 2, start, end, w.d.data(), gw);  // w_i^-2
+    add_piece_gradient(win, 2, start, end, gwc, gw);  // w_i^-2
     for (int c = 0; c < 16; ++c) dk2[c] -= 2.0 * k2 / wc * gw[c];
   }
   const double f = 2.0 / (sum * sum);

@@ -939,7 +939,7 @@ inline bool cold_start_newton(const Problem& pb, Kappa_solver_state& st, const S
   // below find).
   std::vector<double> predicted;
   if (pb.mode == Kappa_weights::UNIT && predicted_parameters(pb, predicted) >= predicted_spread_min) {
-    initial_guess(pb, st);
+    st.resize(pb.n);  // the initial guess (w = 1), with the predicted t instead of 1/2
     st.t.swap(predicted);
     solve_eq18(pb, st);
     refine(pb, st, std::min(density_start_passes, settings.refinement_passes), refinement_stop, res);

@@ -105,7 +105,10 @@ void build_window(const Problem& pb, const Kappa_solver_state& st, std::size_t i
   const long n = static_cast<long>(pb.n);
   for (int k = 0; k < 4; ++k) {
     long b = static_cast<long>(i) - 2 + k;
-    if (pb.closed) b = ((b % n) + n) % n;
+    if (pb.closed) {  // b is in [i - 2, i + 1]: no integer division in this hot loop
+      while (b < 0) b += n;
+      while (b >= n) b -= n;
+    }
     win.valid[k] = pb.closed || (b >= 0 && b < n);
     if (!win.valid[k]) { win.block[k] = 0; continue; }
     const std::size_t bb = static_cast<std::size_t>(b);
