@@ -58,7 +58,7 @@ void solve_points(benchmark::State& state, const std::vector<P>& points, fair::K
   fair::Kappa_curve_options o;
   o.closed = true;
   o.weights = weights;
-  std::size_t iterations = 0, passes = 0, on_joins = 0;
+  std::size_t iterations = 0, passes = 0, on_joins = 0, beyond = 0;
   double residual = 0;
   bool converged = true;  // INTERIOR or ON_JOINS (the box-constrained solution)
   for (auto _ : state) {
@@ -67,6 +67,7 @@ void solve_points(benchmark::State& state, const std::vector<P>& points, fair::K
     passes = curve.report().refinement_passes;
     residual = curve.report().residual;
     on_joins = curve.report().points_on_joins.size();
+    beyond = curve.report().points_beyond_density_limit.size();
     converged = converged && curve.report().status != fair::Kappa_solve_status::UNSOLVED;
     benchmark::DoNotOptimize(curve.pieces().data());
   }
@@ -75,6 +76,7 @@ void solve_points(benchmark::State& state, const std::vector<P>& points, fair::K
   state.counters["converged"] = converged ? 1 : 0;
   state.counters["residual"] = residual;
   state.counters["on_joins"] = static_cast<double>(on_joins);
+  state.counters["beyond_limit"] = static_cast<double>(beyond);  // UNSOLVED: points beyond the density limit
   state.SetComplexityN(state.range(0));
 }
 

@@ -62,6 +62,9 @@ void check_curve(const fair::Kappa_curve_2<K>& c) {
     fair_fuzz::fuzz_fail("solved status with residual above the tolerance");
   check_indices(r.points_on_joins, n, "points_on_joins");
   check_indices(r.points_at_minima, n, "points_at_minima");
+  check_indices(r.points_beyond_density_limit, n, "points_beyond_density_limit");
+  if (r.status != fair::Kappa_solve_status::UNSOLVED && !r.points_beyond_density_limit.empty())
+    fair_fuzz::fuzz_fail("points beyond the density limit listed for a solved curve");
   for (const fair::Kappa_point_residual& p : r.worst_points) {
     if (p.point >= n) fair_fuzz::fuzz_fail("worst point index out of range");
     require_finite(p.residual, "worst point residual");

@@ -416,6 +416,30 @@ TEST(Kappa, CuspFromPointsMovingTogether) {
   }
 }
 
+// Dense samples of the logarithmic spiral r = exp(a/4), 0.05 rad apart: every point is beyond the
+// density limit (doc/kappa_existence.md, Sec. 7: t - 1/2 = -b / (3 da) = -1.67), so no solve is
+// INTERIOR; an UNSOLVED one lists the points by input index, all but the fixed ends and their
+// neighbours (no estimate there), and says so when printed.
+TEST(Kappa, DenseSamplesBeyondTheDensityLimitAreListed) {
+  std::vector<Pd> p;
+  for (int k = 0; k < 60; ++k) {
+    const double a = 0.05 * k, r = std::exp(a / 4);
+    p.push_back(Pd(r * std::cos(a), r * std::sin(a)));
+  }
+  EXPECT_NE(fair::Kappa_curve_2<Kd>(p).report().status, fair::Kappa_solve_status::INTERIOR);
+  fair::Kappa_curve_options o;
+  o.max_iterations = 0;
+  const fair::Kappa_curve_2<Kd> capped(p, o);
+  const fair::Kappa_solve_report& r = capped.report();
+  ASSERT_EQ(r.status, fair::Kappa_solve_status::UNSOLVED);
+  std::vector<std::size_t> expected;
+  for (std::size_t k = 2; k + 2 < p.size(); ++k) expected.push_back(k);
+  EXPECT_EQ(r.points_beyond_density_limit, expected);
+  std::ostringstream text;
+  text << r;
+  EXPECT_NE(text.str().find("56 points beyond the density limit"), std::string::npos) << text.str();
+}
+
 TEST(Kappa, NonConvergenceIsReportedOrThrown) {
   std::mt19937 g(5);
   const std::vector<Pd> p = random_star(g, 12, 1.0);
@@ -439,6 +463,9 @@ TEST(Kappa, NonConvergenceIsReportedOrThrown) {
   text << r;
   EXPECT_NE(text.str().find("unsolved"), std::string::npos) << text.str();
   EXPECT_NE(text.str().find("worst points"), std::string::npos) << text.str();
+  // A star's chords turn by more than 0.4 rad at its corners: sparse data, nothing beyond the
+  // density limit.
+  EXPECT_TRUE(r.points_beyond_density_limit.empty()) << r;
   EXPECT_LE(check_curve(c).interpolation, 1e-12);  // still a valid interpolating G1 curve
   EXPECT_FALSE(fair::certify(c).proves_outcome());
   o.throw_on_non_convergence = true;

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <new>
 #include <random>
 #include <utility>
@@ -929,6 +930,132 @@ TEST(KappaDensityStart, ColdSolveOfADenselySampledEllipse) {
     EXPECT_EQ(r.status, fair::Kappa_solve_status::INTERIOR) << "n = " << n << ": " << r;
     EXPECT_LE(r.iterations, density_start_iterations) << "n = " << n;
   }
+}
+
+// ------------------------------------------------------------------ density limit
+
+/// A curve in polar form r(a), with r' and r'' (analytic).
+struct Polar_curve {
+  std::function<double(double)> r, dr, ddr;
+  double x(double a) const { return r(a) * std::cos(a); }
+  double y(double a) const { return r(a) * std::sin(a); }
+  double speed(double a) const { return std::hypot(r(a), dr(a)); }  // ds/da
+  double abs_kappa(double a) const {
+    const double p = r(a), q = dr(a), u = ddr(a);
+    return std::abs(p * p + 2 * q * q - p * u) / std::pow(p * p + q * q, 1.5);
+  }
+};
+
+/// The density estimate of t at the sample at angle a of samples da apart, from the analytic
+/// curve (doc/kappa_existence.md, Sec. 7): the position between the midpoints of its intervals
+/// plus kappa_s / (3 kappa^3 h), h the mean interval; d|kappa|/ds by a central difference of the
+/// analytic |kappa|. An oracle independent of the chord-based estimate of the library.
+double analytic_density_estimate(const Polar_curve& c, double a, double da) {
+  const double before = c.speed(a - da / 2) * da, after = c.speed(a + da / 2) * da, h = (before + after) / 2;
+  const double e = 1e-6, k = c.abs_kappa(a);
+  const double ks = (c.abs_kappa(a + e) - c.abs_kappa(a - e)) / (2 * e) / c.speed(a);
+  return before / (before + after) + ks / (3 * k * k * k * h);
+}
+
+/// The open problem through the samples a_k = a0 + k da, k = 0..count-1, of c (the first and
+/// last are the fixed ends).
+Problem open_polar_samples(const Polar_curve& c, double a0, double da, std::size_t count) {
+  Problem pb;
+  pb.closed = false;
+  pb.sx = c.x(a0); pb.sy = c.y(a0);
+  pb.ex = c.x(a0 + da * static_cast<double>(count - 1)); pb.ey = c.y(a0 + da * static_cast<double>(count - 1));
+  for (std::size_t k = 1; k + 1 < count; ++k) {
+    pb.qx.push_back(c.x(a0 + da * static_cast<double>(k)));
+    pb.qy.push_back(c.y(a0 + da * static_cast<double>(k)));
+  }
+  pb.n = count - 2;
+  return pb;
+}
+
+/// The logarithmic spiral r = exp(b a): |kappa| = 1 / (b s), so kappa_s / (3 kappa^3 h) =
+/// -b / (3 kappa h) = -b / (3 da) exactly (the chords turn by da): beyond the density limit where
+/// da < about 2b/3, at every point at once.
+Polar_curve log_spiral(double b) {
+  return {[b](double a) { return std::exp(b * a); }, [b](double a) { return b * std::exp(b * a); },
+          [b](double a) { return b * b * std::exp(b * a); }};
+}
+
+// On the logarithmic spiral the estimate is known in closed form: every point is beyond the limit
+// for dense samples, none for sparse ones; an open curve's points next to its fixed ends have no
+// estimate (kappa_s needs both neighbours), and the list is of input point indices.
+TEST(KappaDensityLimit, LogarithmicSpiralByTheClosedForm) {
+  const double b = 0.25;
+  Kappa_solver_state st;
+  for (const double da : {0.05, 0.1, 0.14, 0.2, 0.3}) {
+    const std::size_t count = 40;
+    const Problem pb = open_polar_samples(log_spiral(b), 0.0, da, count);
+    st.resize(pb.n);
+    const double t = 1 / (1 + std::exp(b * da)) - b / (3 * da);  // before / (before + after) + shift
+    std::vector<std::size_t> expected;
+    if (t < 0 || t > 1)
+      for (std::size_t k = 2; k + 2 < count; ++k) expected.push_back(k);
+    EXPECT_EQ(points_beyond_density_limit(pb, st), expected) << "da = " << da << ", t = " << t;
+    std::vector<double> estimate;
+    density_estimates(pb, estimate);
+    for (std::size_t i = 1; i + 1 < pb.n; ++i) EXPECT_NEAR(estimate[i], t, 2e-3 + 0.02 * std::abs(t)) << "da = " << da;
+  }
+  // Pieces of weight w > 1 are hyperbola arcs, whose |kappa| falls off faster than a parabola's:
+  // the estimate is not conservative there, and they are not listed; w < 1 (ellipse arcs) are.
+  const Problem dense = open_polar_samples(log_spiral(b), 0.0, 0.05, 40);
+  st.resize(dense.n);
+  st.w.assign(dense.n, 1.5);
+  EXPECT_TRUE(points_beyond_density_limit(dense, st).empty());
+  st.w.assign(dense.n, 0.5);
+  EXPECT_EQ(points_beyond_density_limit(dense, st).size(), 36u);
+}
+
+// The curve of the dense-data benchmark, r = 1 + 0.3 sin 7a (14 inflections), sampled at 300
+// uniform angles: the library's estimate (from the chords only) lists the points that the
+// analytic estimate puts beyond the limit, and none that it puts well inside.
+TEST(KappaDensityLimit, InflectedCurveAgainstTheAnalyticEstimate) {
+  const Polar_curve c{[](double a) { return 1 + 0.3 * std::sin(7 * a); }, [](double a) { return 2.1 * std::cos(7 * a); },
+                      [](double a) { return -14.7 * std::sin(7 * a); }};
+  for (const std::size_t n : {300, 1000}) {
+    const double da = 2 * M_PI / static_cast<double>(n);
+    const Problem pb = closed_samples(n, [&](std::size_t i, double& x, double& y) {
+      x = c.x(da * static_cast<double>(i));
+      y = c.y(da * static_cast<double>(i));
+    });
+    Kappa_solver_state st;
+    st.resize(n);
+    const std::vector<std::size_t> listed = points_beyond_density_limit(pb, st);
+    std::size_t beyond = 0, ambiguous = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double t = analytic_density_estimate(c, da * static_cast<double>(i), da);
+      const bool is_listed = std::binary_search(listed.begin(), listed.end(), i);
+      // The turning kappa h of the chords at the point and its neighbours: no estimate above
+      // 0.4 rad (at n = 300 near the inward lobes, |kappa| = 28); within 0.05 of it either way.
+      double turning = 0;
+      for (const double a : {da * (static_cast<double>(i) - 1), da * static_cast<double>(i), da * (static_cast<double>(i) + 1)})
+        turning = std::max(turning, c.abs_kappa(a) * c.speed(a) * da);
+      if (turning > predicted_max_turning + 0.05) {
+        EXPECT_FALSE(is_listed) << "n = " << n << ", point " << i << ": turning " << turning;
+        continue;
+      }
+      if (turning > predicted_max_turning - 0.05) continue;
+      if (std::abs(t - 0.5) > 0.6) {
+        ++beyond;
+        EXPECT_TRUE(is_listed) << "n = " << n << ", point " << i << ": analytic t " << t;
+      } else if (std::abs(t - 0.5) < 0.4) {
+        EXPECT_FALSE(is_listed) << "n = " << n << ", point " << i << ": analytic t " << t;
+      } else {
+        ++ambiguous;
+      }
+    }
+    // Most of the curve is beyond the limit (doc/kappa_existence.md, Sec. 7: 84 % at 100 points).
+    EXPECT_GT(beyond, n / 2) << "n = " << n;
+    EXPECT_LT(ambiguous, n / 20) << "n = " << n;  // within 0.1 of the limit: either way
+  }
+  // A uniformly sampled circle has kappa_s = 0: nothing is beyond the limit, however dense.
+  const Problem circle = jittered_circle(2000, 0.0, 1);
+  Kappa_solver_state st;
+  st.resize(circle.n);
+  EXPECT_TRUE(points_beyond_density_limit(circle, st).empty());
 }
 
 } // namespace

@@ -85,6 +85,15 @@ struct Kappa_solve_report {
   /// UNSOLVED: up to worst_points_listed input points with the largest residuals, worst first.
   /// Empty otherwise.
   std::vector<Kappa_point_residual> worst_points;
+  /// UNSOLVED: the input points (increasing) where the data are denser than interior
+  /// kappa-curves allow (doc/kappa_existence.md, Sec. 7): the |kappa| of a conic piece falls off
+  /// quadratically from its maximum, so |kappa| continuity between points closer than about
+  /// (2/3) |dkappa/ds| / kappa^3 puts the maximum of the point's piece outside the piece. Estimated
+  /// from the data in O(n) (exact to first order in the turning of the chords, only where it is at
+  /// most 0.4 rad; conservative for weights <= 1, not made for pieces of weight > 1). The likely
+  /// cause of an UNSOLVED solve on dense samples of a smooth curve: such data need fewer points
+  /// (kappa-curves are a tool for sparse design points) or a spline. Empty otherwise.
+  std::vector<std::size_t> points_beyond_density_limit;
   double energy() const { return energy_interpolation + energy_curvature + energy_g2 + energy_weight; }
 
   friend std::ostream& operator<<(std::ostream& out, const Kappa_solve_report& r) {
@@ -105,6 +114,8 @@ struct Kappa_solve_report {
       out << ", worst points:";
       for (const Kappa_point_residual& p : r.worst_points) out << ' ' << p.point << " (" << p.residual << ')';
     }
+    if (!r.points_beyond_density_limit.empty())
+      out << ", " << r.points_beyond_density_limit.size() << " points beyond the density limit";
     return out << ", energy " << r.energy() << "}";
   }
 };

@@ -16,7 +16,9 @@
 #include <fair/io/svg.h>
 #include <fair/io/write_json.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -123,6 +125,7 @@ std::string curve_json(const Kappa_command_options& o, const fair::Kappa_curve_2
                          {"points_on_joins", r.points_on_joins},
                          {"points_at_minima", r.points_at_minima},
                          {"worst_points", worst},
+                         {"points_beyond_density_limit", r.points_beyond_density_limit},
                          {"converged", r.converged},  // deprecated: "status" == "interior"
                          {"iterations", r.iterations},
                          {"refinement_passes", r.refinement_passes},
@@ -164,8 +167,8 @@ std::string point_list(const std::vector<std::size_t>& points) {
   return s;
 }
 
-/// The line of an unsolved outcome: how far (the residual) and where (the worst points), and
-/// the points at a curvature minimum.
+/// The line of an unsolved outcome: how far (the residual) and where (the worst points), the
+/// points at a curvature minimum, and the points beyond the density limit (the likely cause).
 std::string unsolved_line(const fair::Kappa_curve_2<fair_curves::Kernel>& curve) {
   using namespace fair_curves;
   const fair::Kappa_solve_report& r = curve.report();
@@ -180,6 +183,14 @@ std::string unsolved_line(const fair::Kappa_curve_2<fair_curves::Kernel>& curve)
   }
   if (!r.points_at_minima.empty())
     line << "at a curvature minimum, not a maximum:" << point_list(r.points_at_minima);
+  if (!r.points_beyond_density_limit.empty()) {
+    // Thousands of points on dense data: the count and the first few (all of them in the JSON).
+    const std::vector<std::size_t>& d = r.points_beyond_density_limit;
+    const std::size_t shown = std::min<std::size_t>(d.size(), 8);
+    line << "; " << d.size() << " of " << curve.points().size()
+         << " points are denser than kappa-curves allow (doc/kappa_existence.md, Sec. 7; use fewer points):"
+         << point_list({d.begin(), d.begin() + static_cast<std::ptrdiff_t>(shown)}) << (shown < d.size() ? " ..." : "");
+  }
   return line.str();
 }
 

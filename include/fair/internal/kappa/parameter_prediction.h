@@ -34,6 +34,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace fair {
@@ -58,22 +59,23 @@ inline void neighbour_points(const Problem& pb, std::size_t i, double& px, doubl
   else { nx = pb.ex; ny = pb.ey; }
 }
 
-/// The t_i of the density estimate (file comment), one per block. Returns max |t_i - 1/2|;
-/// 0, with every t_i = 1/2, when no prediction is made: fewer than 3 blocks (kappa_s needs
-/// both neighbours' curvatures), chords turning by more than predicted_max_turning at some
-/// point (not a dense sample), or a predicted t_i outside [predicted_parameter_margin,
-/// 1 - predicted_parameter_margin] (beyond the density limit of Sec. 7: no interior root to
-/// start near; near-straight stretches, where kappa is tiny, also end here).
+/// The density estimate of t_i (file comment) at every block, NaN where none is made: a
+/// coincident neighbour, an open curve's end block (kappa_s needs the curvature on both sides),
+/// chords turning by more than predicted_max_turning at the block or a neighbour (the estimate is
+/// first order in the turning), or fewer than 3 blocks. Returns false when the chords turn by more
+/// than predicted_max_turning at some point: the data are not a dense sample as a whole.
 /// Scale-free: curvatures enter only as kappa h = 2 sin(turning) h / chord, from unit chord
 /// directions, so spacings of 1e-300 give the same t_i as spacings of 1.
-inline double predicted_parameters(const Problem& pb, std::vector<double>& t) {
+inline bool density_estimates(const Problem& pb, std::vector<double>& t) {
   const std::size_t n = pb.n;
-  t.assign(n, 0.5);
-  if (n < 3) return 0;
+  t.assign(n, std::numeric_limits<double>::quiet_NaN());
+  if (n < 3) return true;
   // Per block: the intervals to its neighbours, the chord between them, the sine of the
-  // turning between the two unit chord directions; usable = no coincident neighbour.
+  // turning between the two unit chord directions; usable = no coincident neighbour and a
+  // turning of at most predicted_max_turning.
   std::vector<double> before(n), after(n), chord(n), sine(n);
   std::vector<char> usable(n, 0);
+  bool dense = true;
   for (std::size_t i = 0; i < n; ++i) {
     double px, py, nx, ny;
     neighbour_points(pb, i, px, py, nx, ny);
@@ -82,16 +84,17 @@ inline double predicted_parameters(const Problem& pb, std::vector<double>& t) {
     if (!(a > 0 && b > 0 && c > 0 && std::isfinite(a + b + c))) continue;
     const double ux = (x - px) / a, uy = (y - py) / a, vx = (nx - x) / b, vy = (ny - y) / b;
     const double cross = ux * vy - uy * vx, dot = ux * vx + uy * vy;
-    if (!(std::atan2(std::abs(cross), dot) <= predicted_max_turning)) return 0;
+    if (!(std::atan2(std::abs(cross), dot) <= predicted_max_turning)) {
+      dense = false;
+      continue;
+    }
     before[i] = a;
     after[i] = b;
     chord[i] = c;
     sine[i] = std::abs(cross);
     usable[i] = 1;
   }
-  double spread = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    // kappa_s needs the curvature on both sides: an open curve's end blocks keep 1/2.
     if (!pb.closed && (i == 0 || i + 1 == n)) continue;
     const std::size_t prev = i == 0 ? n - 1 : i - 1, next = i + 1 == n ? 0 : i + 1;
     if (!usable[i] || !usable[prev] || !usable[next]) continue;
@@ -103,15 +106,55 @@ inline double predicted_parameters(const Problem& pb, std::vector<double>& t) {
     const double h = 0.5 * (before[i] + after[i]);
     auto kappa_h = [&](std::size_t j) { return 2 * sine[j] * (h / chord[j]); };
     const double k = kappa_h(i);
-    const double ti = before[i] / (before[i] + after[i]) + (kappa_h(next) - kappa_h(prev)) / (6 * k * k * k);
+    t[i] = before[i] / (before[i] + after[i]) + (kappa_h(next) - kappa_h(prev)) / (6 * k * k * k);
+  }
+  return dense;
+}
+
+/// The t_i of the density estimate, one per block, as a start for the solver. Returns
+/// max |t_i - 1/2|; 0, with every t_i = 1/2, when no prediction is made: the data are not a dense
+/// sample as a whole (density_estimates), or some estimated t_i lies outside
+/// [predicted_parameter_margin, 1 - predicted_parameter_margin] (beyond the density limit of
+/// Sec. 7: no interior root to start near; near-straight stretches, where kappa is tiny, also end
+/// here). Blocks without an estimate keep 1/2.
+inline double predicted_parameters(const Problem& pb, std::vector<double>& t) {
+  std::vector<double> estimate;
+  const bool dense = density_estimates(pb, estimate);
+  t.assign(pb.n, 0.5);
+  if (!dense) return 0;
+  double spread = 0;
+  for (std::size_t i = 0; i < pb.n; ++i) {
+    const double ti = estimate[i];
+    if (std::isnan(ti)) continue;
     if (!(ti >= predicted_parameter_margin && ti <= 1 - predicted_parameter_margin)) {
-      t.assign(n, 0.5);
+      t.assign(pb.n, 0.5);
       return 0;
     }
     t[i] = ti;
     spread = std::max(spread, std::abs(ti - 0.5));
   }
   return spread;
+}
+
+/// The input points (increasing indices) where the data are denser than interior kappa-curves
+/// allow (doc/kappa_existence.md, Sec. 7): the density estimate puts the curvature maximum of the
+/// point's piece outside the piece (t_i outside [0, 1]). The estimate is that of parabolic pieces;
+/// a piece of weight w < 1 is an ellipse arc, whose |kappa| falls off more slowly from a vertex
+/// (by the factor e^2 < 1, Sec. 7, "Pieces of weight w != 1"), so its t_i lies even further out: the list is conservative
+/// for w_i <= 1. Pieces of weight w_i > 1 (hyperbolas, which fall off faster) are not listed.
+/// Only points where the data are locally a dense sample (density_estimates) are assessed.
+/// O(n).
+inline std::vector<std::size_t> points_beyond_density_limit(const Problem& pb, const Kappa_solver_state& st) {
+  std::vector<double> estimate;
+  density_estimates(pb, estimate);
+  std::vector<std::size_t> points;
+  for (std::size_t i = 0; i < pb.n; ++i) {
+    const double ti = estimate[i];
+    if (std::isnan(ti) || (ti >= 0 && ti <= 1)) continue;
+    if (i < st.w.size() && !(st.w[i] <= 1)) continue;
+    points.push_back(pb.point_index(i));
+  }
+  return points;
 }
 
 } // namespace kappa

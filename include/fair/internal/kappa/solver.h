@@ -809,7 +809,8 @@ inline bool not_at_piece_maximum(const Problem& pb, const Kappa_solver_state& st
 
 /// The outcome of a solve whose per-block residuals are F (4 per block, as evaluate()) and, with
 /// automatic weights, weight_error (|w_i - eq. 16|, per block; empty otherwise): status, points
-/// at minima, worst points, and the deprecated aliases converged and boundary_points.
+/// at minima, worst points, the points beyond the density limit, and the deprecated aliases
+/// converged and boundary_points.
 inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solve_settings& settings,
                      const std::vector<double>& F, const std::vector<double>& weight_error, Kappa_solve_report& res) {
   res.bounds_active = bounds_active(pb, st, &res.points_on_joins);
@@ -826,7 +827,9 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
   res.converged = res.status == Kappa_solve_status::INTERIOR;
   res.boundary_points = res.points_on_joins;
   res.worst_points.clear();
+  res.points_beyond_density_limit.clear();
   if (res.status != Kappa_solve_status::UNSOLVED) return;
+  res.points_beyond_density_limit = points_beyond_density_limit(pb, st);
   std::vector<Kappa_point_residual> all(pb.n);
   for (std::size_t i = 0; i < pb.n; ++i) {
     double r = weight_error.empty() ? 0.0 : weight_error[i];
