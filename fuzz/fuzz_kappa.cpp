@@ -65,6 +65,10 @@ void check_curve(const fair::Kappa_curve_2<K>& c) {
   check_indices(r.points_beyond_density_limit, n, "points_beyond_density_limit");
   if (r.status != fair::Kappa_solve_status::UNSOLVED && !r.points_beyond_density_limit.empty())
     fair_fuzz::fuzz_fail("points beyond the density limit listed for a solved curve");
+  // An open curve has no estimate at its fixed ends nor at the points next to them.
+  if (!c.is_closed())
+    for (const std::size_t p : r.points_beyond_density_limit)
+      if (p < 2 || p + 2 >= n) fair_fuzz::fuzz_fail("an open curve's end point listed beyond the density limit");
   for (const fair::Kappa_point_residual& p : r.worst_points) {
     if (p.point >= n) fair_fuzz::fuzz_fail("worst point index out of range");
     require_finite(p.residual, "worst point residual");

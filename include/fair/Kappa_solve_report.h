@@ -89,8 +89,9 @@ struct Kappa_solve_report {
   /// kappa-curves allow (doc/kappa_existence.md, Sec. 7): the |kappa| of a conic piece falls off
   /// quadratically from its maximum, so |kappa| continuity between points closer than about
   /// (2/3) |dkappa/ds| / kappa^3 puts the maximum of the point's piece outside the piece. Estimated
-  /// from the data in O(n) (exact to first order in the turning of the chords, only where it is at
-  /// most 0.4 rad; conservative for weights <= 1, not made for pieces of weight > 1). The likely
+  /// from the data in O(n), to first order, only where the chords turn by at most 0.4 rad and |kappa|
+  /// changes by at most 25 % to either neighbour (not near inflections or on straight runs), and only
+  /// where the point's piece and its neighbours have weights <= 1 (there it is conservative). The likely
   /// cause of an UNSOLVED solve on dense samples of a smooth curve: such data need fewer points
   /// (kappa-curves are a tool for sparse design points) or a spline. Empty otherwise.
   std::vector<std::size_t> points_beyond_density_limit;
@@ -115,7 +116,8 @@ struct Kappa_solve_report {
       for (const Kappa_point_residual& p : r.worst_points) out << ' ' << p.point << " (" << p.residual << ')';
     }
     if (!r.points_beyond_density_limit.empty())
-      out << ", " << r.points_beyond_density_limit.size() << " points beyond the density limit";
+      out << ", " << r.points_beyond_density_limit.size()
+          << (r.points_beyond_density_limit.size() == 1 ? " point" : " points") << " beyond the density limit";
     return out << ", energy " << r.energy() << "}";
   }
 };

@@ -187,8 +187,8 @@ std::string unsolved_line(const fair::Kappa_curve_2<fair_curves::Kernel>& curve)
     // Thousands of points on dense data: the count and the first few (all of them in the JSON).
     const std::vector<std::size_t>& d = r.points_beyond_density_limit;
     const std::size_t shown = std::min<std::size_t>(d.size(), 8);
-    line << "; " << d.size() << " of " << curve.points().size()
-         << " points are denser than kappa-curves allow (doc/kappa_existence.md, Sec. 7; use fewer points):"
+    line << "; " << d.size() << " of " << curve.points().size() << (d.size() == 1 ? " points is" : " points are")
+         << " denser than kappa-curves allow (doc/kappa_existence.md, Sec. 7; use fewer points):"
          << point_list({d.begin(), d.begin() + static_cast<std::ptrdiff_t>(shown)}) << (shown < d.size() ? " ..." : "");
   }
   return line.str();

@@ -59,22 +59,33 @@ inline void neighbour_points(const Problem& pb, std::size_t i, double& px, doubl
   else { nx = pb.ex; ny = pb.ey; }
 }
 
-/// The density estimate of t_i (file comment) at every block, NaN where none is made: a
+/// The relative change of |kappa| from a point to either neighbour, |kappa_j - kappa| / kappa, up to
+/// which the density estimate is taken at its word (it is first order in that change). Beyond it --
+/// next to an inflection (where |kappa| has a kink that a central difference hides), on a straight
+/// run where kappa is rounding noise, where a straight run meets an arc -- it says nothing.
+constexpr double density_estimate_max_relative_step = 0.25;
+
+/// The density estimate of t_i (file comment) at every block, NaN where none is attempted: a
 /// coincident neighbour, an open curve's end block (kappa_s needs the curvature on both sides),
 /// chords turning by more than predicted_max_turning at the block or a neighbour (the estimate is
-/// first order in the turning), or fewer than 3 blocks. Returns false when the chords turn by more
-/// than predicted_max_turning at some point: the data are not a dense sample as a whole.
+/// first order in the turning), or fewer than 3 blocks; +inf where it is attempted but undefined
+/// (kappa = 0 on both sides: 0/0). If `first_order` is given, it flags the blocks whose estimate
+/// is within its domain: a turning above rounding noise at the block and both neighbours, and a
+/// relative change of |kappa| to either neighbour of at most density_estimate_max_relative_step.
+/// Returns false when the chords turn by more than
+/// predicted_max_turning at some point: the data are not a dense sample as a whole.
 /// Scale-free: curvatures enter only as kappa h = 2 sin(turning) h / chord, from unit chord
 /// directions, so spacings of 1e-300 give the same t_i as spacings of 1.
-inline bool density_estimates(const Problem& pb, std::vector<double>& t) {
+inline bool density_estimates(const Problem& pb, std::vector<double>& t, std::vector<char>* first_order = nullptr) {
   const std::size_t n = pb.n;
   t.assign(n, std::numeric_limits<double>::quiet_NaN());
+  if (first_order != nullptr) first_order->assign(n, 0);
   if (n < 3) return true;
   // Per block: the intervals to its neighbours, the chord between them, the sine of the
   // turning between the two unit chord directions; usable = no coincident neighbour and a
   // turning of at most predicted_max_turning.
   std::vector<double> before(n), after(n), chord(n), sine(n);
-  std::vector<char> usable(n, 0);
+  std::vector<char> usable(n, 0), noise(n, 0);
   bool dense = true;
   for (std::size_t i = 0; i < n; ++i) {
     double px, py, nx, ny;
@@ -93,6 +104,10 @@ inline bool density_estimates(const Problem& pb, std::vector<double>& t) {
     chord[i] = c;
     sine[i] = std::abs(cross);
     usable[i] = 1;
+    // The unit chord directions carry rounding errors of about eps |coordinates| / interval: a
+    // turning below a few dozen of those is noise, not curvature (a straight run).
+    const double size = std::max({std::abs(x), std::abs(y), std::abs(px), std::abs(py), std::abs(nx), std::abs(ny)});
+    noise[i] = sine[i] <= 64 * std::numeric_limits<double>::epsilon() * size / std::min(a, b);
   }
   for (std::size_t i = 0; i < n; ++i) {
     if (!pb.closed && (i == 0 || i + 1 == n)) continue;
@@ -105,8 +120,13 @@ inline bool density_estimates(const Problem& pb, std::vector<double>& t) {
     // kappa_s / (3 kappa^3 h) = (K_next - K_prev) / (6 K^3) with K = kappa h.
     const double h = 0.5 * (before[i] + after[i]);
     auto kappa_h = [&](std::size_t j) { return 2 * sine[j] * (h / chord[j]); };
-    const double k = kappa_h(i);
-    t[i] = before[i] / (before[i] + after[i]) + (kappa_h(next) - kappa_h(prev)) / (6 * k * k * k);
+    const double k = kappa_h(i), k_prev = kappa_h(prev), k_next = kappa_h(next);
+    const double ti = before[i] / (before[i] + after[i]) + (k_next - k_prev) / (6 * k * k * k);
+    t[i] = std::isnan(ti) ? std::numeric_limits<double>::infinity() : ti;
+    if (first_order != nullptr)
+      (*first_order)[i] = !noise[prev] && !noise[i] && !noise[next] &&
+                          std::abs(k_next - k) <= density_estimate_max_relative_step * k &&
+                          std::abs(k - k_prev) <= density_estimate_max_relative_step * k;
   }
   return dense;
 }
@@ -137,21 +157,24 @@ inline double predicted_parameters(const Problem& pb, std::vector<double>& t) {
 }
 
 /// The input points (increasing indices) where the data are denser than interior kappa-curves
-/// allow (doc/kappa_existence.md, Sec. 7): the density estimate puts the curvature maximum of the
-/// point's piece outside the piece (t_i outside [0, 1]). The estimate is that of parabolic pieces;
-/// a piece of weight w < 1 is an ellipse arc, whose |kappa| falls off more slowly from a vertex
-/// (by the factor e^2 < 1, Sec. 7, "Pieces of weight w != 1"), so its t_i lies even further out: the list is conservative
-/// for w_i <= 1. Pieces of weight w_i > 1 (hyperbolas, which fall off faster) are not listed.
-/// Only points where the data are locally a dense sample (density_estimates) are assessed.
-/// O(n).
+/// allow (doc/kappa_existence.md, Sec. 7): the density estimate, within its domain (first_order of
+/// density_estimates: away from inflections and straight runs), puts the curvature maximum of the
+/// point's piece outside the piece (t_i outside [0, 1]). The estimate is that of parabolic pieces.
+/// It is conservative where the piece and both neighbours have weights <= 1 (ellipse arcs, whose
+/// |kappa| falls off from a vertex more slowly, Sec. 7, "Pieces of weight w != 1"); other points
+/// are not listed. O(n).
 inline std::vector<std::size_t> points_beyond_density_limit(const Problem& pb, const Kappa_solver_state& st) {
   std::vector<double> estimate;
-  density_estimates(pb, estimate);
+  std::vector<char> first_order;
+  density_estimates(pb, estimate, &first_order);
+  const std::size_t n = pb.n;
+  auto weight_at_most_1 = [&](std::size_t j) { return j >= st.w.size() || st.w[j] <= 1; };
   std::vector<std::size_t> points;
-  for (std::size_t i = 0; i < pb.n; ++i) {
-    const double ti = estimate[i];
-    if (std::isnan(ti) || (ti >= 0 && ti <= 1)) continue;
-    if (i < st.w.size() && !(st.w[i] <= 1)) continue;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!first_order[i] || (estimate[i] >= 0 && estimate[i] <= 1)) continue;
+    // first_order[i] implies both neighbours exist (closed: cyclic).
+    const std::size_t prev = i == 0 ? n - 1 : i - 1, next = i + 1 == n ? 0 : i + 1;
+    if (!weight_at_most_1(prev) || !weight_at_most_1(i) || !weight_at_most_1(next)) continue;
     points.push_back(pb.point_index(i));
   }
   return points;
