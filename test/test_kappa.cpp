@@ -440,6 +440,34 @@ TEST(Kappa, DenseSamplesBeyondTheDensityLimitAreListed) {
   EXPECT_NE(text.str().find("56 points beyond the density limit"), std::string::npos) << text.str();
 }
 
+// Levenberg-Marquardt stops a crawl far from a root (lm_progress_window iterations together
+// gaining less than lm_progress_gain of the cost) instead of spending the Jacobian cap on steps
+// that each gain a little over lm_stall_gain. The points of a session-11 fuzz finding (open,
+// weights 1/4, clusters at 1e-8 beside points at 1e2, repeats): 186 Jacobians before the rule,
+// 1.4-1.6 s under ASan+UBSan; the outcome (unsolved, |kappa| mismatch 1) is the same.
+TEST(Kappa, HopelessCrawlStopsEarly) {
+  const double xy[][2] = {{41, 0}, {15, -1}, {1.4739878624152854e-08, 2.1864544519090913e-09}, {6, 0}, {0, 8}, {41, 0},
+                          {41, 3}, {15, 32}, {0, -10}, {35, -60}, {0, -0.0}, {0, 7}, {83, 116}, {0, -10}, {8, 41},
+                          {-1.0536712127723507e-08, 1.0536712127723509e-08}, {6, 0}, {15, 32}, {0, -10}, {35, -60},
+                          {0, -0.0}, {0, 7}, {83, 116}, {35, -60}, {99, 35}, {116, 105},
+                          {-1.3470490174344828e-08, 6.3710673664552276e-09}, {3, -10},
+                          {1.0536712127723509e-08, 1.0536712127723507e-08}, {0, 0}, {41, 0}, {0, 122}, {32, 0}, {6, 3},
+                          {15, 32}, {41, 3}, {1.4901161193847656e-08, 0}, {-75, -68.5}, {-256.24999989196658, -18.75},
+                          {6, 3}, {-9.9999999999999999e-300, 3.0000000000000002e-300},
+                          {1.0536712127723509e-08, 1.0536712127723507e-08}, {0, 0}, {-1, -7}, {1.4901161193847656e-08, 0},
+                          {0, -10}, {0, 6}, {9.8781676197407891e-09, 9.8781676197407874e-09}, {41, 3},
+                          {1.4901161193847656e-08, 0}, {15, -1}, {0, 0}};
+  std::vector<Pd> q;
+  for (const auto& p : xy) q.emplace_back(p[0], p[1]);
+  fair::Kappa_curve_options opt;
+  opt.weights = fair::Kappa_weights::FIXED;
+  opt.fixed_weights.assign(q.size(), 0.25);
+  const fair::Kappa_curve_2<Kd> c(q, opt);
+  EXPECT_EQ(c.report().status, fair::Kappa_solve_status::UNSOLVED) << c.report();
+  EXPECT_LE(c.report().iterations, 130u) << c.report();
+  EXPECT_GT(c.report().residual, 0.5) << c.report();
+}
+
 TEST(Kappa, NonConvergenceIsReportedOrThrown) {
   std::mt19937 g(5);
   const std::vector<Pd> p = random_star(g, 12, 1.0);

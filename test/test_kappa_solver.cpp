@@ -1112,3 +1112,4 @@ TEST(KappaDensityLimit, InflectedCurveAgainstTheAnalyticEstimate) {
 }
 
 } // namespace
+

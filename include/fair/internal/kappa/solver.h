@@ -77,6 +77,11 @@ constexpr std::size_t lm_polish_iterations = 2;
 /// than lm_stall_gain of the cost: no useful decrease left at this precision.
 constexpr std::size_t lm_stall_steps = 30;
 constexpr double lm_stall_gain = 1e-3;
+/// Levenberg-Marquardt also stalls when lm_progress_window iterations together gain less than
+/// lm_progress_gain of the cost (a crawl whose steps gain just over lm_stall_gain, far from a
+/// root: fuzz findings of session 11 spent their 200 Jacobians so).
+constexpr std::size_t lm_progress_window = 25;
+constexpr double lm_progress_gain = 0.05;
 /// Levenberg-Marquardt: initial damping, near Gauss-Newton (the refined start is close).
 constexpr double lm_initial_damping = 1e-8;
 /// Levenberg-Marquardt: floor of Marquardt's diagonal scaling relative to its largest entry
@@ -405,11 +410,16 @@ inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, con
   // (lm_stall_steps steps each gaining < lm_stall_gain): see the constants above.
   std::size_t polish = 0, stalled = 0;
   std::size_t iterations = 0;
+  std::vector<double> cost_history;  // cost before each iteration: the window of lm_progress_window
   while (iterations < max_iterations && std::isfinite(cost)) {
     if (fmax <= settings.tolerance) {
       if (polish >= lm_polish_iterations || fmax <= polish_fraction * settings.tolerance) break;
       ++polish;
     }
+    if (cost_history.size() >= lm_progress_window &&
+        cost > (1 - lm_progress_gain) * cost_history[cost_history.size() - lm_progress_window])
+      break;
+    cost_history.push_back(cost);
     ++iterations;
     ++res.iterations;
     assemble_normal_equations(pb, st, chol, g, h, range, active_set);
