@@ -398,6 +398,29 @@ TEST(Kappa, HugeAndTinyCoordinatesScale) {
   }
 }
 
+// Coordinates at -DBL_MAX (fuzz finding regress-overflow-point-near-dbl-max, closed, automatic
+// weights): the control points and their differences were finite, but point(t) sums the weighted
+// control points before dividing and gave -inf at t = 1/4. The curve is refused with a typed
+// error naming the overflow, or every point it evaluates is finite.
+TEST(Kappa, CoordinatesAtTheTopOfTheDoubleRange) {
+  const double M = std::numeric_limits<double>::max();
+  const std::vector<Pd> q = {Pd(-M, 1.4495639386977716e-307), Pd(-1.7976930348623157e+308, 1.4495639386977716e-307),
+                             Pd(-M, 4.9406564584124657e-24), Pd(-M, 1.4495639386977716e-307),
+                             Pd(-M, 1.7998052140761564e+290)};
+  fair::Kappa_curve_options o;
+  o.closed = true;
+  o.weights = fair::Kappa_weights::AUTOMATIC;
+  try {
+    const fair::Kappa_curve_2<Kd> c(q, o);
+    for (std::size_t j = 0; j < c.number_of_pieces(); ++j)
+      for (const double t : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+        EXPECT_TRUE(std::isfinite(c.piece(j).point(t).x()) && std::isfinite(c.piece(j).point(t).y())) << j << " " << t;
+      }
+  } catch (const fair::Invalid_input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("overflow double"), std::string::npos) << e.what();
+  }
+}
+
 // Fig. 9: moving the 2nd and 4th points together creates a cusp at an input point; the curve
 // stays valid (finite, interpolating, G1) all the way.
 TEST(Kappa, CuspFromPointsMovingTogether) {

@@ -72,11 +72,20 @@ std::vector<Rational_quadratic_bezier_2<K>> assemble_pieces(const Problem& pb, c
     const double dy = CGAL::to_double(b.y()) - CGAL::to_double(a.y());
     return std::isfinite(factor * dx) && std::isfinite(factor * dy);
   };
+  // And point(t) sums the weighted control points before dividing by W(t) (Rational_quadratic_
+  // bezier_2): the numerator is at most max(1, w) times the largest coordinate, so coordinates
+  // within a factor 2 max(1, w) of DBL_MAX gave an infinite point of a finite piece (fuzz finding
+  // regress-overflow-point-near-dbl-max: x = -DBL_MAX, w > 1).
+  auto sums_finite = [](const Point_2& p, double factor) {
+    return std::isfinite(factor * CGAL::to_double(p.x())) && std::isfinite(factor * CGAL::to_double(p.y()));
+  };
   for (std::size_t j = 0; j < n; ++j) {
     const double w = st.w[j];
     const double spread = (std::isfinite(w) && w > 0) ? std::max(w, 1 / w) : 1.0;
     const double factor = 8 * spread * spread;
-    if (!finite(P[j]) || !finite(E[j]) || !finite(E[j + 1]) || !differences_finite(E[j], P[j], factor) ||
+    const double reach = 2 * std::max(1.0, spread);
+    if (!finite(P[j]) || !finite(E[j]) || !finite(E[j + 1]) || !sums_finite(P[j], reach) ||
+        !sums_finite(E[j], reach) || !sums_finite(E[j + 1], reach) || !differences_finite(E[j], P[j], factor) ||
         !differences_finite(P[j], E[j + 1], factor) || !differences_finite(E[j], E[j + 1], factor)) {
       const Point_2& Q = q[pb.point_index(j)];
       throw Invalid_input_error(message("Kappa_curve_2: the control points of the piece through point ",
