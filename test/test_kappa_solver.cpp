@@ -1112,4 +1112,3 @@ TEST(KappaDensityLimit, InflectedCurveAgainstTheAnalyticEstimate) {
 }
 
 } // namespace
-

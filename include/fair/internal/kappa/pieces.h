@@ -57,9 +57,14 @@ std::vector<Rational_quadratic_bezier_2<K>> assemble_pieces(const Problem& pb, c
   const typename K::Orientation_2 orient = K().orientation_2_object();
   // Coordinates near the top of the double range: centre + scale * p can overflow even though
   // the solver's normalised values are finite. A non-finite point must not reach the kernel's
-  // predicates (EPICK's exact fallback cannot represent it; found by fuzzing).
-  auto finite = [](const Point_2& p) {
-    return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y()));
+  // predicates (EPICK's exact fallback cannot represent it; found by fuzzing). And point(t) sums
+  // the weighted control points before dividing by W(t) (Rational_quadratic_bezier_2): the
+  // numerator is at most max(1, w) times the largest coordinate, so finite coordinates within a
+  // factor 2 max(1, w) of DBL_MAX still gave an infinite point of the piece (fuzz finding
+  // regress-overflow-point-near-dbl-max: x = -DBL_MAX, w > 1). One check covers both: every
+  // coordinate times `reach` >= 2 is finite.
+  auto finite_within = [](const Point_2& p, double reach) {
+    return std::isfinite(reach * CGAL::to_double(p.x())) && std::isfinite(reach * CGAL::to_double(p.y()));
   };
   // Finite control points can still have differences beyond double (coordinates of both signs
   // near DBL_MAX; fuzz finding huge-coordinates-derivative-*): then the derivative of the piece
@@ -72,20 +77,13 @@ std::vector<Rational_quadratic_bezier_2<K>> assemble_pieces(const Problem& pb, c
     const double dy = CGAL::to_double(b.y()) - CGAL::to_double(a.y());
     return std::isfinite(factor * dx) && std::isfinite(factor * dy);
   };
-  // And point(t) sums the weighted control points before dividing by W(t) (Rational_quadratic_
-  // bezier_2): the numerator is at most max(1, w) times the largest coordinate, so coordinates
-  // within a factor 2 max(1, w) of DBL_MAX gave an infinite point of a finite piece (fuzz finding
-  // regress-overflow-point-near-dbl-max: x = -DBL_MAX, w > 1).
-  auto sums_finite = [](const Point_2& p, double factor) {
-    return std::isfinite(factor * CGAL::to_double(p.x())) && std::isfinite(factor * CGAL::to_double(p.y()));
-  };
   for (std::size_t j = 0; j < n; ++j) {
     const double w = st.w[j];
     const double spread = (std::isfinite(w) && w > 0) ? std::max(w, 1 / w) : 1.0;
     const double factor = 8 * spread * spread;
     const double reach = 2 * std::max(1.0, spread);
-    if (!finite(P[j]) || !finite(E[j]) || !finite(E[j + 1]) || !sums_finite(P[j], reach) ||
-        !sums_finite(E[j], reach) || !sums_finite(E[j + 1], reach) || !differences_finite(E[j], P[j], factor) ||
+    if (!finite_within(P[j], reach) || !finite_within(E[j], reach) || !finite_within(E[j + 1], reach) ||
+        !differences_finite(E[j], P[j], factor) ||
         !differences_finite(P[j], E[j + 1], factor) || !differences_finite(E[j], E[j + 1], factor)) {
       const Point_2& Q = q[pb.point_index(j)];
       throw Invalid_input_error(message("Kappa_curve_2: the control points of the piece through point ",
