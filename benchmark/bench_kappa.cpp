@@ -68,7 +68,7 @@ void solve_points(benchmark::State& state, const std::vector<P>& points, fair::K
     residual = curve.report().residual;
     on_joins = curve.report().points_on_joins.size();
     beyond = curve.report().points_beyond_density_limit.size();
-    converged = converged && curve.report().status != fair::Kappa_solve_status::UNSOLVED;
+    converged = converged && curve.report().status != fair::Kappa_curve_status::UNSOLVED;
     benchmark::DoNotOptimize(curve.pieces().data());
   }
   state.counters["jacobians"] = static_cast<double>(iterations);
@@ -162,7 +162,7 @@ void BM_kappa_warm_resolve_join_change_1000(benchmark::State& state) {
     curve.move_point(500, flip ? a : b);
     flip = !flip;
     warm = warm && curve.report().warm_started;
-    changed = changed && curve.report().status == (flip ? fair::Kappa_solve_status::ON_JOINS : fair::Kappa_solve_status::INTERIOR);
+    changed = changed && curve.report().status == (flip ? fair::Kappa_curve_status::ON_JOINS : fair::Kappa_curve_status::INTERIOR);
   }
   state.counters["warm"] = warm ? 1 : 0;
   state.counters["joins_changed"] = changed ? 1 : 0;

@@ -76,7 +76,7 @@ void BM_kappa_refine_to_1e3(benchmark::State& state) {
   std::size_t passes = 0;
   for (auto _ : state) {
     fair::Kappa_solver_state st;
-    fair::Kappa_solve_report res;
+    fair::Kappa_curve_report res;
     kp::initial_guess(pb, st);
     benchmark::DoNotOptimize(kp::refine(pb, st, 60, 1e-3, res));
     passes = res.refinement_passes;

@@ -29,16 +29,16 @@ int main() {
   options.weights = fair::Kappa_weights::AUTOMATIC;
   fair::Kappa_curve_2<K> curve(star, options);
   std::cout << "cold: " << curve.report() << '\n';
-  if (curve.report().status != fair::Kappa_solve_status::INTERIOR) return 1;
+  if (curve.report().status != fair::Kappa_curve_status::INTERIOR) return 1;
 
   // Drag point 3 outwards in small steps, as a user would.
   for (int step = 1; step <= 5; ++step) {
     const double s = 1 + 0.02 * step;
     curve.move_point(3, Point_2(s * star[3].x(), s * star[3].y()));
-    const fair::Kappa_solve_report& r = curve.report();
+    const fair::Kappa_curve_report& r = curve.report();
     std::cout << "drag " << step << ": warm " << r.warm_started << ", Jacobians " << r.iterations
               << ", residual " << r.residual << ", piece 3 weight " << curve.piece(3).weight() << '\n';
-    if (r.status != fair::Kappa_solve_status::INTERIOR || !r.warm_started) return 1;
+    if (r.status != fair::Kappa_curve_status::INTERIOR || !r.warm_started) return 1;
   }
 
   // Open data without an interior solution: the first interior point can only be interpolated on
@@ -52,7 +52,7 @@ int main() {
   std::cout << "open: " << open.report().status << ", points on a join:";
   for (const std::size_t i : open.report().points_on_joins) std::cout << ' ' << i;
   std::cout << '\n';
-  return open.report().status == fair::Kappa_solve_status::ON_JOINS &&
+  return open.report().status == fair::Kappa_curve_status::ON_JOINS &&
                  open.report().points_on_joins == std::vector<std::size_t>{1}
              ? 0
              : 1;

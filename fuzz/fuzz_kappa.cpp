@@ -39,7 +39,7 @@ void describe(const fair::Kappa_curve_2<K>& c) {
 
 void check_curve(const fair::Kappa_curve_2<K>& c) {
   describe(c);
-  const fair::Kappa_solve_report& r = c.report();
+  const fair::Kappa_curve_report& r = c.report();
   const std::size_t n = c.points().size();
   if (c.number_of_pieces() != (c.is_closed() ? n : n - 2)) fair_fuzz::fuzz_fail("wrong number of pieces");
   fair_fuzz::check_pieces(c.pieces());
@@ -53,17 +53,17 @@ void check_curve(const fair::Kappa_curve_2<K>& c) {
                             r.weight_residual, r.energy_interpolation, r.energy_curvature, r.energy_g2,
                             r.energy_weight, r.energy()};
   for (const double v : numbers) require_finite(v, "report number");
-  if (r.status != fair::Kappa_solve_status::INTERIOR && r.status != fair::Kappa_solve_status::ON_JOINS &&
-      r.status != fair::Kappa_solve_status::UNSOLVED)
+  if (r.status != fair::Kappa_curve_status::INTERIOR && r.status != fair::Kappa_curve_status::ON_JOINS &&
+      r.status != fair::Kappa_curve_status::UNSOLVED)
     fair_fuzz::fuzz_fail("status out of range");
-  if (r.status == fair::Kappa_solve_status::INTERIOR && !r.points_on_joins.empty())
+  if (r.status == fair::Kappa_curve_status::INTERIOR && !r.points_on_joins.empty())
     fair_fuzz::fuzz_fail("INTERIOR with points on joins");
-  if (r.status != fair::Kappa_solve_status::UNSOLVED && !(r.residual <= c.options().tolerance))
+  if (r.status != fair::Kappa_curve_status::UNSOLVED && !(r.residual <= c.options().tolerance))
     fair_fuzz::fuzz_fail("solved status with residual above the tolerance");
   check_indices(r.points_on_joins, n, "points_on_joins");
   check_indices(r.points_at_minima, n, "points_at_minima");
   check_indices(r.points_beyond_density_limit, n, "points_beyond_density_limit");
-  if (r.status != fair::Kappa_solve_status::UNSOLVED && !r.points_beyond_density_limit.empty())
+  if (r.status != fair::Kappa_curve_status::UNSOLVED && !r.points_beyond_density_limit.empty())
     fair_fuzz::fuzz_fail("points beyond the density limit listed for a solved curve");
   // An open curve has no estimate at its fixed ends nor at the points next to them.
   if (!c.is_closed())

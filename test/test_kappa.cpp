@@ -449,12 +449,12 @@ TEST(Kappa, DenseSamplesBeyondTheDensityLimitAreListed) {
     const double a = 0.05 * k, r = std::exp(a / 4);
     p.push_back(Pd(r * std::cos(a), r * std::sin(a)));
   }
-  EXPECT_NE(fair::Kappa_curve_2<Kd>(p).report().status, fair::Kappa_solve_status::INTERIOR);
+  EXPECT_NE(fair::Kappa_curve_2<Kd>(p).report().status, fair::Kappa_curve_status::INTERIOR);
   fair::Kappa_curve_options o;
   o.max_iterations = 0;
   const fair::Kappa_curve_2<Kd> capped(p, o);
-  const fair::Kappa_solve_report& r = capped.report();
-  ASSERT_EQ(r.status, fair::Kappa_solve_status::UNSOLVED);
+  const fair::Kappa_curve_report& r = capped.report();
+  ASSERT_EQ(r.status, fair::Kappa_curve_status::UNSOLVED);
   std::vector<std::size_t> expected;
   for (std::size_t k = 2; k + 2 < p.size(); ++k) expected.push_back(k);
   EXPECT_EQ(r.points_beyond_density_limit, expected);
@@ -486,7 +486,7 @@ TEST(Kappa, HopelessCrawlStopsEarly) {
   opt.weights = fair::Kappa_weights::FIXED;
   opt.fixed_weights.assign(q.size(), 0.25);
   const fair::Kappa_curve_2<Kd> c(q, opt);
-  EXPECT_EQ(c.report().status, fair::Kappa_solve_status::UNSOLVED) << c.report();
+  EXPECT_EQ(c.report().status, fair::Kappa_curve_status::UNSOLVED) << c.report();
   EXPECT_LE(c.report().iterations, 130u) << c.report();
   EXPECT_GT(c.report().residual, 0.5) << c.report();
 }
@@ -499,12 +499,12 @@ TEST(Kappa, NonConvergenceIsReportedOrThrown) {
   o.refinement_passes = 0;
   o.max_iterations = 0;
   const fair::Kappa_curve_2<Kd> c(p, o);
-  const fair::Kappa_solve_report& r = c.report();
-  EXPECT_EQ(r.status, fair::Kappa_solve_status::UNSOLVED);
+  const fair::Kappa_curve_report& r = c.report();
+  EXPECT_EQ(r.status, fair::Kappa_curve_status::UNSOLVED);
   EXPECT_FALSE(r.converged);
   EXPECT_GT(r.residual, o.tolerance);
   // How far and where: the worst points, worst first, the first one carrying the residual.
-  ASSERT_EQ(r.worst_points.size(), fair::Kappa_solve_report::worst_points_listed) << r;
+  ASSERT_EQ(r.worst_points.size(), fair::Kappa_curve_report::worst_points_listed) << r;
   EXPECT_DOUBLE_EQ(r.worst_points[0].residual, r.residual) << r;
   for (std::size_t k = 1; k < r.worst_points.size(); ++k) {
     EXPECT_LE(r.worst_points[k].residual, r.worst_points[k - 1].residual);
@@ -525,12 +525,12 @@ TEST(Kappa, NonConvergenceIsReportedOrThrown) {
 
 // The three outcomes and their spellings (the JSON of fair-curves kappa uses them).
 TEST(Kappa, OutcomeSpellings) {
-  EXPECT_STREQ(fair::to_string(fair::Kappa_solve_status::INTERIOR), "interior");
-  EXPECT_STREQ(fair::to_string(fair::Kappa_solve_status::ON_JOINS), "on_joins");
-  EXPECT_STREQ(fair::to_string(fair::Kappa_solve_status::UNSOLVED), "unsolved");
+  EXPECT_STREQ(fair::to_string(fair::Kappa_curve_status::INTERIOR), "interior");
+  EXPECT_STREQ(fair::to_string(fair::Kappa_curve_status::ON_JOINS), "on_joins");
+  EXPECT_STREQ(fair::to_string(fair::Kappa_curve_status::UNSOLVED), "unsolved");
   std::ostringstream out;
-  out << fair::Kappa_solve_status::ON_JOINS << ' ' << fair::Kappa_solve_report{};
-  EXPECT_EQ(out.str().rfind("on_joins Kappa_solve_report{unsolved,", 0), 0u) << out.str();
+  out << fair::Kappa_curve_status::ON_JOINS << ' ' << fair::Kappa_curve_report{};
+  EXPECT_EQ(out.str().rfind("on_joins Kappa_curve_report{unsolved,", 0), 0u) << out.str();
 }
 
 // A random spiky star (every point a corner, the benchmark's data) ends INTERIOR: nothing on a join or at a minimum, no
@@ -541,15 +541,15 @@ TEST(Kappa, RandomStarIsInterior) {
   o.closed = true;
   o.throw_on_non_convergence = true;
   const fair::Kappa_curve_2<Kd> c(spiky_star(g, 16, 0.1), o);
-  const fair::Kappa_solve_report& r = c.report();
-  EXPECT_EQ(r.status, fair::Kappa_solve_status::INTERIOR) << r;
+  const fair::Kappa_curve_report& r = c.report();
+  EXPECT_EQ(r.status, fair::Kappa_curve_status::INTERIOR) << r;
   EXPECT_TRUE(r.converged);
   EXPECT_LE(r.residual, o.tolerance);
   EXPECT_TRUE(r.points_on_joins.empty());
   EXPECT_TRUE(r.points_at_minima.empty());
   EXPECT_TRUE(r.worst_points.empty());
   const fair::Kappa_certificate cert = fair::certify(c);
-  EXPECT_EQ(cert.status, fair::Kappa_solve_status::INTERIOR);
+  EXPECT_EQ(cert.status, fair::Kappa_curve_status::INTERIOR);
   EXPECT_TRUE(cert.proves_outcome()) << cert;
   EXPECT_TRUE(cert.valid());
 }
@@ -564,8 +564,8 @@ TEST(Kappa, BoundaryRootNamesThePoint) {
   fair::Kappa_curve_options o;
   o.throw_on_non_convergence = true;  // ON_JOINS is an outcome, not a failure: no throw
   const fair::Kappa_curve_2<Kd> c(p, o);
-  const fair::Kappa_solve_report& r = c.report();
-  EXPECT_EQ(r.status, fair::Kappa_solve_status::ON_JOINS) << r;
+  const fair::Kappa_curve_report& r = c.report();
+  EXPECT_EQ(r.status, fair::Kappa_curve_status::ON_JOINS) << r;
   EXPECT_FALSE(r.converged);
   EXPECT_GE(r.bounds_active, 1u);
   ASSERT_EQ(r.points_on_joins, std::vector<std::size_t>{1}) << r;
@@ -578,7 +578,7 @@ TEST(Kappa, BoundaryRootNamesThePoint) {
   // certify() reports the joins and proves the ON_JOINS properties (the exempt piece has no
   // interior maximum at t_1, so valid() fails).
   const fair::Kappa_certificate cert = fair::certify(c);
-  EXPECT_EQ(cert.status, fair::Kappa_solve_status::ON_JOINS);
+  EXPECT_EQ(cert.status, fair::Kappa_curve_status::ON_JOINS);
   EXPECT_EQ(cert.points_on_joins, std::vector<std::size_t>{1});
   EXPECT_TRUE(cert.proves_outcome()) << cert;
   EXPECT_FALSE(cert.valid());
@@ -596,8 +596,8 @@ TEST(Kappa, PointAtACurvatureMinimumIsUnsolved) {
   o.closed = true;
   o.weights = fair::Kappa_weights::AUTOMATIC;
   const fair::Kappa_curve_2<Kd> c(p, o);
-  const fair::Kappa_solve_report& r = c.report();
-  EXPECT_EQ(r.status, fair::Kappa_solve_status::UNSOLVED) << r;
+  const fair::Kappa_curve_report& r = c.report();
+  EXPECT_EQ(r.status, fair::Kappa_curve_status::UNSOLVED) << r;
   EXPECT_FALSE(r.converged);
   EXPECT_LE(r.residual, o.tolerance) << r;
   EXPECT_TRUE(r.points_on_joins.empty()) << r;
@@ -625,7 +625,7 @@ TEST(Kappa, UnitWeightsListNoMinima) {
     try {
       const fair::Kappa_curve_2<Kd> c(p, o);
       EXPECT_TRUE(c.report().points_at_minima.empty()) << trial << c.report();
-      if (c.report().status != fair::Kappa_solve_status::UNSOLVED) {
+      if (c.report().status != fair::Kappa_curve_status::UNSOLVED) {
         EXPECT_LE(c.report().residual, o.tolerance);
       }
     } catch (const fair::Invalid_input_error&) {

@@ -114,7 +114,7 @@ TEST(KappaCertify, EllipticPieceWithAMinimumElsewhereIsAccepted) {
     o.weights = fair::Kappa_weights::AUTOMATIC;
     try {
       const fair::Kappa_curve_2<Kd> c(p, o);
-      if (c.report().status != fair::Kappa_solve_status::INTERIOR) continue;
+      if (c.report().status != fair::Kappa_curve_status::INTERIOR) continue;
       const fair::Kappa_certificate cert = fair::certify(c);
       for (std::size_t j = 0; j < cert.pieces.size(); ++j) {
         const fair::Kappa_certificate::Piece& pc = cert.pieces[j];

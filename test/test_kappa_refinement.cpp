@@ -419,7 +419,7 @@ TEST(KappaRefinement, PassesReproduceTheCircle) {
     }
     fair::Kappa_solver_state st;
     kp::initial_guess(pb, st);
-    fair::Kappa_solve_report res;
+    fair::Kappa_curve_report res;
     const double fmax = kp::refine(pb, st, 20, 0.0, res);
     EXPECT_EQ(res.refinement_passes, 20u);
     EXPECT_LE(fmax, 1e-13) << n;
@@ -439,14 +439,14 @@ TEST(KappaRefinement, RefineStopsAtTheThresholdAndReducesTheResidual) {
     kp::initial_guess(pb, st);
     std::vector<double> F;
     const double f0 = kp::evaluate(pb, st, F);
-    fair::Kappa_solve_report res;
+    fair::Kappa_curve_report res;
     const double f1 = kp::refine(pb, st, 200, 1e-4, res);
     EXPECT_LT(f1, f0);
     EXPECT_LE(f1, 1e-4) << res.refinement_passes;
     EXPECT_GT(res.refinement_passes, 0u);
     EXPECT_EQ(f1, kp::evaluate(pb, st, F));
     // Already below the threshold: no pass.
-    fair::Kappa_solve_report res2;
+    fair::Kappa_curve_report res2;
     kp::refine(pb, st, 200, 1e-4, res2);
     EXPECT_EQ(res2.refinement_passes, 0u);
   }

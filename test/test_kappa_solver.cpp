@@ -21,7 +21,7 @@
 namespace {
 
 using namespace fair::internal::kappa;
-using fair::Kappa_solve_report;
+using fair::Kappa_curve_report;
 using fair::Kappa_solver_state;
 using fair::Kappa_weights;
 
@@ -386,11 +386,11 @@ TEST(KappaNewton, ReachesTheLevenbergMarquardtRootQuickly) {
       const Problem pb = star(n, static_cast<unsigned>(n) + 1, mode);
       Kappa_solver_state a;
       initial_guess(pb, a);
-      Kappa_solve_report passes;
+      Kappa_curve_report passes;
       refine(pb, a, 2, 1e-3, passes);
       Kappa_solver_state b = a;
       Solve_settings s;
-      Kappa_solve_report ra, rb;
+      Kappa_curve_report ra, rb;
       const double fa = newton(pb, a, s, ra, 30);
       const double fb = levenberg_marquardt(pb, b, s, rb, 200);
       ASSERT_LE(fa, 1e-12) << "n " << n;
@@ -409,7 +409,7 @@ TEST(KappaNewton, ReachesTheLevenbergMarquardtRootQuickly) {
 TEST(KappaNewton, ColdSolveUsesTheFastPath) {
   const Problem pb = star(1000, 3, Kappa_weights::UNIT);
   Kappa_solver_state st;
-  const Kappa_solve_report res = solve(pb, st, Solve_settings{});
+  const Kappa_curve_report res = solve(pb, st, Solve_settings{});
   EXPECT_TRUE(res.converged);
   EXPECT_LE(res.refinement_passes, 2u);
   EXPECT_LE(res.iterations, 6u);
@@ -439,7 +439,7 @@ TEST(KappaNewton, IterationCapHoldsForTheWholeSolve) {
     warm.warm = true;
     warm.moved = m;
     warm.max_iterations = 25;
-    const Kappa_solve_report r = solve(pb, st, warm);
+    const Kappa_curve_report r = solve(pb, st, warm);
     EXPECT_LE(r.iterations, 25u);
     warm_converged += r.converged ? 1 : 0;
   }
@@ -457,7 +457,7 @@ TEST(KappaNewton, RangeSolveTouchesOnlyItsBlocks) {
   range.first = 22;
   range.count = 17;
   Kappa_solver_state local = st;
-  Kappa_solve_report res;
+  Kappa_curve_report res;
   const double f = newton(pb, local, Solve_settings{}, res, 30, range);
   EXPECT_LE(f, 1e-12);
   for (std::size_t i = 0; i < pb.n; ++i) {
@@ -520,10 +520,10 @@ TEST(KappaActiveSet, RandomSetsEndOnTheConstrainedSolution) {
     const std::size_t m = 4 + s % 27;
     const Problem pb = random_square(m, 1000 + s, s % 2 == 1, Kappa_weights::UNIT);
     Kappa_solver_state st;
-    const Kappa_solve_report r = solve(pb, st, Solve_settings{});
-    ASSERT_NE(r.status, fair::Kappa_solve_status::UNSOLVED) << "seed " << s << " residual " << r.residual;
+    const Kappa_curve_report r = solve(pb, st, Solve_settings{});
+    ASSERT_NE(r.status, fair::Kappa_curve_status::UNSOLVED) << "seed " << s << " residual " << r.residual;
     EXPECT_LE(r.residual, 1e-12) << "seed " << s;
-    on_joins += r.status == fair::Kappa_solve_status::ON_JOINS ? 1 : 0;
+    on_joins += r.status == fair::Kappa_curve_status::ON_JOINS ? 1 : 0;
     for (std::size_t i = 0; i < pb.n; ++i) {
       if (!t_on_face(st.t[i])) continue;
       EXPECT_TRUE(st.t[i] == parameter_margin || st.t[i] == 1 - parameter_margin) << "seed " << s;
@@ -542,12 +542,12 @@ TEST(KappaActiveSet, RandomSetsEndOnTheConstrainedSolution) {
 TEST(KappaActiveSet, FaceWithNegativeMultiplierIsReleased) {
   const Problem pb = star(40, 9, Kappa_weights::UNIT);
   Kappa_solver_state root;
-  ASSERT_EQ(solve(pb, root, Solve_settings{}).status, fair::Kappa_solve_status::INTERIOR);
+  ASSERT_EQ(solve(pb, root, Solve_settings{}).status, fair::Kappa_curve_status::INTERIOR);
   for (const double face : {parameter_margin, 1 - parameter_margin}) {
     Kappa_solver_state st = root;
     st.t[17] = face;
     EXPECT_TRUE(face_multiplier_negative(pb, st, 17));
-    Kappa_solve_report res;
+    Kappa_curve_report res;
     const double f = newton(pb, st, Solve_settings{}, res, 30);
     EXPECT_LE(f, 1e-12);
     EXPECT_FALSE(t_on_face(st.t[17]));
@@ -563,7 +563,7 @@ TEST(KappaActiveSet, ConstrainedRootIsAFixedPoint) {
   for (unsigned s = 0; s < 80 && checked < 5; ++s) {
     const Problem pb = random_square(4 + s % 27, 1000 + s, s % 2 == 1, Kappa_weights::UNIT);
     Kappa_solver_state st;
-    if (solve(pb, st, Solve_settings{}).status != fair::Kappa_solve_status::ON_JOINS) continue;
+    if (solve(pb, st, Solve_settings{}).status != fair::Kappa_curve_status::ON_JOINS) continue;
     std::size_t faces = 0;
     for (double t : st.t) faces += t_on_face(t) ? 1 : 0;
     if (faces == 0) continue;  // on joins through lambda only
@@ -571,7 +571,7 @@ TEST(KappaActiveSet, ConstrainedRootIsAFixedPoint) {
     std::vector<double> F;
     EXPECT_LE(evaluate(pb, st, F), 1e-12);
     Kappa_solver_state again = st;
-    Kappa_solve_report res;
+    Kappa_curve_report res;
     EXPECT_LE(newton(pb, again, Solve_settings{}, res, 30), 1e-12);
     for (std::size_t i = 0; i < pb.n; ++i) {
       EXPECT_EQ(t_on_face(again.t[i]), t_on_face(st.t[i]));
@@ -587,21 +587,21 @@ TEST(KappaActiveSet, ConstrainedRootIsAFixedPoint) {
 TEST(KappaActiveSet, WarmResolveWithAJoinChange) {
   Problem pb = star(200, 2, Kappa_weights::UNIT);
   Kappa_solver_state st;
-  ASSERT_EQ(solve_with_warm_start(pb, nullptr, 0, Solve_settings{}, st).status, fair::Kappa_solve_status::INTERIOR);
+  ASSERT_EQ(solve_with_warm_start(pb, nullptr, 0, Solve_settings{}, st).status, fair::Kappa_curve_status::INTERIOR);
   const Kappa_solver_state original = st;
   const double x0 = pb.qx[100], y0 = pb.qy[100];
   const double mx = 0.5 * (pb.qx[99] + pb.qx[101]), my = 0.5 * (pb.qy[99] + pb.qy[101]);
   pb.qx[100] = mx - 0.2 * (x0 - mx);
   pb.qy[100] = my - 0.2 * (y0 - my);
   Kappa_solver_state moved;
-  const Kappa_solve_report r = solve_with_warm_start(pb, &st, 100, Solve_settings{}, moved);
-  EXPECT_EQ(r.status, fair::Kappa_solve_status::ON_JOINS);
+  const Kappa_curve_report r = solve_with_warm_start(pb, &st, 100, Solve_settings{}, moved);
+  EXPECT_EQ(r.status, fair::Kappa_curve_status::ON_JOINS);
   EXPECT_LE(r.residual, 1e-12);
   pb.qx[100] = x0;
   pb.qy[100] = y0;
   Kappa_solver_state back;
-  const Kappa_solve_report rb = solve_with_warm_start(pb, &moved, 100, Solve_settings{}, back);
-  EXPECT_EQ(rb.status, fair::Kappa_solve_status::INTERIOR);
+  const Kappa_curve_report rb = solve_with_warm_start(pb, &moved, 100, Solve_settings{}, back);
+  EXPECT_EQ(rb.status, fair::Kappa_curve_status::INTERIOR);
   for (std::size_t i = 0; i < pb.n; ++i) EXPECT_NEAR(back.t[i], original.t[i], 1e-8);
 }
 
@@ -614,10 +614,10 @@ TEST(KappaActiveSet, AutomaticWeightsOnRandomSetsExplainTheOutcome) {
     const Problem pb = random_square(4 + s % 27, 2000 + s, s % 2 == 1, Kappa_weights::AUTOMATIC);
     Kappa_solver_state st;
     const Solve_settings settings;
-    const Kappa_solve_report r = solve(pb, st, settings);
+    const Kappa_curve_report r = solve(pb, st, settings);
     EXPECT_LE(r.iterations, settings.max_iterations);
     ASSERT_TRUE(std::isfinite(r.residual)) << "seed " << s;
-    if (r.status != fair::Kappa_solve_status::UNSOLVED) {
+    if (r.status != fair::Kappa_curve_status::UNSOLVED) {
       EXPECT_LE(r.residual, 1e-12);
       ++solved;
     } else if (r.points_at_minima.empty()) {
@@ -645,7 +645,7 @@ TEST(KappaActiveSet, SteeringOffMinimaKeepsARootWithFewerMinima) {
     const Problem pb = mixed_random_problem(g, trial, 20);
     const Solve_settings s;
     Kappa_solver_state st;
-    Kappa_solve_report res;
+    Kappa_curve_report res;
     double fmax = 0;
     if (!cold_start_newton(pb, st, s, res, fmax)) continue;
     const std::size_t before = count_minima(pb, st);
@@ -686,13 +686,13 @@ TEST(KappaSolver, BlocksOfInputPoints) {
 TEST(KappaSolver, WarmStartPolicy) {
   Problem pb = star(60, 5, Kappa_weights::UNIT);
   Kappa_solver_state st;
-  const Kappa_solve_report cold = solve_with_warm_start(pb, nullptr, 0, Solve_settings{}, st);
+  const Kappa_curve_report cold = solve_with_warm_start(pb, nullptr, 0, Solve_settings{}, st);
   ASSERT_TRUE(cold.converged);
   EXPECT_FALSE(cold.warm_started);
   const Kappa_solver_state previous = st;
   pb.qx[30] *= 1.01;
   Kappa_solver_state moved;
-  const Kappa_solve_report warm = solve_with_warm_start(pb, &previous, 30, Solve_settings{}, moved);
+  const Kappa_curve_report warm = solve_with_warm_start(pb, &previous, 30, Solve_settings{}, moved);
   EXPECT_TRUE(warm.converged);
   EXPECT_TRUE(warm.warm_started);
   EXPECT_EQ(warm.refinement_passes, 0u);
@@ -713,12 +713,12 @@ TEST(KappaSolver, SkippingFailedColdNewtonPathsLosesNothing) {
     const Problem pb = mixed_random_problem(g, trial, 26);
     const Solve_settings s;
     Kappa_solver_state probe;
-    Kappa_solve_report newton_paths;
+    Kappa_curve_report newton_paths;
     double fmax = 0;
     if (cold_start_newton(pb, probe, s, newton_paths, fmax)) continue;
     ++failed_paths;
     Kappa_solver_state full, skipped;
-    Kappa_solve_report rf, rs;
+    Kappa_curve_report rf, rs;
     const double ff = cold_solve(pb, full, s, rf, false);
     const double fs = cold_solve(pb, skipped, s, rs, true);
     if (rf.iterations + 2 * polish_reserve >= s.max_iterations) continue;  // the full one was capped
@@ -738,7 +738,7 @@ TEST(KappaSolver, SkippingFailedColdNewtonPathsLosesNothing) {
   Solve_settings s;
   s.max_iterations = 2000;  // its Levenberg-Marquardt stalls before this cap
   Kappa_solver_state probe, full, skipped;
-  Kappa_solve_report newton_paths, rf, rs;
+  Kappa_curve_report newton_paths, rf, rs;
   double fmax = 0;
   ASSERT_FALSE(cold_start_newton(dense, probe, s, newton_paths, fmax));
   const double ff = cold_solve(dense, full, s, rf, false);
@@ -770,15 +770,15 @@ TEST(KappaSolver, WarmFallbackTraceSkipsTheRepeatedNewtonPaths) {
     warm.moved = moved;
     Kappa_solver_state st = previous;
     Solve_trace trace;
-    const Kappa_solve_report wr = solve(pb, st, warm, &trace);
-    unsolved += wr.status == fair::Kappa_solve_status::UNSOLVED;
+    const Kappa_curve_report wr = solve(pb, st, warm, &trace);
+    unsolved += wr.status == fair::Kappa_curve_status::UNSOLVED;
     if (!trace.cold_newton_paths_failed) continue;
     ++traced;
-    EXPECT_EQ(wr.status, fair::Kappa_solve_status::UNSOLVED) << "trial " << trial;
+    EXPECT_EQ(wr.status, fair::Kappa_curve_status::UNSOLVED) << "trial " << trial;
     Kappa_solver_state cold;
-    const Kappa_solve_report cr = solve(pb, cold, Solve_settings{});
+    const Kappa_curve_report cr = solve(pb, cold, Solve_settings{});
     Kappa_solver_state policy;
-    const Kappa_solve_report pr = solve_with_warm_start(pb, &previous, moved, Solve_settings{}, policy);
+    const Kappa_curve_report pr = solve_with_warm_start(pb, &previous, moved, Solve_settings{}, policy);
     const bool cold_better = static_cast<int>(cr.status) < static_cast<int>(wr.status) ||
                              (cr.status == wr.status && cr.residual < wr.residual);
     if (cr.iterations + 2 * polish_reserve < Solve_settings{}.max_iterations) {
@@ -811,7 +811,7 @@ TEST(KappaDensityStart, PredictedParametersMatchTheInteriorRoot) {
   for (const auto& c : cases) {
     const Problem pb = sampled_ellipse(c.n, c.b);
     Kappa_solver_state st;
-    Kappa_solve_report res;
+    Kappa_curve_report res;
     initial_guess(pb, st);
     refine(pb, st, fast_passes, refinement_stop, res);
     const double fmax = newton(pb, st, Solve_settings{}, res, newton_iterations);
@@ -904,7 +904,7 @@ TEST(KappaDensityStart, UnevenSpacingOnACircle) {
     y = std::sin(a);
   });
   Kappa_solver_state st;
-  Kappa_solve_report res;
+  Kappa_curve_report res;
   initial_guess(pb, st);
   refine(pb, st, fast_passes, refinement_stop, res);
   ASSERT_LE(newton(pb, st, Solve_settings{}, res, newton_iterations), 1e-12);
@@ -926,8 +926,8 @@ TEST(KappaDensityStart, ColdSolveOfADenselySampledEllipse) {
   for (const std::size_t n : {160, 200, 240}) {
     const Problem pb = sampled_ellipse(n, 0.99);
     Kappa_solver_state st;
-    const Kappa_solve_report r = solve(pb, st, Solve_settings{});
-    EXPECT_EQ(r.status, fair::Kappa_solve_status::INTERIOR) << "n = " << n << ": " << r;
+    const Kappa_curve_report r = solve(pb, st, Solve_settings{});
+    EXPECT_EQ(r.status, fair::Kappa_curve_status::INTERIOR) << "n = " << n << ": " << r;
     EXPECT_LE(r.iterations, density_start_iterations) << "n = " << n;
   }
 }
@@ -1024,8 +1024,8 @@ TEST(KappaDensityLimit, LogarithmicSpiralByTheClosedForm) {
   for (const double da : {0.25, 0.3}) {
     const Problem sparse = open_polar_samples(log_spiral(b), 0.0, da, 40);
     Kappa_solver_state root;
-    const Kappa_solve_report r = solve(sparse, root, Solve_settings{});
-    ASSERT_EQ(r.status, fair::Kappa_solve_status::INTERIOR) << "da = " << da << ": " << r;
+    const Kappa_curve_report r = solve(sparse, root, Solve_settings{});
+    ASSERT_EQ(r.status, fair::Kappa_curve_status::INTERIOR) << "da = " << da << ": " << r;
     std::vector<double> estimate;
     density_estimates(sparse, estimate);
     for (std::size_t i = 10; i + 10 < sparse.n; ++i)

@@ -7,7 +7,7 @@
 #ifndef FAIR_KAPPA_CERTIFICATE_H
 #define FAIR_KAPPA_CERTIFICATE_H
 
-#include <fair/Kappa_solve_report.h>
+#include <fair/Kappa_curve_report.h>
 #include <fair/Rational_quadratic_bezier_2.h>
 
 #include <CGAL/Gmpq.h>
@@ -63,10 +63,10 @@ struct Kappa_certificate {
   std::vector<Piece> pieces;
   std::vector<Join> joins;
   std::vector<Rational_quadratic_bezier_2<Exact_kernel>> exact_pieces;
-  /// The outcome of the solve that was certified (its Kappa_solve_report::status) and the
-  /// points it reported on joins (Kappa_solve_report::points_on_joins). What the certificate
+  /// The outcome of the solve that was certified (its Kappa_curve_report::status) and the
+  /// points it reported on joins (Kappa_curve_report::points_on_joins). What the certificate
   /// proves per outcome: proves_outcome().
-  Kappa_solve_status status = Kappa_solve_status::UNSOLVED;
+  Kappa_curve_status status = Kappa_curve_status::UNSOLVED;
   std::vector<std::size_t> points_on_joins;
 
   bool all_points_on_pieces() const { for (const Piece& p : pieces) if (!p.point_on_piece) return false; return true; }
@@ -132,9 +132,9 @@ struct Kappa_certificate {
   /// valid_on_joins(); UNSOLVED promises nothing beyond what the members say (false).
   bool proves_outcome(double kappa_tolerance = default_kappa_tolerance, double t_tolerance = default_t_tolerance) const {
     switch (status) {
-      case Kappa_solve_status::INTERIOR: return valid(kappa_tolerance, t_tolerance);
-      case Kappa_solve_status::ON_JOINS: return valid_on_joins(kappa_tolerance, t_tolerance);
-      case Kappa_solve_status::UNSOLVED: break;
+      case Kappa_curve_status::INTERIOR: return valid(kappa_tolerance, t_tolerance);
+      case Kappa_curve_status::ON_JOINS: return valid_on_joins(kappa_tolerance, t_tolerance);
+      case Kappa_curve_status::UNSOLVED: break;
     }
     return false;
   }

@@ -13,7 +13,7 @@
 // Weights: all 1 (the polynomial kappa-curves of Yan et al. 2017), fixed per point, or the
 // clamped minimum-eccentricity weights of eq. 16 (tension mu_i, clamp default 1/2), which
 // reproduce circles (Sec. 4.4, Sec. 8). Options: Kappa_curve_options.h; what a solve reached:
-// Kappa_solve_report.h; the certificates of certify() and certify_pieces(): Kappa_certificate.h.
+// Kappa_curve_report.h; the certificates of certify() and certify_pieces(): Kappa_certificate.h.
 // Open curves (Sec. 6): the first and last points are the fixed end points; the interior
 // points get one piece each. Closed curves: one piece per point, treated cyclically.
 //
@@ -28,7 +28,7 @@
 #include <fair/Errors.h>
 #include <fair/Kappa_certificate.h>
 #include <fair/Kappa_curve_options.h>
-#include <fair/Kappa_solve_report.h>
+#include <fair/Kappa_curve_report.h>
 #include <fair/Rational_quadratic_bezier_2.h>
 #include <fair/internal/kappa/certify.h>
 #include <fair/internal/kappa/input_checks.h>
@@ -53,7 +53,7 @@ namespace fair {
 /// unit or fixed weights it usually reaches options().tolerance (default 1e-12).
 /// Outcome: report().status, INTERIOR (every property of the paper), ON_JOINS (the listed
 /// report().points_on_joins lie on joins, the rest holds) or UNSOLVED (residual above the
-/// tolerance, or report().points_at_minima); see Kappa_solve_status and doc/kappa_curves.md.
+/// tolerance, or report().points_at_minima); see Kappa_curve_status and doc/kappa_curves.md.
 /// certify() and certify_pieces() certify the result, exactly or by certified bounds.
 /// Complexity: O(n) per iteration of the solver (a few Newton iterations from a cold start on
 /// typical data); after move_point() first O(1) per iteration on the pieces near the point.
@@ -70,7 +70,7 @@ public:
   /// \throws Invalid_input_error for too few points, NaN/inf coordinates, coincident
   /// consecutive points, all points collinear, bad weights/tension/clamp, or a solution with a
   /// degenerate (straight) piece; Precondition_error for a negative or non-finite tolerance;
-  /// Non_convergence_error if the outcome is Kappa_solve_status::UNSOLVED and
+  /// Non_convergence_error if the outcome is Kappa_curve_status::UNSOLVED and
   /// options.throw_on_non_convergence is set (never for INTERIOR or ON_JOINS; see report().status).
   explicit Kappa_curve_2(std::vector<Point_2> points, Kappa_curve_options options = Kappa_curve_options())
     : q_(std::move(points)), opt_(std::move(options)) {
@@ -130,7 +130,7 @@ public:
     return st_.lambda[j];
   }
   /// What the last solve did and reached.
-  const Kappa_solve_report& report() const { return report_; }
+  const Kappa_curve_report& report() const { return report_; }
 
   /// The solver's unknowns at the solution (normalised offsets, lambda, t, w; one entry per
   /// piece): the exact parameters certify() rebuilds the curve from, and the start of the next
@@ -160,10 +160,10 @@ private:
     const Kappa_solver_state previous = has_previous ? kp::renormalised(st_, normalisation_, normalisation)
                                                      : Kappa_solver_state();
     Kappa_solver_state st;
-    Kappa_solve_report report =
+    Kappa_curve_report report =
         kp::solve_with_warm_start(pb, has_previous ? &previous : nullptr, moved, kp::solve_settings(opt_), st);
     std::vector<Piece> pieces = kp::assemble_pieces<K>(pb, st, normalisation, q_);
-    if (report.status == Kappa_solve_status::UNSOLVED && opt_.throw_on_non_convergence)
+    if (report.status == Kappa_curve_status::UNSOLVED && opt_.throw_on_non_convergence)
       throw Non_convergence_error(
           report.residual <= opt_.tolerance
               ? internal::message("Kappa_curve_2: unsolved: residual ", report.residual, " <= tolerance ",
@@ -182,7 +182,7 @@ private:
   std::vector<Piece> pieces_;
   Kappa_solver_state st_;
   internal::kappa::Normalisation normalisation_;
-  Kappa_solve_report report_;
+  Kappa_curve_report report_;
 };
 
 /// Certifies `curve` exactly: the exact curve defined by the solver's rational lambda_i, t_i,

@@ -37,9 +37,9 @@ struct Kappa_curve_options {
   std::size_t refinement_passes = 60;
   /// Cap on the iterations (Jacobians) of Newton's method and Levenberg-Marquardt together.
   std::size_t max_iterations = 200;
-  /// Stop when the max-norm residual (dimensionless, see Kappa_solve_report) is at most this.
+  /// Stop when the max-norm residual (dimensionless, see Kappa_curve_report) is at most this.
   double tolerance = 1e-12;
-  /// Throw fair::Non_convergence_error instead of returning an UNSOLVED curve (Kappa_solve_status;
+  /// Throw fair::Non_convergence_error instead of returning an UNSOLVED curve (Kappa_curve_status;
   /// never for INTERIOR or ON_JOINS).
   bool throw_on_non_convergence = false;
 };

@@ -11,6 +11,7 @@
 #define FAIR_OPTIMAL_CURVE_2_H
 
 #include <fair/Optimal_curve_options.h>
+#include <fair/Optimal_curve_report.h>
 #include <fair/internal/optimal/hierarchy.h>
 
 #include <CGAL/number_utils.h>

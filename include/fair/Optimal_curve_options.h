@@ -1,6 +1,6 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// Options and report of fair::Optimal_curve_2 (Gumhold's optimal curves, issue 11; see
+// Options of fair::Optimal_curve_2 (Gumhold's optimal curves, issue 11; see
 // Optimal_curve_2.h and doc/optimal_curves.md). Separate from the class so that the solver
 // (internal/optimal/hierarchy.h) reads these options directly.
 
@@ -9,7 +9,6 @@
 
 #include <array>
 #include <cstddef>
-#include <ostream>
 #include <vector>
 
 namespace fair {
@@ -21,11 +20,6 @@ enum class Curvature_discretisation { REGULARISED, CIRCUMCIRCLE, TURNING_ANGLE }
 /// NEWTON (the default: exact banded Hessian, converges in a few steps per level) or the paper's
 /// CONJUGATE_GRADIENT (Polak-Ribiere with a Newton line search; for comparison only).
 enum class Optimal_curve_solver { NEWTON, CONJUGATE_GRADIENT };
-/// CONVERGED: the Newton decrement (with a negligible shift) fell below the tolerance on every
-/// level and the target resolution was reached; DIVERGING: the curve runs away (its extent grows
-/// beyond a cap: the functional has no finite minimiser for these data); CAPPED: an iteration,
-/// level or vertex cap was hit first, or the solver failed (an edge collapsed, no descent step). JSON spelling: "converged", "diverging", "capped".
-enum class Optimal_curve_status { CONVERGED, DIVERGING, CAPPED };
 /// TANGENT (direction of travel), NORMAL (its left normal) or CORNER (in- and outgoing tangents).
 enum class Point_constraint_kind { TANGENT, NORMAL, CORNER };
 
@@ -67,36 +61,6 @@ struct Optimal_curve_options {
   /// tolerance * |F|; CG when the relative decrease of F per step is below it.
   double tolerance = 1e-10;
 };
-
-/// One level of the hierarchy: its vertices, solver iterations, final energy, the Euclidean
-/// norm of the reduced gradient (dF/d offsets; on a CONVERGED level: at the start of the final
-/// Newton step, which is then still taken and squares it) and its outcome.
-struct Optimal_curve_level {
-  std::size_t vertices, iterations;
-  double energy, gradient_norm;
-  Optimal_curve_status status;
-};
-/// The whole solve: outcome (the worst of the levels, or CAPPED if a level/vertex cap stopped the
-/// hierarchy before the target resolution), final energy, total iterations, the reduced gradient
-/// norm of the last level (as in Optimal_curve_level), per-level records.
-struct Optimal_curve_report {
-  Optimal_curve_status status;
-  double energy;
-  std::size_t iterations;
-  double gradient_norm = 0;
-  std::vector<Optimal_curve_level> levels;
-};
-
-/// "converged", "diverging" or "capped".
-inline const char* to_string(Optimal_curve_status s) {
-  switch (s) {
-    case Optimal_curve_status::CONVERGED: return "converged";
-    case Optimal_curve_status::DIVERGING: return "diverging";
-    case Optimal_curve_status::CAPPED: break;
-  }
-  return "capped";
-}
-inline std::ostream& operator<<(std::ostream& out, Optimal_curve_status s) { return out << to_string(s); }
 
 } // namespace fair
 

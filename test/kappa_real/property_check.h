@@ -59,7 +59,7 @@ struct Check_tolerances {
   double kappa_deficit = 1e-8;
   /// A point on a join: the distance in parameter of its closest point from the piece's end
   /// where |kappa| is largest: the margin within which the solver reports a t_i "on a join"
-  /// (Kappa_solve_report::bounds_active). The solver on main stops such a t_i 1e-6 to 1.3e-5
+  /// (Kappa_curve_report::bounds_active). The solver on main stops such a t_i 1e-6 to 1.3e-5
   /// short of the bound instead of on it (doc/real_data.md).
   double on_join = 1e-4;
 };

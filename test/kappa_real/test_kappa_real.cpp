@@ -104,7 +104,7 @@ struct Solve_record {
   bool collinear = false;           ///< every point on one line (the library must reject it)
   bool rejected = false;            ///< Invalid_input_error (expected only for collinear data)
   std::string error;
-  fair::Kappa_solve_status status = fair::Kappa_solve_status::UNSOLVED;
+  fair::Kappa_curve_status status = fair::Kappa_curve_status::UNSOLVED;
   double residual = 0;
   std::size_t on_joins = 0, iterations = 0;
   std::vector<std::size_t> points_on_joins;  ///< as reported
@@ -170,7 +170,7 @@ std::vector<Solve_record> solve_data_set(const std::string& name) {
       if (r.rejected) { ++count["rejected"]; continue; }
       ++count[fair::to_string(r.status)];
       if (r.explained) ++count["explained"];
-      if (r.status != fair::Kappa_solve_status::UNSOLVED) {
+      if (r.status != fair::Kappa_curve_status::UNSOLVED) {
         worst_solved = std::max(worst_solved, r.residual);
         worst_check = std::max(worst_check, r.check.worst_distance());
         worst_join = std::max(worst_join, r.check.worst_join_parameter_offset());
@@ -184,7 +184,7 @@ std::vector<Solve_record> solve_data_set(const std::string& name) {
               << ", worst interpolation distance by the check " << worst_check
               << ", points on joins up to " << worst_join << " from the join in parameter\n";
     for (const Solve_record& r : out)
-      if (r.weights == w && !r.rejected && r.status == fair::Kappa_solve_status::UNSOLVED)
+      if (r.weights == w && !r.rejected && r.status == fair::Kappa_curve_status::UNSOLVED)
         std::cout << "[real data]   unsolved: " << describe(r) << ": residual " << r.residual << ", " << r.report << "\n";
   }
   return out;
@@ -199,7 +199,7 @@ void expect_properties(const std::vector<Solve_record>& records) {
     if (r.rejected) continue;
     EXPECT_TRUE(r.check.finite) << describe(r) << ": " << r.check.summary();
     // UNSOLVED promises interpolation and G1 only (doc/kappa_curves.md, Outcomes).
-    if (r.status == fair::Kappa_solve_status::UNSOLVED) {
+    if (r.status == fair::Kappa_curve_status::UNSOLVED) {
       EXPECT_LE(r.check.worst_distance(), 1e-9) << describe(r) << ": " << r.check.summary();
       EXPECT_LE(r.check.worst_g1(), 1e-9) << describe(r) << ": " << r.check.summary();
       continue;
@@ -216,7 +216,7 @@ void expect_properties(const std::vector<Solve_record>& records) {
 void expect_solved(const std::vector<Solve_record>& records) {
   for (const Solve_record& r : records) {
     if (r.rejected) continue;
-    EXPECT_NE(r.status, fair::Kappa_solve_status::UNSOLVED) << describe(r) << ": " << r.report;
+    EXPECT_NE(r.status, fair::Kappa_curve_status::UNSOLVED) << describe(r) << ": " << r.report;
   }
 }
 
@@ -227,7 +227,7 @@ void expect_solved(const std::vector<Solve_record>& records) {
 void expect_solved_at_least(const std::vector<Solve_record>& records, std::size_t unit, std::size_t automatic) {
   std::size_t solved[2] = {0, 0};
   for (const Solve_record& r : records)
-    if (!r.rejected && r.status != fair::Kappa_solve_status::UNSOLVED)
+    if (!r.rejected && r.status != fair::Kappa_curve_status::UNSOLVED)
       ++solved[r.weights == fair::Kappa_weights::UNIT ? 0 : 1];
   EXPECT_GE(solved[0], unit) << "curves solved with w = 1";
   EXPECT_GE(solved[1], automatic) << "curves solved with automatic weights";
@@ -341,7 +341,7 @@ TEST(KappaRealProperties, GlyphOutlinesDenseStress) {
   const std::vector<Solve_record> records = solve_data_set("glyphs-dense");
   expect_properties(records);
   for (const Solve_record& r : records) {
-    if (!r.rejected && r.status == fair::Kappa_solve_status::UNSOLVED) {
+    if (!r.rejected && r.status == fair::Kappa_curve_status::UNSOLVED) {
       EXPECT_GT(r.beyond_density_limit, 0u) << describe(r) << ": " << r.report;
     }
   }
@@ -373,7 +373,7 @@ void expect_interior_and_checked(const std::vector<Point>& q, const std::string&
   fair::Kappa_curve_options o;
   o.closed = true;
   const fair::Kappa_curve_2<K> curve(q, o);
-  EXPECT_EQ(curve.report().status, fair::Kappa_solve_status::INTERIOR) << what << ": " << curve.report();
+  EXPECT_EQ(curve.report().status, fair::Kappa_curve_status::INTERIOR) << what << ": " << curve.report();
   const kappa_real::Curve_result check = kappa_real::check_kappa_curve(curve.pieces(), q, true);
   EXPECT_TRUE(check.passes()) << what << ": " << check.summary();
 }
@@ -398,7 +398,7 @@ TEST(KappaDenseSamples, DISABLED_EllipseDenseSamplesAreSolved) {
     fair::Kappa_curve_options o;
     o.closed = true;
     const fair::Kappa_curve_2<K> curve(ellipse_samples(n, 0.95), o);
-    EXPECT_NE(curve.report().status, fair::Kappa_solve_status::UNSOLVED) << "n = " << n << ": " << curve.report();
+    EXPECT_NE(curve.report().status, fair::Kappa_curve_status::UNSOLVED) << "n = " << n << ": " << curve.report();
   }
 }
 
@@ -419,7 +419,7 @@ TYPED_TEST(KappaRealKernels, FeatherIconsSolvedAndCheckedWithUnitWeights) {
     try {
       const fair::Kappa_curve_2<TypeParam> curve(q, o);
       const kappa_real::Curve_result r = kappa_real::check_kappa_curve(curve.pieces(), q, set.closed);
-      EXPECT_NE(curve.report().status, fair::Kappa_solve_status::UNSOLVED) << set.name << ": " << curve.report();
+      EXPECT_NE(curve.report().status, fair::Kappa_curve_status::UNSOLVED) << set.name << ": " << curve.report();
       EXPECT_TRUE(r.passes()) << set.name << ": " << r.summary();
       ++solved;
     } catch (const fair::Invalid_input_error& e) {

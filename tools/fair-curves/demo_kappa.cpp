@@ -24,7 +24,7 @@ namespace {
 
 using fair_curves::Point_2;
 
-std::string report_text(const fair::Kappa_solve_report& r) {
+std::string report_text(const fair::Kappa_curve_report& r) {
   return std::string(fair::to_string(r.status)) + ", " + std::to_string(r.refinement_passes) +
          " passes + " + std::to_string(r.iterations) + " iterations";
 }
@@ -35,15 +35,15 @@ void add_kappa_case(fair_curves::Gallery& gallery, const std::vector<Point_2>& p
   fair_curves::Curve_case c;
   c.title = title;
   c.caption = caption;
-  if (curve.report().status == fair::Kappa_solve_status::ON_JOINS)
+  if (curve.report().status == fair::Kappa_curve_status::ON_JOINS)
     c.caption += " No interior solution: some points lie on joins (see the report below).";
-  if (curve.report().status == fair::Kappa_solve_status::UNSOLVED)
+  if (curve.report().status == fair::Kappa_curve_status::UNSOLVED)
     c.caption += " The solve is unsolved (see the report below): the curve shown is its last iterate.";
   c.input_points = fair::io::to_xy(points);
   c.samples_per_piece = 96;
   for (std::size_t j = 0; j < curve.number_of_pieces(); ++j)
     c.marks.push_back(fair_curves::Curve_mark{j, curve.t(j), std::string()});
-  const fair::Kappa_solve_report& r = curve.report();
+  const fair::Kappa_curve_report& r = curve.report();
   c.measurements.emplace_back("solve", report_text(r));
   c.measurements.emplace_back("max residual", fair_curves::format_number(r.residual, 3));
   c.measurements.emplace_back("energy (eqs. 11-13 + interpolation)", fair_curves::format_number(r.energy(), 3));

@@ -5,7 +5,7 @@
 // "auto" (clamped minimum-eccentricity weights, eq. 16, optional per-point tension file) or a
 // number W used for every point; with "auto", --clamp sets the lower clamp of eq. 16 (default
 // 1/2). Writes the pieces and the solve report as JSON and a figure. The outcome (interior, on
-// joins, unsolved: fair::Kappa_solve_status) is one line on stdout; unsolved also on stderr, and
+// joins, unsolved: fair::Kappa_curve_status) is one line on stdout; unsolved also on stderr, and
 // the exit code is then unsolved_exit_code unless --allow-unsolved.
 
 #include "registry.h"
@@ -106,7 +106,7 @@ fair::Kappa_curve_options curve_options(const Kappa_command_options& o) {
 /// The pieces and the solve report as the JSON document of -o.
 std::string curve_json(const Kappa_command_options& o, const fair::Kappa_curve_2<fair_curves::Kernel>& curve) {
   const fair::Kappa_curve_options& options = curve.options();
-  const fair::Kappa_solve_report& r = curve.report();
+  const fair::Kappa_curve_report& r = curve.report();
   nlohmann::json worst = nlohmann::json::array();
   for (const fair::Kappa_point_residual& p : r.worst_points) worst.push_back({{"point", p.point}, {"residual", p.residual}});
   nlohmann::json pieces = nlohmann::json::array();
@@ -171,7 +171,7 @@ std::string point_list(const std::vector<std::size_t>& points) {
 /// points at a curvature minimum, and the points beyond the density limit (the likely cause).
 std::string unsolved_line(const fair::Kappa_curve_2<fair_curves::Kernel>& curve) {
   using namespace fair_curves;
-  const fair::Kappa_solve_report& r = curve.report();
+  const fair::Kappa_curve_report& r = curve.report();
   std::ostringstream line;
   line << "unsolved: ";
   if (!(r.residual <= curve.options().tolerance)) {  // NaN included
@@ -199,7 +199,7 @@ std::string unsolved_line(const fair::Kappa_curve_2<fair_curves::Kernel>& curve)
 std::string summary(const Kappa_command_options& o, const fair::Kappa_curve_2<fair_curves::Kernel>& curve) {
   using namespace fair_curves;
   const fair::Kappa_curve_options& options = curve.options();
-  const fair::Kappa_solve_report& r = curve.report();
+  const fair::Kappa_curve_report& r = curve.report();
   std::ostringstream report;
   report << o.input << ": " << curve.number_of_pieces() << " pieces, " << (options.closed ? "closed" : "open")
          << ", weights " << o.weights
@@ -207,13 +207,13 @@ std::string summary(const Kappa_command_options& o, const fair::Kappa_curve_2<fa
          << ", " << r.refinement_passes << " passes and " << r.iterations << " iterations, residual "
          << format_number(r.residual, 3) << ", energy " << format_number(r.energy(), 3) << "; ";
   switch (r.status) {
-    case fair::Kappa_solve_status::INTERIOR: report << "interior: every point at a curvature maximum of its piece"; break;
-    case fair::Kappa_solve_status::ON_JOINS:
+    case fair::Kappa_curve_status::INTERIOR: report << "interior: every point at a curvature maximum of its piece"; break;
+    case fair::Kappa_curve_status::ON_JOINS:
       // No interior solution: the box-constrained one (doc/kappa_existence.md).
       report << "on joins:" << point_list(r.points_on_joins)
              << " on a join (t or lambda at 0 or 1), not at a curvature maximum; the rest interior";
       break;
-    case fair::Kappa_solve_status::UNSOLVED: report << unsolved_line(curve); break;
+    case fair::Kappa_curve_status::UNSOLVED: report << unsolved_line(curve); break;
   }
   report << "\n";
   return report.str();
@@ -233,7 +233,7 @@ void run_kappa(const Kappa_command_options& o) {
   const std::string json_text = o.json_out.empty() ? std::string() : curve_json(o, curve);
   const std::string svg_text = o.svg_out.empty() ? std::string() : curve_svg(o, data, curve);
   write_outputs(summary(o, curve), o.json_out, json_text, {{o.svg_out, svg_text}});
-  if (curve.report().status == fair::Kappa_solve_status::UNSOLVED) {
+  if (curve.report().status == fair::Kappa_curve_status::UNSOLVED) {
     std::cerr << "fair-curves kappa: " << o.input << ": " << unsolved_line(curve)
               << (o.allow_unsolved ? "" : " (exit code 3; --allow-unsolved to exit 0)") << '\n';
     if (!o.allow_unsolved) throw fair_curves::Exit_code{unsolved_exit_code};

@@ -7,7 +7,7 @@
 #define FAIR_INTERNAL_KAPPA_PIECES_H
 
 #include <fair/Errors.h>
-#include <fair/Kappa_solve_report.h>
+#include <fair/Kappa_curve_report.h>
 #include <fair/Rational_quadratic_bezier_2.h>
 #include <fair/internal/kappa/problem_setup.h>
 #include <fair/internal/kappa/system.h>

@@ -10,7 +10,7 @@
 
 #include <fair/Errors.h>
 #include <fair/Kappa_curve_options.h>
-#include <fair/Kappa_solve_report.h>
+#include <fair/Kappa_curve_report.h>
 #include <fair/internal/kappa/system.h>
 
 #include <CGAL/number_utils.h>

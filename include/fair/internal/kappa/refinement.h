@@ -377,7 +377,7 @@ inline void initial_guess(const Problem& pb, Kappa_solver_state& st) {
 }
 
 /// Alternating passes (Sec. 5.1) until `max_passes` or max |r| <= stop; returns max |r|.
-inline double refine(const Problem& pb, Kappa_solver_state& st, std::size_t max_passes, double stop, Kappa_solve_report& res) {
+inline double refine(const Problem& pb, Kappa_solver_state& st, std::size_t max_passes, double stop, Kappa_curve_report& res) {
   std::vector<double> F;
   Refinement_workspace ws;
   double fmax = evaluate(pb, st, F);

@@ -32,7 +32,7 @@
 // only) and each of its runs is followed by a Newton polish (newton_polish). A singular pivot block of the block LU falls back to a
 // pivoted band LU of the same Jacobian (factor_pivoted).
 // The warm/cold start policy of Kappa_curve_2 is solve_with_warm_start(). Non-convergence
-// within the iteration caps is reported (Kappa_solve_report::status UNSOLVED); the caller
+// within the iteration caps is reported (Kappa_curve_report::status UNSOLVED); the caller
 // decides whether to throw.
 
 #ifndef FAIR_INTERNAL_KAPPA_SOLVER_H
@@ -385,7 +385,7 @@ inline bool snap_to_faces(const Problem& pb, const Block_range& range, Kappa_sol
 /// `active_set` false: the plain method on all equations, t_i free within the projection bounds
 /// (the local warm-start stages).
 inline double levenberg_marquardt(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                                  Kappa_solve_report& res, std::size_t max_iterations, const Block_range& range = {},
+                                  Kappa_curve_report& res, std::size_t max_iterations, const Block_range& range = {},
                                   bool active_set = true) {
   const std::size_t n = pb.n;
   project_bounds(st);
@@ -616,7 +616,7 @@ inline bool release_faces(const Problem& pb, Kappa_solver_state& st, const Block
 /// Returns max |r| of the equations that remain (st: the last accepted state). Stops early --
 /// leaving the rest to Levenberg-Marquardt -- on a singular pivot block or a failed line search.
 inline double newton(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                     Kappa_solve_report& res, std::size_t max_iterations, const Block_range& range = {}) {
+                     Kappa_curve_report& res, std::size_t max_iterations, const Block_range& range = {}) {
   const std::size_t n = pb.n, na = range.all ? n : range.count, N = 4 * na;
   project_bounds(st);
   std::vector<double> F, Ftrial, delta(N);
@@ -822,7 +822,7 @@ inline bool not_at_piece_maximum(const Problem& pb, const Kappa_solver_state& st
 /// at minima, worst points, the points beyond the density limit, and the deprecated aliases
 /// converged and boundary_points.
 inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solve_settings& settings,
-                     const std::vector<double>& F, const std::vector<double>& weight_error, Kappa_solve_report& res) {
+                     const std::vector<double>& F, const std::vector<double>& weight_error, Kappa_curve_report& res) {
   res.bounds_active = bounds_active(pb, st, &res.points_on_joins);
   res.points_at_minima.clear();
   // A point on its face whose multiplier is negative (|kappa| of its piece falls towards the
@@ -831,14 +831,14 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
   for (std::size_t i = 0; i < pb.n; ++i)
     if (not_at_piece_maximum(pb, st, i)) res.points_at_minima.push_back(pb.point_index(i));
   const bool solved = res.residual <= settings.tolerance;
-  res.status = !solved || !res.points_at_minima.empty() ? Kappa_solve_status::UNSOLVED
-               : res.bounds_active > 0                  ? Kappa_solve_status::ON_JOINS
-                                                        : Kappa_solve_status::INTERIOR;
-  res.converged = res.status == Kappa_solve_status::INTERIOR;
+  res.status = !solved || !res.points_at_minima.empty() ? Kappa_curve_status::UNSOLVED
+               : res.bounds_active > 0                  ? Kappa_curve_status::ON_JOINS
+                                                        : Kappa_curve_status::INTERIOR;
+  res.converged = res.status == Kappa_curve_status::INTERIOR;
   res.boundary_points = res.points_on_joins;
   res.worst_points.clear();
   res.points_beyond_density_limit.clear();
-  if (res.status != Kappa_solve_status::UNSOLVED) return;
+  if (res.status != Kappa_curve_status::UNSOLVED) return;
   res.points_beyond_density_limit = points_beyond_density_limit(pb, st);
   std::vector<Kappa_point_residual> all(pb.n);
   for (std::size_t i = 0; i < pb.n; ++i) {
@@ -850,7 +850,7 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
     }
     all[i] = Kappa_point_residual{pb.point_index(i), r};
   }
-  const std::size_t k = std::min(all.size(), Kappa_solve_report::worst_points_listed);
+  const std::size_t k = std::min(all.size(), Kappa_curve_report::worst_points_listed);
   std::partial_sort(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(k), all.end(),
                     [](const Kappa_point_residual& a, const Kappa_point_residual& b) {
                       return a.residual > b.residual || (a.residual == b.residual && a.point < b.point);
@@ -868,8 +868,8 @@ constexpr std::size_t warm_newton_iterations = 8;
 constexpr std::size_t local_lm_iterations = 20;
 
 /// The report of a solve that reached max |r| = fmax at st (and st.w set to the weights).
-inline Kappa_solve_report finish(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                                 Kappa_solve_report res, double fmax) {
+inline Kappa_curve_report finish(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                                 Kappa_curve_report res, double fmax) {
   const std::size_t n = pb.n;
   std::vector<double> F, weight_error;
   std::vector<double> w(n, 1.0);
@@ -908,7 +908,7 @@ inline Kappa_solve_report finish(const Problem& pb, Kappa_solver_state& st, cons
 /// A root of the box-constrained problem: max |r| = fmax of the equations that remain within the
 /// tolerance, and every t_i on its face with a non-negative multiplier (face_multiplier_negative:
 /// Q_i is where its piece's |kappa| is largest). Its t_i on their faces are the points on joins
-/// (Kappa_solve_status::ON_JOINS). O(n), eq. 4 evaluated only on the faces.
+/// (Kappa_curve_status::ON_JOINS). O(n), eq. 4 evaluated only on the faces.
 inline bool is_root(const Problem& pb, const Kappa_solver_state& st, double fmax, const Solve_settings& settings) {
   if (!(fmax <= settings.tolerance)) return false;
   for (std::size_t i = 0; i < pb.n; ++i)
@@ -917,7 +917,7 @@ inline bool is_root(const Problem& pb, const Kappa_solver_state& st, double fmax
 }
 
 /// What is left of the iteration cap (Jacobians of the whole solve).
-inline std::size_t remaining_iterations(const Solve_settings& settings, const Kappa_solve_report& res) {
+inline std::size_t remaining_iterations(const Solve_settings& settings, const Kappa_curve_report& res) {
   return settings.max_iterations > res.iterations ? settings.max_iterations - res.iterations : 0;
 }
 
@@ -944,7 +944,7 @@ constexpr std::size_t density_start_iterations = 10;
 /// found.
 /// Returns true (fmax set) at a root; otherwise st is the state after the passes.
 inline bool cold_start_newton(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                              Kappa_solve_report& res, double& fmax) {
+                              Kappa_curve_report& res, double& fmax) {
   // The density start (parameter_prediction.h): on densely sampled smooth data the interior
   // root's t_i lie far from 1/2, where the paper's start begins (uniform samples of the ellipse
   // (cos a, 0.99 sin a): n = 160-260 UNSOLVED from it, INTERIOR in 1-3 Jacobians from this one;
@@ -974,7 +974,7 @@ inline bool cold_start_newton(const Problem& pb, Kappa_solver_state& st, const S
   // The start is recomputed (deterministic) rather than kept: no copy of the state on the
   // fast path.
   initial_guess(pb, st);
-  Kappa_solve_report passes;
+  Kappa_curve_report passes;
   refine(pb, st, settings.refinement_passes, refinement_stop, passes);
   res.refinement_passes = passes.refinement_passes;
   if (res.iterations < settings.max_iterations && passes.refinement_passes > first_passes) {
@@ -1018,7 +1018,7 @@ inline bool local_range(const Problem& pb, std::size_t moved, std::size_t R, Blo
 /// short Levenberg-Marquardt run (at most local_lm_iterations), both within the cap of the
 /// whole solve. Returns true (fmax set) at an interior root; otherwise st is the best state.
 inline bool local_warm_start(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                             Kappa_solve_report& res, double& fmax) {
+                             Kappa_curve_report& res, double& fmax) {
   if (settings.moved >= pb.n) return false;
   std::vector<double> F;
   double best = evaluate(pb, st, F);
@@ -1056,7 +1056,7 @@ inline bool local_warm_start(const Problem& pb, Kappa_solver_state& st, const So
 /// Global warm start: Newton's method from the previous solution. Returns true (fmax set) at
 /// an interior root; otherwise st is left unchanged.
 inline bool global_warm_newton(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                               Kappa_solve_report& res, double& fmax) {
+                               Kappa_curve_report& res, double& fmax) {
   Kappa_solver_state start = st;
   fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), warm_newton_iterations));
   if (is_root(pb, st, fmax, settings)) return true;
@@ -1076,7 +1076,7 @@ constexpr double polish_face_margin = 1e-2;
 /// polish_reserve Jacobians; st is kept (and fmax returned) only when the polish ends at a root
 /// or lowers max |r|.
 inline double newton_polish(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                            Kappa_solve_report& res, double fmax) {
+                            Kappa_curve_report& res, double fmax) {
   if (is_root(pb, st, fmax, settings) || remaining_iterations(settings, res) == 0) return fmax;
   Kappa_solver_state trial = st;
   const double f = newton(pb, trial, settings, res, std::min(remaining_iterations(settings, res), polish_reserve / 2));
@@ -1112,7 +1112,7 @@ inline double newton_polish(const Problem& pb, Kappa_solver_state& st, const Sol
 /// state, then Levenberg-Marquardt and newton_polish again), keeping the better. Returns the max
 /// |r| reached.
 inline double levenberg_marquardt_with_restart(const Problem& pb, Kappa_solver_state& st,
-                                               const Solve_settings& settings, Kappa_solve_report& res) {
+                                               const Solve_settings& settings, Kappa_curve_report& res) {
   const auto lm_cap = [&]() {
     const std::size_t left = remaining_iterations(settings, res);
     return left > 2 * polish_reserve ? left - 2 * polish_reserve : left / 2;
@@ -1151,7 +1151,7 @@ inline double piece_maximum_or_end(const Problem& pb, const Kappa_solver_state& 
 /// "Outcomes"): it solves a few real-data curves more; a Levenberg-Marquardt run after a failed
 /// Newton run solved two more but doubled the Jacobians of hard random sets, and was dropped.
 inline double steer_off_minima(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                               Kappa_solve_report& res, double fmax) {
+                               Kappa_curve_report& res, double fmax) {
   for (std::size_t round = 0; round < steering_rounds; ++round) {
     if (!(fmax <= settings.tolerance) || remaining_iterations(settings, res) == 0) break;
     std::vector<std::size_t> minima;
@@ -1178,7 +1178,7 @@ inline double steer_off_minima(const Problem& pb, Kappa_solver_state& st, const 
 /// the run is skipped and only the start and passes are recomputed (st is then the state after
 /// the passes, as cold_start_newton leaves it on failure). Returns max |r|.
 inline double cold_solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                         Kappa_solve_report& res, bool newton_paths_failed) {
+                         Kappa_curve_report& res, bool newton_paths_failed) {
   double fmax = std::numeric_limits<double>::infinity();
   bool root = false;
   if (!newton_paths_failed) {
@@ -1202,9 +1202,9 @@ struct Solve_trace {
 /// Cold start: cold_solve. Warm start (st of size n): local_warm_start around the moved block,
 /// else global_warm_newton, else cold_start_newton (report().warm_started false then), else
 /// levenberg_marquardt_with_restart from the previous solution.
-inline Kappa_solve_report solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+inline Kappa_curve_report solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
                                 Solve_trace* trace = nullptr) {
-  Kappa_solve_report res;
+  Kappa_curve_report res;
   if (trace != nullptr) *trace = Solve_trace{};
   const bool cold = !settings.warm || st.t.size() != pb.n;
   res.warm_started = !cold;
@@ -1240,7 +1240,7 @@ inline Kappa_solve_report solve(const Problem& pb, Kappa_solver_state& st, const
 /// `moved_point` (any value that is not an input point: unknown change), and if that ends
 /// UNSOLVED a cold start as well, keeping the better solve (by outcome, then residual)
 /// (report().warm_started says which); without one, a cold start. `st` receives the solution.
-inline Kappa_solve_report solve_with_warm_start(const Problem& pb, const Kappa_solver_state* previous,
+inline Kappa_curve_report solve_with_warm_start(const Problem& pb, const Kappa_solver_state* previous,
                                                 std::size_t moved_point, Solve_settings settings,
                                                 Kappa_solver_state& st) {
   settings.warm = false;
@@ -1251,20 +1251,20 @@ inline Kappa_solve_report solve_with_warm_start(const Problem& pb, const Kappa_s
   warm.warm = true;
   warm.moved = pb.block_of_point(moved_point);
   Solve_trace trace;
-  const Kappa_solve_report warm_report = solve(pb, st, warm, &trace);
+  const Kappa_curve_report warm_report = solve(pb, st, warm, &trace);
   // A warm root on joins is the constrained solution near the previous one: kept (a cold solve
   // costs more than the whole warm one and would jump to another root far from the edit).
-  if (warm_report.status != Kappa_solve_status::UNSOLVED) return warm_report;
+  if (warm_report.status != Kappa_curve_status::UNSOLVED) return warm_report;
   // The cold solve; when the warm one's fallback already ran the cold Newton paths and they
   // failed, they are not repeated (up to 2 x newton_iterations + density_start_iterations
   // Jacobians for nothing: fuzz finding slow-fixed-weights-25-points). Otherwise (e.g. a warm
   // root with a point at a minimum from the warm Newton stages) the cold solve runs all paths.
   Kappa_solver_state cold;
-  Kappa_solve_report cold_report;
+  Kappa_curve_report cold_report;
   const double cold_fmax = cold_solve(pb, cold, settings, cold_report, trace.cold_newton_paths_failed);
   cold_report = finish(pb, cold, settings, cold_report, cold_fmax);
   // Ranked by outcome (INTERIOR, ON_JOINS, UNSOLVED: the enum's order), then by residual (NaN last).
-  const auto rank = [](const Kappa_solve_report& r) { return static_cast<int>(r.status); };
+  const auto rank = [](const Kappa_curve_report& r) { return static_cast<int>(r.status); };
   const bool cold_better = rank(cold_report) < rank(warm_report) ||
                            (rank(cold_report) == rank(warm_report) &&
                             (cold_report.residual < warm_report.residual || (std::isnan(warm_report.residual) && !std::isnan(cold_report.residual))));

@@ -32,7 +32,7 @@
 #define FAIR_INTERNAL_KAPPA_SYSTEM_H
 
 #include <fair/Kappa_curve_options.h>
-#include <fair/Kappa_solve_report.h>
+#include <fair/Kappa_curve_report.h>
 #include <fair/internal/kappa/dual.h>
 
 #include <algorithm>
@@ -71,7 +71,7 @@ struct Problem {
 };
 
 // The unknowns of a solve are the public fair::Kappa_solver_state (d_i = P_i - Q_i, lambda_i,
-// t_i; w_i as last computed) and its report the public fair::Kappa_solve_report, both filled
+// t_i; w_i as last computed) and its report the public fair::Kappa_curve_report, both filled
 // here directly (residuals normalised as in the file comment).
 
 // ----------------------------------------------------------------------------- residuals
@@ -228,7 +228,7 @@ void block_residuals(const Problem& pb, const Kappa_solver_state& st, std::size_
 
 /// All residuals in double; returns max |r| and fills the per-kind maxima/energies.
 inline double evaluate(const Problem& pb, const Kappa_solver_state& st, std::vector<double>& F,
-                       Kappa_solve_report* res = nullptr, std::vector<double>* weights = nullptr) {
+                       Kappa_curve_report* res = nullptr, std::vector<double>* weights = nullptr) {
   F.resize(4 * pb.n);
   double mx = 0;
   if (res) {

@@ -16,6 +16,7 @@
 
 #include <fair/Errors.h>
 #include <fair/Optimal_curve_options.h>
+#include <fair/Optimal_curve_report.h>
 #include <fair/internal/optimal/constraints.h>
 #include <fair/internal/optimal/functional.h>
 #include <fair/internal/optimal/lambda.h>

@@ -1,12 +1,12 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// What the solve of a fair::Kappa_curve_2 did and reached (Kappa_solve_report) and where it
+// What the solve of a fair::Kappa_curve_2 did and reached (Kappa_curve_report) and where it
 // ended (Kappa_solver_state): both filled by the solver itself (internal/kappa/solver.h).
 // Equation numbers refer to Yan, Schiller, Schaefer, "Circle reproduction with interpolatory
 // curves at local maximal curvature points".
 
-#ifndef FAIR_KAPPA_SOLVE_REPORT_H
-#define FAIR_KAPPA_SOLVE_REPORT_H
+#ifndef FAIR_KAPPA_CURVE_REPORT_H
+#define FAIR_KAPPA_CURVE_REPORT_H
 
 #include <cstddef>
 #include <ostream>
@@ -24,25 +24,25 @@ namespace fair {
 ///  - UNSOLVED: otherwise: the residual stays above the tolerance (worst_points says where), or a
 ///    point lies at a curvature MINIMUM of its piece (points_at_minima; possible with weights
 ///    w_i < 1, paper Sec. 3.2), even when every equation holds.
-enum class Kappa_solve_status { INTERIOR, ON_JOINS, UNSOLVED };
+enum class Kappa_curve_status { INTERIOR, ON_JOINS, UNSOLVED };
 
 /// "interior", "on_joins" or "unsolved" (the spelling of the JSON of fair-curves kappa).
-inline const char* to_string(Kappa_solve_status s) {
+inline const char* to_string(Kappa_curve_status s) {
   switch (s) {
-    case Kappa_solve_status::INTERIOR: return "interior";
-    case Kappa_solve_status::ON_JOINS: return "on_joins";
-    case Kappa_solve_status::UNSOLVED: break;
+    case Kappa_curve_status::INTERIOR: return "interior";
+    case Kappa_curve_status::ON_JOINS: return "on_joins";
+    case Kappa_curve_status::UNSOLVED: break;
   }
   return "unsolved";
 }
-inline std::ostream& operator<<(std::ostream& out, Kappa_solve_status s) { return out << to_string(s); }
+inline std::ostream& operator<<(std::ostream& out, Kappa_curve_status s) { return out << to_string(s); }
 
 /// An input point and the largest residual of its block (eq. 18 as distances, eq. 7, |kappa|
 /// continuity at the join before it, eq. 16 with automatic weights): one of the worst points
 /// of an UNSOLVED solve.
 struct Kappa_point_residual {
   std::size_t point = 0;   ///< index into the input points
-  double residual = 0;     ///< dimensionless, as Kappa_solve_report::residual
+  double residual = 0;     ///< dimensionless, as Kappa_curve_report::residual
   friend bool operator==(const Kappa_point_residual& a, const Kappa_point_residual& b) {
     return a.point == b.point && a.residual == b.residual;
   }
@@ -51,11 +51,11 @@ struct Kappa_point_residual {
 /// What a solve did and reached. Residuals are dimensionless: distances in units of the half
 /// size of the bounding box of the points, eq. 7 divided by A_i + C_i, relative |kappa|
 /// mismatch (Kappa_curve_2.h).
-struct Kappa_solve_report {
+struct Kappa_curve_report {
   /// Most worst_points an UNSOLVED report lists.
   static constexpr std::size_t worst_points_listed = 5;
-  Kappa_solve_status status = Kappa_solve_status::UNSOLVED;  ///< the outcome (see Kappa_solve_status)
-  /// Deprecated (kept one release): status == Kappa_solve_status::INTERIOR.
+  Kappa_curve_status status = Kappa_curve_status::UNSOLVED;  ///< the outcome (see Kappa_curve_status)
+  /// Deprecated (kept one release): status == Kappa_curve_status::INTERIOR.
   bool converged = false;
   bool warm_started = false;           ///< the solution came from the previous one (not a cold start)
   std::size_t refinement_passes = 0;   ///< alternating passes of Sec. 5.1
@@ -97,8 +97,8 @@ struct Kappa_solve_report {
   std::vector<std::size_t> points_beyond_density_limit;
   double energy() const { return energy_interpolation + energy_curvature + energy_g2 + energy_weight; }
 
-  friend std::ostream& operator<<(std::ostream& out, const Kappa_solve_report& r) {
-    out << "Kappa_solve_report{" << r.status << ", warm " << r.warm_started << ", passes "
+  friend std::ostream& operator<<(std::ostream& out, const Kappa_curve_report& r) {
+    out << "Kappa_curve_report{" << r.status << ", warm " << r.warm_started << ", passes "
         << r.refinement_passes << ", iterations " << r.iterations << ", residual " << r.residual << " (interpolation "
         << r.interpolation_residual << ", eq.7 " << r.curvature_residual << ", |kappa| " << r.g2_residual << ", weight "
         << r.weight_residual << "), bounds active " << r.bounds_active;
@@ -140,4 +140,4 @@ struct Kappa_solver_state {
 
 } // namespace fair
 
-#endif // FAIR_KAPPA_SOLVE_REPORT_H
+#endif // FAIR_KAPPA_CURVE_REPORT_H

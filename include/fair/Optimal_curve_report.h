@@ -1,0 +1,53 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// The outcome of a fair::Optimal_curve_2 solve (Optimal_curve_status) and what the solve did
+// (Optimal_curve_report): filled by the solver (internal/optimal/hierarchy.h).
+
+#ifndef FAIR_OPTIMAL_CURVE_REPORT_H
+#define FAIR_OPTIMAL_CURVE_REPORT_H
+
+#include <cstddef>
+#include <ostream>
+#include <vector>
+
+namespace fair {
+
+/// CONVERGED: the Newton decrement (with a negligible shift) fell below the tolerance on every
+/// level and the target resolution was reached; DIVERGING: the curve runs away (its extent grows
+/// beyond a cap: the functional has no finite minimiser for these data); CAPPED: an iteration,
+/// level or vertex cap was hit first, or the solver failed (an edge collapsed, no descent step). JSON spelling: "converged", "diverging", "capped".
+enum class Optimal_curve_status { CONVERGED, DIVERGING, CAPPED };
+
+/// One level of the hierarchy: its vertices, solver iterations, final energy, the Euclidean
+/// norm of the reduced gradient (dF/d offsets; on a CONVERGED level: at the start of the final
+/// Newton step, which is then still taken and squares it) and its outcome.
+struct Optimal_curve_level {
+  std::size_t vertices = 0, iterations = 0;
+  double energy = 0, gradient_norm = 0;
+  Optimal_curve_status status = Optimal_curve_status::CAPPED;
+};
+/// The whole solve: outcome (the worst of the levels, or CAPPED if a level/vertex cap stopped the
+/// hierarchy before the target resolution), final energy, total iterations, the reduced gradient
+/// norm of the last level (as in Optimal_curve_level), per-level records.
+struct Optimal_curve_report {
+  Optimal_curve_status status = Optimal_curve_status::CAPPED;
+  double energy = 0;
+  std::size_t iterations = 0;
+  double gradient_norm = 0;
+  std::vector<Optimal_curve_level> levels;
+};
+
+/// "converged", "diverging" or "capped".
+inline const char* to_string(Optimal_curve_status s) {
+  switch (s) {
+    case Optimal_curve_status::CONVERGED: return "converged";
+    case Optimal_curve_status::DIVERGING: return "diverging";
+    case Optimal_curve_status::CAPPED: break;
+  }
+  return "capped";
+}
+inline std::ostream& operator<<(std::ostream& out, Optimal_curve_status s) { return out << to_string(s); }
+
+} // namespace fair
+
+#endif // FAIR_OPTIMAL_CURVE_REPORT_H
