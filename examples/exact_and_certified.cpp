@@ -5,6 +5,7 @@
 // exact arithmetic. Exits non-zero if a published value or a certificate does not hold.
 
 #include <fair/Cardinal_spline_2.h>
+#include <fair/Kappa_certificate.h>
 #include <fair/Kappa_curve_2.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
