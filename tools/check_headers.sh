@@ -57,38 +57,40 @@ mapfile -t all_headers < <(find fair -type f \( -name '*.h' -o -name '*.hpp' \) 
 mapfile -t public_headers < <(find fair fair/io -maxdepth 1 -type f -name '*.h' | LC_ALL=C sort -u)
 
 # ---------------------------------------------------------------- 1. file length
-for f in "${all_headers[@]}"; do
-  n=$(wc -l < "$f")
+while read -r n f; do
+  [ "$f" = total ] && continue
   [ "$n" -le "$max_lines" ] || fail "include/$f has $n lines (at most $max_lines)"
-done
+done < <(wc -l "${all_headers[@]}")
 
 # ---------------------------------------------------------------- 2. internal code in public headers
+internal_opening='^[[:space:]]*(inline[[:space:]]+)?namespace[[:space:]]+([A-Za-z_:]*::)?internal([[:space:]]|\{|::|$)'
 is_allowed() {
   local a
   for a in "${allowed[@]+"${allowed[@]}"}"; do [ "$a" = "$1" ] && return 0; done
   return 1
 }
-for f in "${public_headers[@]}"; do
-  # An opening of the namespace (`namespace internal {`, `namespace fair::internal::x {`), not a
-  # using-directive (`using namespace internal::parametric;`) or a qualified name.
-  hits=$(grep -nE '^[[:space:]]*(inline[[:space:]]+)?namespace[[:space:]]+([A-Za-z_:]*::)?internal([[:space:]]|\{|::|$)' "$f")
-  [ -n "$hits" ] || continue
+# An opening of the namespace (`namespace internal {`, `namespace fair::internal::x {`), not a
+# using-directive (`using namespace internal::parametric;`) or a qualified name.
+mapfile -t offenders < <(grep -lE "$internal_opening" "${public_headers[@]}")
+for f in "${offenders[@]+"${offenders[@]}"}"; do
+  hits=$(grep -nE "$internal_opening" "$f")
   if is_allowed "$f"; then
     echo "allowed: include/$f opens namespace internal (exempted by --allow-internal)"
   else
-    fail "include/$f opens namespace internal (move the code to include/fair/internal/<part>/):"
+    fail "include/$f opens namespace internal (move the code to include/fair/internal/<part>/ or include/fair/io/internal/):"
     echo "$hits" | sed 's/^/      /'
   fi
 done
 
 # ---------------------------------------------------------------- 3. include cycles
 declare -A edges state
+# Only the library's own headers, in the form the library uses: #include <fair/...>.
+while read -r f g; do
+  edges[$f]+="$g "
+done < <(awk 'match($0, /^[ \t]*#[ \t]*include[ \t]*[<"]fair\/[^>"]+/) {
+                s = substr($0, RSTART, RLENGTH); sub(/^[^<"]*[<"]/, "", s); print FILENAME, s }' "${all_headers[@]}")
 for f in "${all_headers[@]}"; do
-  # Only the library's own headers, in the form the library uses: #include <fair/...>.
-  edges[$f]=$(sed -nE 's@^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"](fair/[^>"]+)[>"].*@\1@p' "$f" | tr '\n' ' ')
-done
-for f in "${all_headers[@]}"; do
-  for g in ${edges[$f]}; do
+  for g in ${edges[$f]:-}; do
     [ -f "$g" ] || fail "include/$f includes <$g>, which does not exist"
   done
 done
