@@ -73,7 +73,7 @@ void BM_unique_root_kappa_array(benchmark::State& state) {
   const auto eqs = kappa_equations();
   std::size_t i = 0;
   for (auto _ : state) {
-    const fair::Unique_root u = fair::internal::bernstein::certified_unique_root(eqs[i++ % pool]);
+    const fair::Unique_root u = fair::certified_unique_root(eqs[i++ % pool]);
     benchmark::DoNotOptimize(u.root);
   }
 }
@@ -84,7 +84,7 @@ void BM_unique_root_kappa_array_one_ulp(benchmark::State& state) {
   const auto eqs = kappa_equations();
   std::size_t i = 0;
   for (auto _ : state) {
-    const fair::Unique_root u = fair::internal::bernstein::certified_unique_root(eqs[i++ % pool], 1.0);
+    const fair::Unique_root u = fair::certified_unique_root(eqs[i++ % pool], 1.0);
     benchmark::DoNotOptimize(u.root);
   }
 }

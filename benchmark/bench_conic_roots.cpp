@@ -12,6 +12,7 @@
 
 #include <fair/Bernstein_root_isolation.h>
 #include <fair/Rational_quadratic_bezier_2.h>
+#include <fair/Rational_quadratic_interpolation.h>
 #include <fair/internal/conic/interpolation.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -65,7 +66,7 @@ void BM_eq7_double_unique_root_of_rounded_quartic(benchmark::State& state) {
     const double v0x = r.x0 - r.qx, v0y = r.y0 - r.qy, v2x = r.x2 - r.qx, v2y = r.y2 - r.qy;
     const double A = v0x * v0x + v0y * v0y, B = v0x * v2x + v0y * v2y, C = v2x * v2x + v2y * v2y;
     const double b[5] = {-r.w * A, -(A + B) / 4, 0.0, (B + C) / 4, r.w * C};
-    benchmark::DoNotOptimize(fair::internal::bernstein::certified_unique_root(b, 5));
+    benchmark::DoNotOptimize(fair::internal::bernstein::certified_unique_root<fair::Unique_root>(b, 5));
   }
   state.SetItemsProcessed(state.iterations());
 }

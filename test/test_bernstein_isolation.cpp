@@ -407,7 +407,7 @@ TEST(BernsteinUniqueRoot, KappaEquationSevenAlwaysHasOneCertifiedRoot) {
     const double A = area(rng), C = area(rng), w = weight(rng);
     const double B = mix(rng) * std::min(A, C);
     const std::array<double, 5> b = {-w * A, -(A + B) / 4, 0.0, (B + C) / 4, w * C};
-    const fair::Unique_root u = fair::internal::bernstein::certified_unique_root(b);
+    const fair::Unique_root u = fair::certified_unique_root(b);
     EXPECT_EQ(u.sign_variations, 1);
     expect_certified_bracket(std::vector<double>(b.begin(), b.end()), u);
   }
@@ -455,7 +455,7 @@ TEST(BernsteinUniqueRoot, StatusesAndExactRoots) {
   EXPECT_EQ(half.status, U::UNIQUE_ROOT);
   EXPECT_EQ(half.lower, 0.5);
   EXPECT_EQ(half.upper, 0.5);
-  const U quarter = fair::internal::bernstein::certified_unique_root(std::array<double, 2>{-1, 3});
+  const U quarter = fair::certified_unique_root(std::array<double, 2>{-1, 3});
   EXPECT_EQ(quarter.root, 0.25);
   EXPECT_EQ(quarter.lower, quarter.upper);
   // A steep, badly scaled case: (-1e-300, 1e300) has its root near 1e-600, below the smallest

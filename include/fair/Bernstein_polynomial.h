@@ -21,7 +21,6 @@
 #define FAIR_BERNSTEIN_POLYNOMIAL_H
 
 #include <fair/Errors.h>
-#include <fair/Sign_variation_count.h>
 #include <fair/internal/bernstein/sign.h>
 
 #include <CGAL/number_utils.h>
@@ -225,12 +224,31 @@ private:
   std::vector<NT> b_;
 };
 
+/// Bounds on the number of sign variations of a coefficient sequence whose signs may be
+/// uncertain (CGAL::Interval_nt): the result of sign_variation_bounds. For exact and floating
+/// NT, lower == upper always. An uncertain coefficient may take any sign (including 0), so
+/// `lower` counts it as zero and `upper` lets it take whichever sign maximises the count.
+struct Sign_variation_count {
+  int lower = 0;
+  int upper = 0;
+  /// The count is known. It may be known even when some signs are not: (?) gives 0..0, while
+  /// (+, ?) gives 0..1.
+  bool certain() const { return lower == upper; }
+  /// The count; \throws Precondition_error if it is not certain.
+  int count() const {
+    internal::require(certain(), "Sign_variation_count::count: the sign variation count is uncertain, between ",
+                      lower, " and ", upper);
+    return lower;
+  }
+};
+
 /// Sign variation bounds of the Bernstein coefficients (zero coefficients skipped).
 /// By Descartes' rule in Bernstein form, the number of roots of p in the open interval (0,1),
 /// counted with multiplicity, is at most the variation count and has the same parity.
 template <class NT>
 Sign_variation_count sign_variation_bounds(const Bernstein_polynomial<NT>& p) {
-  return internal::bernstein::sign_variation_bounds(p.coefficients().begin(), p.coefficients().end());
+  return internal::bernstein::sign_variation_bounds<Sign_variation_count>(p.coefficients().begin(),
+                                                                         p.coefficients().end());
 }
 
 /// The number of sign variations of the Bernstein coefficients of p, zero coefficients skipped

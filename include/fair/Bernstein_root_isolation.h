@@ -35,7 +35,6 @@
 
 #include <fair/Bernstein_polynomial.h>
 #include <fair/Errors.h>
-#include <fair/Unique_root.h>
 #include <fair/internal/bernstein/dyadic.h>
 #include <fair/internal/bernstein/exact.h>
 #include <fair/internal/bernstein/unique_root.h>
@@ -354,17 +353,35 @@ std::vector<Isolating_interval> isolate_roots(const Bernstein_polynomial<NT>& p)
   return Bernstein_root_isolation(p).intervals();
 }
 
+/// Result of certified_unique_root: the fast certified root of a double Bernstein polynomial
+/// with exactly one sign change.
+struct Unique_root {
+  enum Status {
+    UNIQUE_ROOT, ///< exactly one distinct root in [0,1]; it lies in [lower, upper]
+    NO_ROOT,     ///< certainly no root in [0,1]
+    UNDECIDED    ///< the coefficients do not prove 0 or 1 roots: use Bernstein_root_isolation
+  };
+  Status status = UNDECIDED;
+  double root = 0;   ///< for UNIQUE_ROOT: a point of [lower, upper]
+  double lower = 0;  ///< certified bracket (lower == upper == root when the root is exact)
+  double upper = 0;
+  int sign_variations = 0;          ///< of the coefficient sequence, zeros skipped
+  bool used_exact_fallback = false; ///< whether some sign needed exact Gmpq evaluation
+};
+
 /// Fast certified path for the common case of exactly one sign change (see
 /// internal/bernstein/unique_root.h for the method and accuracy).
 /// `max_ulps` (>= 1) bounds the width of the certified bracket.
 inline Unique_root certified_unique_root(const Bernstein_polynomial<double>& p, double max_ulps = 8) {
-  return internal::bernstein::certified_unique_root(p.coefficients().data(), p.coefficients().size(), max_ulps);
+  return internal::bernstein::certified_unique_root<Unique_root>(p.coefficients().data(), p.coefficients().size(),
+                                                                 max_ulps);
 }
 
 /// The same on N = degree + 1 coefficients in a std::array: no heap allocation for N <= 32.
 template <std::size_t N>
 Unique_root certified_unique_root(const std::array<double, N>& b, double max_ulps = 8) {
-  return internal::bernstein::certified_unique_root(b, max_ulps);
+  static_assert(N >= 1, "certified_unique_root: at least one coefficient");
+  return internal::bernstein::certified_unique_root<Unique_root>(b.data(), N, max_ulps);
 }
 
 } // namespace fair

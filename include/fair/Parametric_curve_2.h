@@ -16,6 +16,7 @@
 #define FAIR_PARAMETRIC_CURVE_2_H
 
 #include <fair/Errors.h>
+#include <fair/internal/parametric/checks.h>
 #include <fair/internal/parametric/fresnel.h>
 
 #include <cmath>
@@ -43,21 +44,6 @@ inline Fresnel_integrals fresnel_integrals(double x) {
   internal::parametric::fresnel(x, r.c, r.s);
   return r;
 }
-
-namespace internal {
-namespace parametric {
-inline void check_domain(const char* what, double u0, double u1) {
-  require(std::isfinite(u0) && std::isfinite(u1) && u0 < u1, what, ": the parameter interval [", u0, ", ", u1,
-          "] is not a finite interval with begin < end");
-}
-inline void check_parameter(const char* what, double u, double u0, double u1) {
-  require(std::isfinite(u) && u0 <= u && u <= u1, what, "::jet: u = ", u, " is outside [", u0, ", ", u1, "]");
-}
-inline void check_finite(const char* what, const char* name, double v) {
-  require(std::isfinite(v), what, ": ", name, " = ", v, " is not finite");
-}
-} // namespace parametric
-} // namespace internal
 
 /// The Archimedean spiral f(theta) = center + r(theta) (cos theta, sin theta), r = a + b theta,
 /// theta in [theta0, theta1]. Closed forms, a few ulps relative to max(|r|, |b|).

@@ -7,7 +7,8 @@
 //   c(t) = ((1-t)^2 P0 + 2(1-t)t w P1 + t^2 P2) / W(t),   W(t) = (1-t)^2 + 2(1-t)t w + t^2,
 //
 // t in [0,1], w > 0, and P0, P1, P2 not collinear (a genuine conic arc, never a segment).
-// Models the CurvePiece_2 concept of doc/contributing.md.
+// Models the CurvePiece_2 concept of doc/contributing.md. Declares with it its vocabulary: Conic_type
+// (conic_type()), Curvature_extremum and Curvature_extremum_kind (curvature_extrema()).
 //
 // Closed forms used throughout (s = 1-t, D = det(P1-P0, P2-P1) = twice the signed area of the
 // control triangle):
@@ -27,14 +28,11 @@
 #define FAIR_RATIONAL_QUADRATIC_BEZIER_2_H
 
 #include <fair/Bernstein_polynomial.h>
-#include <fair/Conic_type.h>
-#include <fair/Curvature_extremum.h>
 #include <fair/Errors.h>
 #include <fair/Rational_bezier_2.h>
 #include <fair/internal/common/exact_conversion.h>
 #include <fair/internal/conic/curvature_extrema.h>
 #include <fair/internal/conic/implicit_form.h>
-#include <fair/internal/conic/interpolation.h>
 #include <fair/internal/conic/orientation.h>
 #include <fair/internal/conic/scaled.h>
 
@@ -52,6 +50,50 @@
 #include <vector>
 
 namespace fair {
+
+/// The affine type of a non-degenerate conic a x^2 + b xy + c y^2 + d x + e y + f = 0, decided
+/// by the sign of the discriminant b^2 - 4ac (negative: ellipse, zero: parabola, positive:
+/// hyperbola). For a rational quadratic Bezier piece in standard form with weight w > 0 and
+/// non-collinear control points this is w < 1, w = 1, w > 1 respectively (conic_type()).
+enum class Conic_type { ELLIPSE, PARABOLA, HYPERBOLA };
+
+inline const char* to_string(Conic_type type) {
+  switch (type) {
+    case Conic_type::ELLIPSE: return "ellipse";
+    case Conic_type::PARABOLA: return "parabola";
+    case Conic_type::HYPERBOLA: return "hyperbola";
+  }
+  return "unknown";
+}
+
+inline std::ostream& operator<<(std::ostream& out, Conic_type type) { return out << to_string(type); }
+
+/// How |kappa| behaves at a root of the eq.-4 polynomial.
+enum class Curvature_extremum_kind {
+  MAXIMUM,   ///< |kappa| increases before and decreases after (local maximum)
+  MINIMUM,   ///< |kappa| decreases before and increases after (local minimum)
+  STATIONARY ///< a root of even multiplicity: kappa' = 0 but no extremum
+};
+
+inline const char* to_string(Curvature_extremum_kind k) {
+  switch (k) {
+    case Curvature_extremum_kind::MAXIMUM: return "maximum";
+    case Curvature_extremum_kind::MINIMUM: return "minimum";
+    case Curvature_extremum_kind::STATIONARY: return "stationary";
+  }
+  return "unknown";
+}
+inline std::ostream& operator<<(std::ostream& out, Curvature_extremum_kind k) { return out << to_string(k); }
+
+/// A certified critical point of the curvature of a piece in (0,1), as returned by
+/// Rational_quadratic_bezier_2::curvature_extrema() (eq. 4). The root is exactly t_lower when
+/// t_lower == t_upper, otherwise it lies in the open interval (t_lower, t_upper).
+struct Curvature_extremum {
+  CGAL::Gmpq t_lower, t_upper;
+  double t = 0.5;        ///< a double in [t_lower, t_upper], within a few ulps of the root
+  int multiplicity = 1;  ///< exact multiplicity as a root of the eq.-4 polynomial
+  Curvature_extremum_kind kind = Curvature_extremum_kind::MAXIMUM;
+};
 
 template <class K>
 class Rational_quadratic_bezier_2 {
@@ -227,7 +269,7 @@ public:
     if (fast == 1) return {x};
     const Bernstein_polynomial<CGAL::Gmpq> E(exact_eq4());
     if (E.is_zero()) return {}; // circular arc: constant curvature, no isolated extrema
-    return internal::conic::isolated_curvature_extrema(E);
+    return internal::conic::isolated_curvature_extrema<Curvature_extremum>(E);
   }
 
   // ---------------------------------------------------------------- conic (eq. 14, eq. 15)
@@ -382,8 +424,5 @@ private:
 };
 
 } // namespace fair
-
-// The interpolation of a point at a curvature extremum (eq. 6, eq. 7) by such pieces.
-#include <fair/Rational_quadratic_interpolation.h>
 
 #endif // FAIR_RATIONAL_QUADRATIC_BEZIER_2_H

@@ -22,6 +22,7 @@
 #include <fair/Errors.h>
 #include <fair/Rational_bezier_2.h>
 #include <fair/internal/spline/checks.h>  // c2_relative_tolerance, is_exact_number
+#include <fair/internal/tensor/cartesian_traits.h>
 #include <fair/internal/tensor/net.h>
 
 #include <CGAL/Point_3.h>
@@ -49,20 +50,6 @@ struct Homogeneous_point_3 {
 /// The scalar coordinates of a coefficient type: FT, dimension, coordinate(v, i), make(array).
 template <class V>
 struct Tensor_coefficient_traits;
-
-namespace internal {
-namespace tensor {
-/// The coordinates of a CGAL Point_3 or Vector_3 of kernel K.
-template <class V, class K>
-struct Cartesian_3_traits {
-  typedef V Coefficient;
-  typedef typename K::FT FT;
-  static constexpr std::size_t dimension = 3;
-  static FT coordinate(const Coefficient& p, std::size_t i) { return p[static_cast<int>(i)]; }
-  static Coefficient make(const std::array<FT, 3>& x) { return Coefficient(x[0], x[1], x[2]); }
-};
-} // namespace tensor
-} // namespace internal
 
 template <class K>
 struct Tensor_coefficient_traits<CGAL::Point_3<K>> : internal::tensor::Cartesian_3_traits<CGAL::Point_3<K>, K> {};

@@ -5,6 +5,8 @@
 
 #include "support.h"
 
+#include <fair/Rational_quadratic_interpolation.h>
+
 namespace {
 
 // ------------------------------------------------------------------ eq. 6 and eq. 7

@@ -8,7 +8,6 @@
 #define FAIR_INTERNAL_BERNSTEIN_SIGN_H
 
 #include <fair/Errors.h>
-#include <fair/Sign_variation_count.h>
 
 #include <CGAL/Uncertain.h>
 #include <CGAL/enum.h>
@@ -47,9 +46,11 @@ std::pair<int, int> sign_range_of(const NT& x) {
 
 /// Sign variation bounds of the sequence [first, last), zero coefficients skipped.
 /// `upper` is computed by a dynamic programme over the last nonzero sign (none, -, +).
-template <class Iterator>
-Sign_variation_count sign_variation_bounds(Iterator first, Iterator last) {
-  Sign_variation_count out;
+/// `Count` is fair::Sign_variation_count (members `lower`, `upper`): a template parameter, so
+/// that its one declaration stays in Bernstein_polynomial.h, which includes this file.
+template <class Count, class Iterator>
+Count sign_variation_bounds(Iterator first, Iterator last) {
+  Count out;
   int last_certain = 0;        // last certainly nonzero sign, for the lower bound
   const int NONE = -1000000;   // "unreachable" state marker
   int best_none = 0, best_minus = NONE, best_plus = NONE; // max variations ending in each state

@@ -26,7 +26,6 @@
 #define FAIR_INTERNAL_BERNSTEIN_UNIQUE_ROOT_H
 
 #include <fair/Errors.h>
-#include <fair/Unique_root.h>
 #include <fair/internal/bernstein/dyadic.h>
 
 #include <CGAL/FPU.h>
@@ -200,11 +199,13 @@ Double_bracket tighten_double_bracket(const CGAL::Interval_nt<false>* c, const d
 
 /// The core routine on m = degree + 1 coefficients b[0..m-1]. The certified bracket is at most
 /// `max_ulps` ulps wide (>= 1; 1 asks for adjacent doubles, at the price of more exact
-/// evaluations near the root).
-inline Unique_root certified_unique_root(const double* b, std::size_t m, double max_ulps = 8) {
+/// evaluations near the root). `Result` is fair::Unique_root: a template parameter, so that its
+/// one declaration stays in Bernstein_root_isolation.h, which includes this file.
+template <class Result>
+Result certified_unique_root(const double* b, std::size_t m, double max_ulps = 8) {
   require(m >= 1, "certified_unique_root: no coefficients");
   require(max_ulps >= 1, "certified_unique_root: max_ulps = ", max_ulps, " must be >= 1");
-  Unique_root out;
+  Result out;
   bool all_zero = true;
   int last = 0;
   for (std::size_t i = 0; i < m; ++i) {
@@ -223,14 +224,14 @@ inline Unique_root certified_unique_root(const double* b, std::size_t m, double 
   if (zero_at_0 || zero_at_1) {
     // Roots at the end points are exact; the variation count bounds the roots in (0,1).
     if (out.sign_variations == 0 && zero_at_0 != zero_at_1) {
-      out.status = Unique_root::UNIQUE_ROOT;
+      out.status = Result::UNIQUE_ROOT;
       out.root = out.lower = out.upper = zero_at_0 ? 0.0 : 1.0;
     }
     return out;
   }
-  if (out.sign_variations == 0) { out.status = Unique_root::NO_ROOT; return out; }
+  if (out.sign_variations == 0) { out.status = Result::NO_ROOT; return out; }
   if (out.sign_variations != 1) return out;
-  out.status = Unique_root::UNIQUE_ROOT;
+  out.status = Result::UNIQUE_ROOT;
 
   const int s0 = sign_of(b[0]);
   // Start at the crossing of the control polygon with the axis.
@@ -271,13 +272,6 @@ inline Unique_root certified_unique_root(const double* b, std::size_t m, double 
   out.root = r.root;
   out.used_exact_fallback = r.used_exact;
   return out;
-}
-
-/// Fixed-size overload (no heap allocation for N <= 32).
-template <std::size_t N>
-Unique_root certified_unique_root(const std::array<double, N>& b, double max_ulps = 8) {
-  static_assert(N >= 1, "certified_unique_root: at least one coefficient");
-  return certified_unique_root(b.data(), N, max_ulps);
 }
 
 } // namespace bernstein

@@ -134,7 +134,7 @@ public:
       Node node = std::move(stack.back());
       stack.pop_back();
       if (!node.exact) {
-        const Sign_variation_count v = sign_variation_bounds(node.I.begin(), node.I.end());
+        const Sign_variation_count v = sign_variation_bounds<Sign_variation_count>(node.I.begin(), node.I.end());
         if (v.upper == 0) continue;
         if (v.certain() && v.lower == 1) {
           leaves_.push_back({node.lower(), node.upper(), 1, first_certain_sign(node.I)});
@@ -158,7 +158,7 @@ public:
         node.exact = true;
         node.I.clear();
       }
-      const Sign_variation_count v = sign_variation_bounds(node.X.begin(), node.X.end());
+      const Sign_variation_count v = sign_variation_bounds<Sign_variation_count>(node.X.begin(), node.X.end());
       if (v.lower == 0) continue;
       if (v.lower == 1) {
         leaves_.push_back({node.lower(), node.upper(), 1, first_certain_sign(node.X)});

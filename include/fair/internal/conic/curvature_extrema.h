@@ -9,7 +9,7 @@
 //    enclosures of the exact inputs; when their signs are certain and show 0 variations (no
 //    root in [0,1]) or 1 variation (exactly one simple root in (0,1), Descartes' rule in the
 //    Bernstein basis), the root is bracketed by certified_unique_root_quartic
-//    (internal/conic/interpolation.h): certified for the exact inputs, E(t_lower) and E(t_upper)
+//    (internal/conic/quartic_root.h): certified for the exact inputs, E(t_lower) and E(t_upper)
 //    of opposite exact signs, bracket a few ulps wide, exact fallback inside;
 //  - otherwise (isolated_curvature_extrema): certified isolation (fair::Bernstein_root_isolation)
 //    of E built exactly from the exact values of the inputs; then, for a root of multiplicity m,
@@ -18,15 +18,18 @@
 //    Odd m: E changes sign, -,+ means MAXIMUM of |kappa| and +,- MINIMUM; even m: STATIONARY.
 // Both stages return the same extrema; the fast path avoids the exact isolation on almost
 // every piece.
+// Both fill fair::Curvature_extremum, declared in Rational_quadratic_bezier_2.h, which includes
+// this file: the result type is a template parameter (`Extremum`, with members t_lower, t_upper,
+// t, multiplicity and kind of the enum type Curvature_extremum_kind) so that the public header
+// stays its one owner without an include cycle.
 
 #ifndef FAIR_INTERNAL_CONIC_CURVATURE_EXTREMA_H
 #define FAIR_INTERNAL_CONIC_CURVATURE_EXTREMA_H
 
 #include <fair/Bernstein_polynomial.h>
 #include <fair/Bernstein_root_isolation.h>
-#include <fair/Curvature_extremum.h>
 #include <fair/Errors.h>
-#include <fair/internal/conic/interpolation.h>
+#include <fair/internal/conic/quartic_root.h>
 
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
@@ -95,11 +98,12 @@ std::vector<NT> eq4_coefficients(const NT& x0, const NT& y0, const NT& x1, const
 /// (E(t_lower), E(t_upper) of opposite exact signs, or t_lower == t_upper == the exact root,
 /// detected for short dyadic roots, see short_dyadic_root_bits) and its kind (E from - to + is
 /// a MAXIMUM of |kappa|); -1 when the intervals cannot decide (the caller then runs
-/// isolated_curvature_extrema). The bracket is a few ulps wide (see interpolation.h).
-template <class Exact_coefficients>
+/// isolated_curvature_extrema). The bracket is a few ulps wide (see quartic_root.h).
+template <class Exact_coefficients, class Extremum>
 int eq4_unique_extremum(const Rq_interval& x0, const Rq_interval& y0, const Rq_interval& x1, const Rq_interval& y1,
                         const Rq_interval& x2, const Rq_interval& y2, const Rq_interval& w,
-                        Exact_coefficients exact, Curvature_extremum& x) {
+                        Exact_coefficients exact, Extremum& x) {
+  typedef decltype(x.kind) Kind;
   Rq_interval b[5];
   int sign[5];
   {
@@ -123,9 +127,9 @@ int eq4_unique_extremum(const Rq_interval& x0, const Rq_interval& y0, const Rq_i
     }
     return quartic_sign_exact(e, t);
   };
-  const Rational_quadratic_extremum_parameter r = certified_unique_root_quartic(b, exact_sign);
+  const Quartic_root r = certified_unique_root_quartic(b, exact_sign);
   x.multiplicity = 1;
-  x.kind = sign[0] < 0 ? Curvature_extremum_kind::MAXIMUM : Curvature_extremum_kind::MINIMUM;
+  x.kind = sign[0] < 0 ? Kind::MAXIMUM : Kind::MINIMUM;
   x.t = r.t;
   // The shortest dyadic nearby.
   const double m = std::ldexp(std::nearbyint(std::ldexp(r.t, short_dyadic_root_bits)), -short_dyadic_root_bits);
@@ -141,13 +145,15 @@ int eq4_unique_extremum(const Rq_interval& x0, const Rq_interval& y0, const Rq_i
 
 /// The certified critical points in (0,1) of the exact eq.-4 polynomial E (not identically
 /// zero), sorted, each with its kind: exact isolation, see the file comment.
-inline std::vector<Curvature_extremum> isolated_curvature_extrema(const Bernstein_polynomial<CGAL::Gmpq>& E) {
-  std::vector<Curvature_extremum> out;
+template <class Extremum>
+std::vector<Extremum> isolated_curvature_extrema(const Bernstein_polynomial<CGAL::Gmpq>& E) {
+  typedef decltype(Extremum::kind) Kind;
+  std::vector<Extremum> out;
   Bernstein_root_isolation iso(E);
   for (std::size_t i = 0; i < iso.number_of_roots(); ++i) {
     const Isolating_interval I = iso[i];
     if (I.is_point() && (CGAL::is_zero(I.lower) || I.lower == CGAL::Gmpq(1))) continue; // t = 0 or 1
-    Curvature_extremum x;
+    Extremum x;
     x.multiplicity = I.multiplicity;
     int right = 0;
     for (int attempt = 0; right == 0 && attempt < max_sign_search_bisections; ++attempt) {
@@ -169,8 +175,8 @@ inline std::vector<Curvature_extremum> isolated_curvature_extrema(const Bernstei
     }
     FAIR_ASSERT_MSG(right != 0, "Rational_quadratic_bezier_2::curvature_extrema: no sign next to the root in ", iso[i]);
     const int left = (I.multiplicity % 2 == 1) ? -right : right;
-    if (I.multiplicity % 2 == 0) x.kind = Curvature_extremum_kind::STATIONARY;
-    else x.kind = (left < 0 && right > 0) ? Curvature_extremum_kind::MAXIMUM : Curvature_extremum_kind::MINIMUM;
+    if (I.multiplicity % 2 == 0) x.kind = Kind::STATIONARY;
+    else x.kind = (left < 0 && right > 0) ? Kind::MAXIMUM : Kind::MINIMUM;
     x.t = iso.root_approximation(i);
     x.t_lower = iso[i].lower;
     x.t_upper = iso[i].upper;

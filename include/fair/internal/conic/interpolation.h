@@ -22,8 +22,9 @@
 // The code does not trust the proof: it determines the four signs (by interval arithmetic, or
 // exactly with CGAL::Gmpq when the intervals cannot decide) and counts the variations.
 //
-// Root refinement: the shared certified-bracket mechanism of the Bernstein internals,
-// fair::internal::bernstein::tighten_double_bracket (internal/bernstein/unique_root.h), fed with interval
+// Root refinement: certified_unique_root_quartic (internal/conic/quartic_root.h), the shared
+// certified-bracket mechanism of the Bernstein internals
+// (fair::internal::bernstein::tighten_double_bracket, internal/bernstein/unique_root.h), fed with interval
 // ENCLOSURES of the exact coefficients (CGAL::Interval_nt, outward rounding) and an exact
 // fallback that evaluates f exactly (CGAL::Gmpq) at double points: safeguarded Newton in double,
 // a bracket grown by certified interval signs, then shrunk to <= 32 ulps by bisection with the
@@ -42,8 +43,8 @@
 #define FAIR_INTERNAL_CONIC_INTERPOLATION_H
 
 #include <fair/Errors.h>
-#include <fair/internal/bernstein/unique_root.h>
 #include <fair/internal/common/exact_conversion.h>
+#include <fair/internal/conic/quartic_root.h>
 
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
@@ -60,20 +61,9 @@ namespace fair {
 namespace internal {
 namespace conic {
 
-typedef CGAL::Interval_nt<false> Rq_interval;
-
-/// Width cap of the certified eq.-7 bracket, in ulps of its upper end: the interval-certified
-/// bracket grown around Newton's iterate is usually that narrow already, so the exact fallback
-/// (Gmpq) is rarely needed; 8 would trigger it on most inputs, whose enclosures are wider than
-/// point intervals.
-constexpr double eq7_bracket_ulps = 32;
-
-/// Result of the certified unique-root solver of eq. 7.
-struct Rational_quadratic_extremum_parameter {
-  double t = 0.5;       ///< double estimate of the root, t_lower <= t <= t_upper
-  double t_lower = 0;   ///< f(t_lower) < 0 exactly, or t_lower == t_upper == exact root
-  double t_upper = 1;   ///< f(t_upper) > 0 exactly, or t_lower == t_upper == exact root
-  int exact_evaluations = 0; ///< number of exact (Gmpq) sign evaluations the filter needed
+/// Result of the certified unique-root solver of eq. 7: the certified root of the eq.-A.1
+/// quartic and its certified sign variation count.
+struct Rational_quadratic_extremum_parameter : Quartic_root {
   int sign_variations = 1;   ///< the certified variation count of eq. A.1 (always 1)
 };
 
@@ -100,45 +90,6 @@ std::array<NT, 5> eq7_coefficients(const NT& p0x, const NT& p0y, const NT& qx, c
   const NT AB = v0x * sx + v0y * sy, BC = v2x * sx + v2y * sy; // A+B, B+C
   const NT quarter = NT(1) / NT(4);
   return {{-(w * A), -(AB * quarter), NT(0), BC * quarter, w * C}};
-}
-
-/// f(t) exactly, de Casteljau on Gmpq coefficients.
-inline CGAL::Sign quartic_sign_exact(const std::array<CGAL::Gmpq, 5>& b, double t) {
-  const CGAL::Gmpq tt(t), s = CGAL::Gmpq(1) - tt;
-  std::array<CGAL::Gmpq, 5> v = b;
-  for (int r = 1; r <= 4; ++r)
-    for (int i = 0; i + r <= 4; ++i) v[i] = s * v[i] + tt * v[i + 1];
-  return CGAL::sign(v[0]);
-}
-
-/// Certified root of a quartic in Bernstein form on [0,1] that is known to have a unique simple
-/// root in (0,1) with f(0) < 0 < f(1). `b` encloses the exact coefficients (intervals);
-/// `exact_sign(t)` returns the exact sign of f at a double t. A thin adapter over the one shared
-/// mechanism, fair::internal::bernstein::tighten_double_bracket (internal/bernstein/unique_root.h):
-/// safeguarded Newton on the midpoints of the enclosures, started at the chord crossing, then a
-/// bracket grown by interval signs and shrunk to <= 32 ulps with the exact fallback. Since `b`
-/// encloses the EXACT coefficients, the bracket is certified for the exact inputs.
-/// Must be called in round-to-nearest mode (it protects the rounding mode itself).
-template <class Exact_sign>
-Rational_quadratic_extremum_parameter certified_unique_root_quartic(const Rq_interval* b, Exact_sign exact_sign) {
-  Rational_quadratic_extremum_parameter out;
-  double c[5];
-  for (int i = 0; i < 5; ++i) {
-    const double lo = b[i].inf(), hi = b[i].sup();
-    c[i] = std::isfinite(lo) && std::isfinite(hi) ? lo + (hi - lo) / 2 : (std::isfinite(lo) ? lo : (std::isfinite(hi) ? hi : 0.0));
-  }
-  double start = c[0] / (c[0] - c[4]); // chord crossing (regula falsi start)
-  if (!(start > 0.0 && start < 1.0)) start = 0.5;
-  auto counted = [&](double t) {
-    ++out.exact_evaluations;
-    return int(exact_sign(t));
-  };
-  const bernstein::Double_bracket r =
-    bernstein::tighten_double_bracket(b, c, 5, 0.0, 1.0, -1, start, counted, eq7_bracket_ulps);
-  out.t = r.root;
-  out.t_lower = r.lower;
-  out.t_upper = r.upper;
-  return out;
 }
 
 /// eq. 7 / Appendix A in double with interval filter and exact fallback; see the file comment.
@@ -204,7 +155,8 @@ rational_quadratic_extremum_parameter(double p0x, double p0y, double qx, double 
                   ", ", p0y, "), Q = (", qx, ", ", qy, "), P2 = (", p2x, ", ", p2y, "), w = ", w);
   // The unique simple root with f(0) < 0 < f(1) exactly (the enclosures of b0, b4 may straddle
   // 0 after underflow; the shared bracket mechanism then decides by exact signs).
-  Rational_quadratic_extremum_parameter out =
+  Rational_quadratic_extremum_parameter out;
+  static_cast<Quartic_root&>(out) =
     certified_unique_root_quartic(b, [&](double t) { return quartic_sign_exact(exact_coefficients(), t); });
   out.exact_evaluations += extra;
   out.sign_variations = variations;
@@ -244,7 +196,8 @@ Rational_quadratic_extremum_parameter exact_rational_quadratic_extremum_paramete
   Rq_interval bi[5];
   for (int i = 0; i < 5; ++i) bi[i] = common::to_interval_nt(b[static_cast<std::size_t>(i)]);
   std::optional<std::array<CGAL::Gmpq, 5>> exact; // Gmpq construction allocates: only on demand
-  Rational_quadratic_extremum_parameter out = certified_unique_root_quartic(bi, [&](double t) {
+  Rational_quadratic_extremum_parameter out;
+  static_cast<Quartic_root&>(out) = certified_unique_root_quartic(bi, [&](double t) {
     if (!exact) {
       exact.emplace();
       for (std::size_t i = 0; i < 5; ++i) (*exact)[i] = common::to_gmpq(b[i]);
