@@ -41,6 +41,7 @@
 #include <cstddef>
 #include <string>
 #include <utility>
+#include <type_traits>
 #include <vector>
 
 namespace fair {
@@ -56,7 +57,7 @@ struct Cardinal_parameters {
   Point_2 aux_start;
   Point_2 aux_end;
   FT energy;
-  bool closed;
+  bool closed = false;
 };
 
 /// The auxiliary points that minimise the energy of eq. 10 for a fixed alpha != 0 (eqs. 16-17,
@@ -140,6 +141,7 @@ public:
   typedef typename K::Point_2 Point_2;
   typedef typename K::Vector_2 Vector_2;
   typedef Bezier_2<K> Piece;
+  typedef Cardinal_spline_options Options;
   typedef Cardinal_spline_report<K> Report;
 
   /// The Cardinal spline through `points` (closed: N >= 3 points, do not repeat the first; open:
@@ -155,6 +157,9 @@ public:
   explicit Cardinal_spline_2(std::vector<Point_2> points, const Cardinal_spline_options& options = {})
     : points_(std::move(points)), options_(options) {
     if (options_.alpha) {
+      // Checked in double first: FT(NaN) or FT(inf) is undefined in an exact FT (Gmpq: SIGFPE).
+      internal::require(std::isfinite(*options_.alpha) && *options_.alpha > 0, "Cardinal_spline_2: options.alpha = ",
+                        *options_.alpha, " must be finite and > 0");
       given_alpha(FT(*options_.alpha));
       return;
     }
@@ -181,10 +186,14 @@ public:
   /// Expert: an alpha in FT (any rational in an exact kernel), for the data and the closedness of
   /// `options` (options.alpha must be empty), with, open, the auxiliary points optimal for it.
   /// Status GIVEN_ALPHA. \throws as the first constructor.
-  Cardinal_spline_2(std::vector<Point_2> points, const FT& alpha, const Cardinal_spline_options& options = {})
+  /// (A template, so that `Cardinal_spline_2<K>(points, {})` -- generic code's default options --
+  /// cannot pick this constructor with alpha = FT{} = 0: a braced list deduces no Alpha.)
+  template <class Alpha, class = std::enable_if_t<std::is_convertible<const Alpha&, FT>::value &&
+                                                  !std::is_same<Alpha, Cardinal_spline_options>::value>>
+  Cardinal_spline_2(std::vector<Point_2> points, const Alpha& alpha, const Cardinal_spline_options& options = {})
     : points_(std::move(points)), options_(options) {
     internal::require(!options_.alpha, "Cardinal_spline_2: alpha given twice (argument and options.alpha)");
-    given_alpha(alpha);
+    given_alpha(FT(alpha));
   }
 
   /// Expert: an open curve through p_0..p_n (n >= 1) with parameter alpha > 0 and the given

@@ -56,6 +56,7 @@ template <class K>
 class Catmull_rom_2 {
 public:
   typedef K Kernel;
+  typedef Catmull_rom_options Options;
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
   typedef typename K::Vector_2 Vector_2;

@@ -70,6 +70,7 @@ template <class K>
 class Csr_spline_2 {
 public:
   typedef K Kernel;
+  typedef Csr_spline_options Options;
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
   typedef typename K::Vector_2 Vector_2;

@@ -57,6 +57,7 @@ template <class K>
 class Cubic_bspline_2 {
 public:
   typedef K Kernel;
+  typedef Cubic_bspline_options Options;
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
   typedef typename K::Vector_2 Vector_2;

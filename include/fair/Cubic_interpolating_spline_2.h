@@ -84,6 +84,7 @@ template <class K>
 class Cubic_interpolating_spline_2 {
 public:
   typedef K Kernel;
+  typedef Cubic_interpolating_spline_options Options;
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
   typedef typename K::Vector_2 Vector_2;

@@ -51,6 +51,7 @@ template <class K>
 class Cubic_quasi_interpolant_2 {
 public:
   typedef K Kernel;
+  typedef Cubic_quasi_interpolant_options Options;
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
   typedef typename K::Vector_2 Vector_2;

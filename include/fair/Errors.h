@@ -8,6 +8,7 @@
 
 #include <any>
 #include <cstddef>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -59,15 +60,18 @@ private:
 class Solve_error : public Error {
 public:
   template <class Report>
-  Solve_error(const std::string& what, const Report& report) : Error(what), report_(report) {}
+  Solve_error(const std::string& what, const Report& report)
+    : Error(what), report_(std::make_shared<const std::any>(report)) {}
   /// The carried report if it is a Report, else nullptr. Lives as long as this error.
   template <class Report>
   const Report* report() const noexcept {
-    return std::any_cast<Report>(&report_);
+    return std::any_cast<Report>(report_.get());
   }
 
 private:
-  std::any report_;
+  // Shared, so that copying the error never allocates or throws (copies of an exception object
+  // must not throw; std::runtime_error's own copy is noexcept for the same reason).
+  std::shared_ptr<const std::any> report_;
 };
 
 /// A numerical routine that is not a family's solve (Bernstein root isolation, quadrature)

@@ -52,6 +52,7 @@
 
 #include <CGAL/number_utils.h>
 
+#include <cmath>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -80,6 +81,7 @@ template <class K>
 class Four_point_subdivision_2 {
 public:
   typedef K Kernel;
+  typedef Four_point_subdivision_options Options;
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
   typedef typename K::Vector_2 Vector_2;
@@ -98,7 +100,7 @@ public:
   /// RELAXED scheme with a tension other than 1/16 or a relaxation outside [-1/16, 0], and for
   /// rounds above max_rounds or a polyline above max_points.
   explicit Four_point_subdivision_2(std::vector<Point_2> points, const Four_point_subdivision_options& options = {})
-    : points_(std::move(points)), options_(options), w_(options.tension),
+    : points_(std::move(points)), options_(checked(options)), w_(options.tension),
       gamma_(options.variant == Four_point_variant::RELAXED ? FT(options.relaxation) : FT(0)) {
     internal::common::check_interpolation_input(points_, options_.closed ? 3 : 4, options_.closed,
                                                 "Four_point_subdivision_2");
@@ -202,6 +204,14 @@ public:
   const FT& relaxation() const { return gamma_; }
 
 private:
+  /// The doubles are checked before FT(double) sees them: FT(NaN) is undefined in an exact FT.
+  static const Four_point_subdivision_options& checked(const Four_point_subdivision_options& o) {
+    internal::require(std::isfinite(o.tension) && std::isfinite(o.relaxation),
+                      "Four_point_subdivision_2: tension ", o.tension, " and relaxation ", o.relaxation,
+                      " must be finite");
+    return o;
+  }
+
   std::vector<Point_2> points_;
   Four_point_subdivision_options options_;
   FT w_, gamma_;

@@ -61,6 +61,8 @@ template <class K>
 class Kappa_curve_2 {
 public:
   typedef K Kernel;
+  typedef Kappa_curve_options Options;
+  typedef Kappa_curve_report Report;
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
   typedef typename K::Vector_2 Vector_2;
@@ -95,11 +97,17 @@ public:
   }
 
   /// Replaces all points and solves again: warm-started from the current solution when the
-  /// count is the same, a cold solve otherwise. \throws as the constructor.
+  /// count is the same, a cold solve otherwise. \throws as the constructor, and then the curve
+  /// is unchanged (strong guarantee, as move_point).
   void set_points(std::vector<Point_2> points) {
     const bool warm = points.size() == q_.size();
-    q_ = std::move(points);
-    solve(warm, no_point);
+    q_.swap(points);  // points now holds the previous input
+    try {
+      solve(warm, no_point);
+    } catch (...) {
+      q_.swap(points);
+      throw;
+    }
   }
 
   /// The interpolated points, as given.

@@ -42,6 +42,8 @@ template <class K>
 class Optimal_curve_2 {
 public:
   typedef K Kernel;
+  typedef Optimal_curve_options Options;
+  typedef Optimal_curve_report Report;
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
   /// The cubic Bezier pieces of spline(), one per polygon edge.
@@ -68,7 +70,16 @@ public:
     for (std::size_t i = 0; i < points.size(); ++i) polygon_[interpolation_indices_[i]] = points[i];
     curvatures_ = std::move(r.curvatures);
     report_ = std::move(r.report);
-    spline_ = fit_cubic_spline_runs<K>(polygon_, options_.closed, corner_vertices());
+    try {
+      spline_ = fit_cubic_spline_runs<K>(polygon_, options_.closed, corner_vertices());
+    } catch (const Invalid_input_error&) {
+      // A failed solve may stop on a collapsed free edge (solver.h: CAPPED below 1e-12 of the
+      // extent) that the mapping back (hierarchy.h) rounds to a zero chord, which the fit refuses.
+      // Without throw_on_failure a failed solve does not throw (doc/concepts.md): the curve keeps
+      // its polygon, without spline() and pieces(); status() says why.
+      if (report_.status == Optimal_curve_status::CONVERGED) throw;
+      return;
+    }
     for (const Cubic_spline_2<K>& run : spline_.splines) {
       std::vector<Piece> q = run.polynomial_pieces();
       pieces_.insert(pieces_.end(), q.begin(), q.end());

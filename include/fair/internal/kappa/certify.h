@@ -32,7 +32,7 @@
 #define FAIR_INTERNAL_KAPPA_CERTIFY_H
 
 #include <fair/Errors.h>
-#include <fair/Kappa_certificate.h>
+#include <fair/internal/kappa/certificate_record.h>
 #include <fair/Rational_quadratic_bezier_2.h>
 #include <fair/internal/common/exact_conversion.h>
 #include <fair/internal/kappa/exact_eq18.h>
