@@ -204,9 +204,7 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
   f.derivative_weight = o.derivative_weight;
   f.derivative_exponent = o.derivative_exponent;
   f.derivative_weight[0] = 0;
-  f.discretisation = o.discretisation == Curvature_discretisation::CIRCUMCIRCLE    ? Discretisation::CIRCUMCIRCLE
-                     : o.discretisation == Curvature_discretisation::TURNING_ANGLE ? Discretisation::TURNING_ANGLE
-                                                                                   : Discretisation::REGULARISED;
+  f.discretisation = o.discretisation;
   Level_settings s;
   s.conjugate_gradient = o.solver == Optimal_curve_solver::CONJUGATE_GRADIENT;
   s.max_iterations = o.max_iterations_per_level;
