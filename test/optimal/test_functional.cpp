@@ -18,9 +18,10 @@
 namespace {
 
 using namespace fair::internal::optimal;
+using fair::Curvature_discretisation;
 const double pi = 3.14159265358979323846;
-const Discretisation all_discretisations[3] = {Discretisation::REGULARISED, Discretisation::CIRCUMCIRCLE,
-                                               Discretisation::TURNING_ANGLE};
+const Curvature_discretisation all_discretisations[3] = {Curvature_discretisation::REGULARISED, Curvature_discretisation::CIRCUMCIRCLE,
+                                                         Curvature_discretisation::TURNING_ANGLE};
 
 ::testing::AssertionResult near_rel(double x, double y, double rel, double scale = 0) {
   const double tol = rel * std::max({std::fabs(x), std::fabs(y), scale});
@@ -72,7 +73,7 @@ double polygon_length(const std::vector<Vec2>& c, bool closed) {
 /// A functional with every term switched on (or only the given derivative order), weights varying
 /// per edge and vertex.
 Functional make_functional(const std::vector<Vec2>& c, bool closed, int only_k = -1, double alpha = 2,
-                           Discretisation d = Discretisation::REGULARISED) {
+                           Curvature_discretisation d = Curvature_discretisation::REGULARISED) {
   Functional f;
   f.closed = closed;
   f.reference_length = polygon_length(c, closed);
@@ -147,7 +148,7 @@ TEST(OptimalCurvature, RegularisedIsFiniteAtReversal) {
   std::vector<Vec2> g;
   Block_banded_hessian h;
   EXPECT_TRUE(std::isfinite(energy_gradient_hessian(f, c, g, h)));
-  f.discretisation = Discretisation::CIRCUMCIRCLE;  // 2 sin(phi)/|c_2 - c_0| = 0/0
+  f.discretisation = Curvature_discretisation::CIRCUMCIRCLE;  // 2 sin(phi)/|c_2 - c_0| = 0/0
   EXPECT_THROW(energy(f, c), fair::Invalid_input_error);
 }
 
@@ -364,7 +365,7 @@ TEST(OptimalFunctional, HessianMatchesDifferencesOfGradientAndBand) {
   for (int closed = 0; closed < 2; ++closed)
     for (int k = -1; k <= 4; ++k)
       for (double alpha : {1.5, 2.0, 3.0}) {
-        const Discretisation d = all_discretisations[(k + 3) % 3];
+        const Curvature_discretisation d = all_discretisations[(k + 3) % 3];
         const std::size_t n = 13 + static_cast<std::size_t>(k + 1);
         const std::vector<Vec2> c = random_polygon(rng, n, closed != 0, 0.8);
         const Functional f = make_functional(c, closed != 0, k, alpha, d);

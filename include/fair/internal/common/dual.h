@@ -39,7 +39,9 @@ struct Dual {
 
   Dual() : v(0) { zero(); }
   Dual(double value) : v(value) { zero(); }  // NOLINT: a constant (mixes with double in templated code)
-  Dual(No_init, double value) : v(value) {}
+  Dual(No_init, double value) : v(value) {
+    if constexpr (!S) h[0] = 0;  // the placeholder of first order: defined, so that copies are
+  }
   /// The independent variable number i (0-based) with the given value.
   static Dual variable(int i, double value) {
     Dual d(value);
