@@ -16,6 +16,7 @@
 #include <fair/internal/kappa/solve_settings.h>
 #include <fair/internal/kappa/system.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <limits>
 #include <utility>

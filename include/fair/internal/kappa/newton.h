@@ -35,7 +35,7 @@ constexpr double newton_contraction = 1e-2;
 constexpr double chord_contraction = 0.1;
 
 /// Newton's method on the square system: each step solves J delta = -r directly (block LU,
-/// block_lu.h, O(n)), then a backtracking (Armijo) line search on 1/2 |r|^2 along delta
+/// linear_algebra/block_band_lu.h, O(n)), then a backtracking (Armijo) line search on 1/2 |r|^2 along delta
 /// with the bounds projected. In the quadratic regime, "chord" steps reuse the last
 /// factorisation (cost: one evaluation and one solve); once max |r| <= tolerance, at most one
 /// more chord step pushes the residual towards the rounding floor, so that derived quantities

@@ -14,6 +14,7 @@
 #include <fair/internal/kappa/solve_settings.h>
 #include <fair/internal/kappa/system.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <utility>
 #include <vector>

@@ -3,7 +3,7 @@
 // The Hessian of the optimal-curve functional (functional.h) in the vertex coordinates
 // (x_0, y_0, x_1, y_1, ...): a symmetric band matrix of 2x2 vertex blocks, cyclic for closed
 // curves, stored by the rule of linear_algebra/symmetric_band.h (doc/optimal_curves.md, "Banded
-// solve"). The Newton system itself is the scalar reduction of solver.h (reduced_system).
+// solve"). The Newton system itself is its scalar reduction (reduced_system.h).
 
 #ifndef FAIR_INTERNAL_OPTIMAL_HESSIAN_H
 #define FAIR_INTERNAL_OPTIMAL_HESSIAN_H
