@@ -29,6 +29,7 @@ constexpr double bound_margin = 1e-4;
 /// permitting), so that derived quantities (e.g. circle reproduction) are accurate to it.
 constexpr double polish_fraction = 1e-3;
 
+/// The caps and tolerance of one solve, and its warm start.
 struct Solve_settings {
   // The defaults are the user's (Kappa_curve_options), so that they are stated once.
   std::size_t refinement_passes = Kappa_curve_options().refinement_passes;  // passes of Section 5.1
@@ -49,6 +50,7 @@ inline Solve_settings solve_settings(const Kappa_curve_options& opt) {
   return settings;
 }
 
+/// Projects every lambda_i, t_i onto [parameter_margin, 1 - parameter_margin].
 inline void project_bounds(Kappa_solver_state& st) {
   const double lo = parameter_margin, hi = 1 - parameter_margin;
   for (std::size_t i = 0; i < st.t.size(); ++i) {
