@@ -2,14 +2,15 @@
 //
 // Benchmarks of the discrete optimal-curve functional (include/fair/internal/optimal/functional.h):
 // one Newton step's linear algebra on n vertices, n = 10^3, 10^4, 10^5 —
-//   energy_gradient_hessian (exact, dual numbers), normal_offset_system (every 10th vertex fixed, the
-//   interpolation points), and the banded Cholesky solve (with the diagonal shift that makes it
+//   energy_gradient_hessian (exact, dual numbers), the solver's reduction to normal offsets (reduced_system.h; every 10th
+//   vertex fixed, the interpolation points), and the banded Cholesky solve (with the diagonal shift that makes it
 //   positive definite, found once before the timing: 0, or 1e-8 max|diag| doubled),
 // for half-bandwidth w = 2 (beta + beta_0 kappa^2) and w = 6 (plus beta_4 kappa''''^2), closed curves
 // (the cyclic solve). Separately: energy alone, energy and gradient, and the solve alone.
 // Run with --benchmark_repetitions=9 --benchmark_report_aggregates_only=true for medians.
 
 #include <fair/internal/optimal/functional.h>
+#include <fair/internal/optimal/reduced_system.h>
 
 #include <benchmark/benchmark.h>
 
@@ -45,15 +46,20 @@ Functional functional(std::size_t n, std::size_t w) {
 
 struct Step {
   std::vector<Vec2> c, gradient, normals;
-  std::vector<unsigned char> free;
+  Vertex_roles roles;
   Functional f;
   Block_banded_hessian hessian;
   std::vector<double> rg;
   Banded_symmetric rh;
   explicit Step(std::size_t n, std::size_t w) : c(wobbly_circle(n)), f(functional(n, w)) {
     normals = vertex_normals(c, true);
-    free.assign(n, 1);
-    for (std::size_t i = 0; i < n; i += 10) free[i] = 0;
+    roles.role.assign(n, Vertex_role::FREE);
+    for (std::size_t i = 0; i < n; i += 10) roles.role[i] = Vertex_role::FIXED;
+  }
+  /// The reduced gradient and Hessian (the solver's reduction: unknowns, then the band).
+  void reduce() {
+    const Reduced_unknowns u = reduced_unknowns(c, normals, roles, true);
+    reduced_system(gradient, hessian, true, u, rg, rh);
   }
   /// The smallest diagonal shift of the form 0 or 1e-8 max|diag| 2^m that makes the reduced Hessian
   /// positive definite (the optimiser's fallback), and the number of attempts it took.
@@ -75,13 +81,13 @@ struct Step {
 void newton_step(benchmark::State& state) {
   Step s(static_cast<std::size_t>(state.range(0)), static_cast<std::size_t>(state.range(1)));
   energy_gradient_hessian(s.f, s.c, s.gradient, s.hessian);
-  normal_offset_system(s.gradient, s.hessian, s.normals, s.free, s.rg, s.rh);
+  s.reduce();
   double shift = 0;
   const std::size_t attempts = s.find_shift(shift);  // outside the timing: the optimiser's business
   bool solved = false;
   for (auto _ : state) {
     benchmark::DoNotOptimize(energy_gradient_hessian(s.f, s.c, s.gradient, s.hessian));
-    normal_offset_system(s.gradient, s.hessian, s.normals, s.free, s.rg, s.rh);
+    s.reduce();
     s.rh.add_to_diagonal(shift);
     solved = solve_banded_positive_definite(s.rh, s.rg);
     benchmark::DoNotOptimize(s.rg.data());
@@ -108,7 +114,7 @@ void energy_only(benchmark::State& state) {
 void solve_only(benchmark::State& state) {
   Step s(static_cast<std::size_t>(state.range(0)), static_cast<std::size_t>(state.range(1)));
   energy_gradient_hessian(s.f, s.c, s.gradient, s.hessian);
-  normal_offset_system(s.gradient, s.hessian, s.normals, s.free, s.rg, s.rh);
+  s.reduce();
   double shift = 0;
   s.find_shift(shift);  // positive definite, so that the timing is one full factorisation + solve
   s.rh.add_to_diagonal(shift);

@@ -1,14 +1,13 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // Tests of the alternating passes of Section 5.1 (Yan, Schiller, Schaefer; internal/kappa/refinement.h)
-// in double: the eq. 7 root against a long-double bisection, eq. 18 against a dense Eigen solve
+// in double: the eq. 7 root against a long-double bisection, eq. 18 against a dense solve with complete pivoting
 // (open and closed, diagonally dominant and not), one refinement pass against a
 // straightforward reference written here from the paper's formulas in absolute coordinates,
 // and circle reproduction (the paper's main property) by the passes alone.
 
 #include <fair/internal/kappa/refinement.h>
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,6 +16,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -70,14 +70,58 @@ Pt P(const kp::Problem& pb, const fair::Kappa_solver_state& st, std::size_t i) {
 std::size_t prev(const kp::Problem& pb, std::size_t i) { return i == 0 ? pb.n - 1 : i - 1; }
 std::size_t next(const kp::Problem& pb, std::size_t i) { return i + 1 == pb.n ? 0 : i + 1; }
 
+/// A dense row-major matrix, for the oracles below.
+struct Dense {
+  std::size_t rows = 0, cols = 0;
+  std::vector<double> a;
+  Dense() = default;
+  Dense(std::size_t r, std::size_t c) : rows(r), cols(c), a(r * c, 0.0) {}
+  double& operator()(std::size_t i, std::size_t j) { return a[i * cols + j]; }
+  double operator()(std::size_t i, std::size_t j) const { return a[i * cols + j]; }
+};
+
+/// X = M^{-1} B by Gaussian elimination with complete pivoting: the dense oracle, independent of
+/// the tridiagonal, bordered and banded solves under test (and of any library code).
+Dense solve_complete_pivoting(Dense M, Dense B) {
+  const std::size_t n = M.rows, m = B.cols;
+  std::vector<std::size_t> column(n);
+  for (std::size_t k = 0; k < n; ++k) column[k] = k;
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t p = k, q = k;
+    for (std::size_t i = k; i < n; ++i)
+      for (std::size_t j = k; j < n; ++j)
+        if (std::abs(M(i, j)) > std::abs(M(p, q))) { p = i; q = j; }
+    for (std::size_t j = 0; j < n; ++j) std::swap(M(k, j), M(p, j));
+    for (std::size_t c = 0; c < m; ++c) std::swap(B(k, c), B(p, c));
+    for (std::size_t i = 0; i < n; ++i) std::swap(M(i, k), M(i, q));
+    std::swap(column[k], column[q]);
+    for (std::size_t i = k + 1; i < n; ++i) {
+      const double f = M(i, k) / M(k, k);
+      if (f == 0.0) continue;
+      for (std::size_t j = k; j < n; ++j) M(i, j) -= f * M(k, j);
+      for (std::size_t c = 0; c < m; ++c) B(i, c) -= f * B(k, c);
+    }
+  }
+  Dense Y(n, m), X(n, m);
+  for (std::size_t k = n; k-- > 0;)
+    for (std::size_t c = 0; c < m; ++c) {
+      double s = B(k, c);
+      for (std::size_t j = k + 1; j < n; ++j) s -= M(k, j) * Y(j, c);
+      Y(k, c) = s / M(k, k);
+    }
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t c = 0; c < m; ++c) X(column[k], c) = Y(k, c);
+  return X;
+}
+
 // Eq. 18 assembled densely in the unknowns P_i (absolute coordinates) straight from the paper:
 // (1-t)^2 (P_{i,0} - Q_i) + 2(1-t)t w (P_i - Q_i) + t^2 (P_{i,2} - Q_i) = 0 with eq. 9 joins
 // P_{i,0} = (1-l_i) P_{i-1} + l_i P_i, P_{i,2} = (1-l_{i+1}) P_i + l_{i+1} P_{i+1} (open ends: the
 // fixed end points): M P = rhs.
-void dense_eq18_system(const kp::Problem& pb, const fair::Kappa_solver_state& st, Eigen::MatrixXd& M, Eigen::MatrixXd& rhs) {
+void dense_eq18_system(const kp::Problem& pb, const fair::Kappa_solver_state& st, Dense& M, Dense& rhs) {
   const std::size_t n = pb.n;
-  M = Eigen::MatrixXd::Zero(n, n);
-  rhs = Eigen::MatrixXd::Zero(n, 2);
+  M = Dense(n, n);
+  rhs = Dense(n, 2);
   for (std::size_t i = 0; i < n; ++i) {
     const double t = st.t[i], u = 1 - t, c0 = u * u, c1 = 2 * u * t * st.w[i], c2 = t * t;
     const Pt q = Q(pb, i);
@@ -101,11 +145,11 @@ void dense_eq18_system(const kp::Problem& pb, const fair::Kappa_solver_state& st
   }
 }
 
-// Solved by Eigen's full-pivoting LU; returns d = P - Q.
+// Solved by complete pivoting (solve_complete_pivoting); returns d = P - Q.
 void dense_eq18(const kp::Problem& pb, const fair::Kappa_solver_state& st, std::vector<double>& dx, std::vector<double>& dy) {
-  Eigen::MatrixXd M, rhs;
+  Dense M, rhs;
   dense_eq18_system(pb, st, M, rhs);
-  const Eigen::MatrixXd X = M.fullPivLu().solve(rhs);
+  const Dense X = solve_complete_pivoting(M, rhs);
   dx.resize(pb.n);
   dy.resize(pb.n);
   for (std::size_t i = 0; i < pb.n; ++i) {
@@ -298,7 +342,7 @@ TEST(KappaRefinement, Eq18AgreesWithDenseSolve) {
         const std::string what = "n=" + std::to_string(n) + (closed ? " closed" : " open") + " kind=" + std::to_string(kind);
         ASSERT_TRUE(kp::solve_eq18(pb, st, ws)) << what;
         // Backward error: |M P - rhs| <= c eps (|M| |P| + |rhs|) row by row.
-        Eigen::MatrixXd M, rhs;
+        Dense M, rhs;
         dense_eq18_system(pb, st, M, rhs);
         for (std::size_t i = 0; i < n; ++i)
           for (int c = 0; c < 2; ++c) {

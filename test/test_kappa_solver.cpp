@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // Tests of the Newton machinery of the kappa-curve solver (include/fair/internal/): the block
-// LU of internal/kappa/block_lu.h against a dense pivoted solve, the structured Jacobian of
+// LU of internal/linear_algebra/block_band_lu.h against a dense pivoted solve, the structured Jacobian of
 // internal/kappa/jacobian.h against automatic differentiation over all 16 unknowns of a window, and
 // the Newton phase of internal/kappa/solver.h against Levenberg-Marquardt.
 
@@ -21,6 +21,7 @@
 namespace {
 
 using namespace fair::internal::kappa;
+using fair::internal::linear_algebra::invert_block;
 using fair::Kappa_curve_report;
 using fair::Kappa_solver_state;
 using fair::Kappa_weights;
@@ -282,7 +283,7 @@ void expect_jacobian_matches(const Problem& pb, const Kappa_solver_state& st, co
           EXPECT_EQ(J[e][c], 0.0);
           continue;
         }
-        EXPECT_NEAR(J[e][c], ref[e].d[c], 1e-12 * (1 + std::abs(ref[e].d[c])))
+        EXPECT_NEAR(J[e][c], ref[e].g[c], 1e-12 * (1 + std::abs(ref[e].g[c])))
             << what << " block " << i << " d r" << e << " / d unknown " << c % 4 << " of window block " << c / 4;
       }
     }

@@ -11,13 +11,15 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$here"
 jobs=${FAIR_JOBS:-$(nproc)}
 
-packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev libboost-dev
+packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libpng-dev)
 # Test-only dependencies (never of the library): FreeType and Debian's DejaVu fonts for the glyph
 # outlines of the real-data tests; OpenCASCADE's FairCurve_Batten (and the TBB its CMake config
 # needs) as the peer of the optimal curves.
 test_packages=(libfreetype-dev fonts-dejavu-core libocct-modeling-algorithms-dev libocct-modeling-data-dev
                libocct-foundation-dev libtbb-dev)
+# Benchmark-only: Eigen 3, the peer of bench_linear_algebra (doc/linear_algebra.md).
+bench_packages=(libeigen3-dev)
 
 setup() {
   local missing=()
@@ -66,6 +68,7 @@ case "${1:-}" in
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
       ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -E install_and_consume ;;
   bench)
+    packages+=("${bench_packages[@]}")
     setup
     configure build-bench -DFAIR_BUILD_BENCHMARKS=ON -DFAIR_BUILD_TESTS=OFF -DFAIR_BUILD_EXAMPLES=OFF
     cmake --build build-bench -j "$jobs"

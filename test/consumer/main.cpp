@@ -1,6 +1,6 @@
 // A tiny consumer of the installed package: find_package(fair) + fair::fair must bring CGAL,
-// GMP/MPFR (EPECK) and Eigen (the kappa solver) with it, and fair::io nlohmann-json (the JSON
-// writer). all_public_headers.cpp (generated) includes every other public header.
+// GMP/MPFR (EPECK) with it, and fair::io nlohmann-json (the JSON writer). all_public_headers.cpp
+// (generated) includes every other public header.
 #include <fair/Kappa_curve_2.h>
 #include <fair/Rational_quadratic_bezier_2.h>
 #include <fair/io/write_json.h>

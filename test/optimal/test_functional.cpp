@@ -6,6 +6,7 @@
 // dense solve, the normal-offset reduction against differences of F(c + delta n), and typed errors.
 
 #include <fair/internal/optimal/functional.h>
+#include <fair/internal/optimal/reduced_system.h>
 
 #include <gtest/gtest.h>
 
@@ -17,9 +18,10 @@
 namespace {
 
 using namespace fair::internal::optimal;
+using fair::Curvature_discretisation;
 const double pi = 3.14159265358979323846;
-const Discretisation all_discretisations[3] = {Discretisation::REGULARISED, Discretisation::CIRCUMCIRCLE,
-                                               Discretisation::TURNING_ANGLE};
+const Curvature_discretisation all_discretisations[3] = {Curvature_discretisation::REGULARISED, Curvature_discretisation::CIRCUMCIRCLE,
+                                                         Curvature_discretisation::TURNING_ANGLE};
 
 ::testing::AssertionResult near_rel(double x, double y, double rel, double scale = 0) {
   const double tol = rel * std::max({std::fabs(x), std::fabs(y), scale});
@@ -71,7 +73,7 @@ double polygon_length(const std::vector<Vec2>& c, bool closed) {
 /// A functional with every term switched on (or only the given derivative order), weights varying
 /// per edge and vertex.
 Functional make_functional(const std::vector<Vec2>& c, bool closed, int only_k = -1, double alpha = 2,
-                           Discretisation d = Discretisation::REGULARISED) {
+                           Curvature_discretisation d = Curvature_discretisation::REGULARISED) {
   Functional f;
   f.closed = closed;
   f.reference_length = polygon_length(c, closed);
@@ -146,7 +148,7 @@ TEST(OptimalCurvature, RegularisedIsFiniteAtReversal) {
   std::vector<Vec2> g;
   Block_banded_hessian h;
   EXPECT_TRUE(std::isfinite(energy_gradient_hessian(f, c, g, h)));
-  f.discretisation = Discretisation::CIRCUMCIRCLE;  // 2 sin(phi)/|c_2 - c_0| = 0/0
+  f.discretisation = Curvature_discretisation::CIRCUMCIRCLE;  // 2 sin(phi)/|c_2 - c_0| = 0/0
   EXPECT_THROW(energy(f, c), fair::Invalid_input_error);
 }
 
@@ -363,7 +365,7 @@ TEST(OptimalFunctional, HessianMatchesDifferencesOfGradientAndBand) {
   for (int closed = 0; closed < 2; ++closed)
     for (int k = -1; k <= 4; ++k)
       for (double alpha : {1.5, 2.0, 3.0}) {
-        const Discretisation d = all_discretisations[(k + 3) % 3];
+        const Curvature_discretisation d = all_discretisations[(k + 3) % 3];
         const std::size_t n = 13 + static_cast<std::size_t>(k + 1);
         const std::vector<Vec2> c = random_polygon(rng, n, closed != 0, 0.8);
         const Functional f = make_functional(c, closed != 0, k, alpha, d);
@@ -470,8 +472,22 @@ TEST(OptimalNormals, LeftUnitNormalsOfTravel) {
   EXPECT_NEAR(no[1][1], std::sqrt(0.5), 1e-15);
 }
 
+/// The solver's reduction to normal offsets (reduced_system.h) with the lines of motion `normals`,
+/// no ties, and vertex j free iff free[j]: reduced index a <-> the a-th free vertex.
+void normal_offset_reduction(const std::vector<Vec2>& c, bool closed, const std::vector<Vec2>& g,
+                             const Block_banded_hessian& h, const std::vector<Vec2>& normals,
+                             const std::vector<unsigned char>& free, std::vector<double>& rg, Banded_symmetric& rh) {
+  Vertex_roles roles;
+  roles.role.assign(c.size(), Vertex_role::FREE);
+  for (std::size_t j = 0; j < c.size(); ++j)
+    if (!free[j]) roles.role[j] = Vertex_role::FIXED;
+  const Reduced_unknowns u = reduced_unknowns(c, normals, roles, closed);
+  reduced_system(g, h, closed, u, rg, rh);
+}
+
 // The reduced gradient and Hessian are the derivatives of delta -> F(c + sum_a delta_a n_{f_a}) with
-// fixed normals: checked by central differences in delta, with some vertices fixed.
+// fixed normals (the solver's reduction): checked by central differences in delta, with some
+// vertices fixed; dropping them does not widen the band.
 TEST(OptimalNormals, NormalOffsetSystemMatchesDifferences) {
   std::mt19937 rng(23);
   for (int closed = 0; closed < 2; ++closed)
@@ -488,7 +504,7 @@ TEST(OptimalNormals, NormalOffsetSystemMatchesDifferences) {
       energy_gradient_hessian(f, c, g, h);
       std::vector<double> rg;
       Banded_symmetric rh;
-      normal_offset_system(g, h, normals, free, rg, rh);
+      normal_offset_reduction(c, closed != 0, g, h, normals, free, rg, rh);
       std::vector<std::size_t> map;
       for (std::size_t j = 0; j < n; ++j)
         if (free[j]) map.push_back(j);
@@ -678,7 +694,7 @@ double reduced_condition_number(std::size_t n, int k) {
   for (std::size_t q = 0; q < 8; ++q) free[q * n / 8] = 0;
   std::vector<double> rg;
   Banded_symmetric r;
-  normal_offset_system(g, h, vertex_normals(c, true), free, rg, r);
+  normal_offset_reduction(c, true, g, h, vertex_normals(c, true), free, rg, r);
   const std::size_t m = r.size();
   std::vector<double> x(m), z(m);
   for (std::size_t i = 0; i < m; ++i) {

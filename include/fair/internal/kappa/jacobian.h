@@ -6,7 +6,7 @@
 //
 // Accuracy: exact to rounding. The values come from the templates that evaluate the residuals
 // (system.h); the derivatives of the piece residuals and of r_3 are written out by hand, those
-// of the automatic weight of eq. 16 by forward-mode automatic differentiation (dual.h). All are
+// of the automatic weight of eq. 16 by forward-mode automatic differentiation (common/dual.h). All are
 // checked against a differentiation over all 16 unknowns in test_kappa_solver.cpp.
 // Degenerate cases: abs() and the clamp of eq. 16 contribute the derivative of the active
 // branch; residuals defined as 0 at a degenerate configuration (system.h) have a zero
@@ -15,7 +15,6 @@
 #ifndef FAIR_INTERNAL_KAPPA_JACOBIAN_H
 #define FAIR_INTERNAL_KAPPA_JACOBIAN_H
 
-#include <fair/internal/kappa/dual.h>
 #include <fair/internal/kappa/system.h>
 
 #include <cmath>
@@ -63,12 +62,12 @@ inline double piece_weight_gradient(const Problem& pb, const Kappa_solver_state&
   typedef Dual<6> D6;
   D6 E0[2], X[2], E2[2];
   for (int c = 0; c < 2; ++c) {
-    E0[c] = D6::variable(pv.E0[c], c);
-    X[c] = D6::variable(win.X[k][c], 2 + c);
-    E2[c] = D6::variable(pv.E2[c], 4 + c);
+    E0[c] = D6::variable(c, pv.E0[c]);
+    X[c] = D6::variable(2 + c, win.X[k][c]);
+    E2[c] = D6::variable(4 + c, pv.E2[c]);
   }
   const D6 w = piece_weight(pb, win.block[k], E0, X, E2);
-  for (int c = 0; c < 6; ++c) g[c] = w.d[c];
+  for (int c = 0; c < 6; ++c) g[c] = w.g[c];
   return w.v;
 }
 

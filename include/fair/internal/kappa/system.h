@@ -33,7 +33,7 @@
 
 #include <fair/Kappa_curve_options.h>
 #include <fair/Kappa_curve_report.h>
-#include <fair/internal/kappa/dual.h>
+#include <fair/internal/common/dual.h>
 
 #include <algorithm>
 #include <cmath>
@@ -43,6 +43,15 @@
 namespace fair {
 namespace internal {
 namespace kappa {
+
+// The residuals are templates on their scalar: double, or common::Dual for derivatives. The
+// declarations let one unqualified call serve both (the Dual overloads are found by argument-
+// dependent lookup).
+using common::Dual;
+using common::max_with;
+using common::value;
+using std::abs;
+using std::sqrt;
 
 /// The (normalised) data of one solve. Block i interpolates (qx[i], qy[i]).
 struct Problem {
@@ -96,8 +105,8 @@ struct Piece_values {
 template <class S> struct Seed {
   static S variable(double v, int) { return S(v); }
 };
-template <int N> struct Seed<Dual<N>> {
-  static Dual<N> variable(double v, int slot) { return Dual<N>::variable(v, slot); }
+template <int N, bool S> struct Seed<Dual<N, S>> {
+  static Dual<N, S> variable(double v, int slot) { return Dual<N, S>::variable(slot, v); }
 };
 
 template <class S>

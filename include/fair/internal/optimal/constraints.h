@@ -11,7 +11,7 @@
 //    (Letting the neighbours slide on the rays instead fails on coarse levels: an end neighbour
 //    slides into the end point, where an open curve has no curvature term, and the level degenerates.)
 //  - TANGENT/NORMAL (or a one-sided CORNER) at an open end: a clamped end, a fixed ghost vertex on
-//    the tangent behind the end gives the end its curvature term (solver.h, Level_problem).
+//    the tangent behind the end gives the end its curvature term (level_problem.h, Level_problem).
 //  - TANGENT/NORMAL at an interior point j: a TIE. Both neighbours move along their normals with
 //    offsets tied by the linearised constraint "the bisector of the unit edge directions keeps
 //    its angle" (one unknown for the two), and after every step both are rotated about c_j so that

@@ -11,12 +11,13 @@
 //   CIRCUMCIRCLE  kappa = 2 sin(phi) / |c - a|
 //                       = 2 Y / (l_0 l_1 |c - a|)         (kappa° of eq. 6 times 2: 1/circumradius)
 // kappa > 0 for a left turn (counter-clockwise). Written once, templated on the scalar (double or
-// Dual<N>, dual.h), as a function of the two edge vectors.
+// common::Dual, common/dual.h), as a function of the two edge vectors.
 
 #ifndef FAIR_INTERNAL_OPTIMAL_CURVATURE_H
 #define FAIR_INTERNAL_OPTIMAL_CURVATURE_H
 
-#include <fair/internal/optimal/dual.h>
+#include <fair/Optimal_curve_options.h>
+#include <fair/internal/common/dual.h>
 
 #include <cmath>
 
@@ -24,11 +25,8 @@ namespace fair {
 namespace internal {
 namespace optimal {
 
-enum class Discretisation {
-  REGULARISED /* eq. 9, true curvature: phi/(s cos(phi/2.1)) */,
-  CIRCUMCIRCLE /* kappa° of eq. 6, x2 (true curvature) */,
-  TURNING_ANGLE /* kappa^phi of eq. 6, x2: phi/s */
-};
+using common::abs_pow;
+using common::Dual;
 
 /// The 2 + delta of eq. 9 with the paper's delta = 0.1: |f(phi)| = |phi / cos(phi/2.1)| <= 42.04 on
 /// [-pi, pi] (the paper's 21.1 is f/2 at s = 1).
@@ -37,20 +35,20 @@ constexpr double regularisation_divisor = 2.1;
 /// kappa_j from the edge vectors u = Delta_{j-1} = c_j - c_{j-1} and v = Delta_j = c_{j+1} - c_j (it
 /// depends on the vertices only through them); the caller guarantees u != 0 != v.
 template <class T>
-T local_curvature(Discretisation d, const T& ux, const T& uy, const T& vx, const T& vy) {
+T local_curvature(Curvature_discretisation d, const T& ux, const T& uy, const T& vx, const T& vy) {
   using std::atan2;
   using std::cos;
   using std::sqrt;
   const T l0 = sqrt(ux * ux + uy * uy), l1 = sqrt(vx * vx + vy * vy);
   const T y = ux * vy - uy * vx;
-  if (d == Discretisation::CIRCUMCIRCLE) {
+  if (d == Curvature_discretisation::CIRCUMCIRCLE) {
     const T wx = ux + vx, wy = uy + vy;
     return 2.0 * y / (l0 * l1 * sqrt(wx * wx + wy * wy));
   }
   const T x = ux * vx + uy * vy;
   const T phi = atan2(y, x);
   const T s = 0.5 * (l0 + l1);
-  if (d == Discretisation::TURNING_ANGLE) return phi / s;
+  if (d == Curvature_discretisation::TURNING_ANGLE) return phi / s;
   return phi / (s * cos(phi / regularisation_divisor));
 }
 

@@ -20,7 +20,7 @@
 // Evaluation. Each term is a function of a few "primitives": the curvatures kappa_i (each a function
 // of 3 consecutive vertices, curvature.h) and the edge lengths l_e (2 vertices). The term is written
 // once, templated on its scalar (term_value); its gradient and Hessian in the primitives come from
-// the dual numbers of dual.h, the primitives' own gradients and Hessians likewise, and the chain rule
+// the dual numbers of common/dual.h, the primitives' own gradients and Hessians likewise, and the chain rule
 //   dT/dc = sum_p T_p dp/dc,   d2T/dc2 = sum_{p,q} T_pq (dp/dc)(dq/dc)^T + sum_p T_p d2p/dc2
 // gives the exact local gradient and Hessian on the term's window of k + 3 consecutive vertices.
 // Cost O(n) for the energy and gradient, O(n w^2) for the Hessian.
@@ -29,10 +29,10 @@
 #define FAIR_INTERNAL_OPTIMAL_FUNCTIONAL_H
 
 #include <fair/Errors.h>
-#include <fair/internal/optimal/vec2.h>
-#include <fair/internal/optimal/banded.h>
+#include <fair/Optimal_curve_options.h>
 #include <fair/internal/optimal/curvature.h>
-#include <fair/internal/optimal/dual.h>
+#include <fair/internal/optimal/hessian.h>
+#include <fair/internal/optimal/vec2.h>
 
 #include <array>
 #include <cmath>
@@ -43,7 +43,6 @@ namespace fair {
 namespace internal {
 namespace optimal {
 
-
 /// Highest curvature derivative of eq. 5 the discretisation provides (the d <= 4).
 constexpr int max_derivative_order = 4;
 
@@ -52,10 +51,10 @@ struct Functional {                    // eq. 5 discretised as in Sec. 2.2.3, TR
   double reference_length = 1;         // L0 (input polygon length), > 0
   std::vector<double> length_weight;   // beta per EDGE (edge j = c_j -> c_{j+1}); size = number of edges
   std::vector<double> curvature_weight;  // beta_0 per VERTEX; size = number of vertices
-  double curvature_exponent = 2;       // alpha_0 >= 1 (|x|^a at 0 for a < 2: see abs_pow in dual.h)
+  double curvature_exponent = 2;       // alpha_0 >= 1 (|x|^a at 0 for a < 2: see abs_pow in common/dual.h)
   std::array<double, 5> derivative_weight{{0, 0, 0, 0, 0}};    // beta_k, k = 1..4 (index 0 ignored)
   std::array<double, 5> derivative_exponent{{2, 2, 2, 2, 2}};  // alpha_k >= 1 (index 0 ignored)
-  Discretisation discretisation = Discretisation::REGULARISED;
+  Curvature_discretisation discretisation = Curvature_discretisation::REGULARISED;
   std::vector<unsigned char> zero_curvature;  // per vertex: 1 = kappa_j forced to 0 (corner), empty = none
   /// Half-bandwidth of the Hessian in vertices: 2 + max{k in 1..4 : beta_k > 0} (2 if none). A
   /// kappa^(k) term lives on k + 3 consecutive vertices (kappa on 3, the length term on 2), so the
@@ -184,7 +183,7 @@ inline void edge_length(const Vec2& a, const Vec2& b, Order order, Primitive& p)
 /// (u = b - a, v = c - b), then mapped by the constant Jacobian d(u, v)/d(a, b, c): the block of vertex
 /// X in {a, b, c} is sum_P coef[X][P] d/dP with coef a = (-1, 0), b = (1, -1), c = (0, 1).
 template <bool S>
-Primitive dual_curvature(Discretisation d, const Vec2& a, const Vec2& b, const Vec2& c) {
+Primitive dual_curvature(Curvature_discretisation d, const Vec2& a, const Vec2& b, const Vec2& c) {
   typedef Dual<4, S> D;
   const D k = local_curvature(d, D::variable(0, b[0] - a[0]), D::variable(1, b[1] - a[1]), D::variable(2, c[0] - b[0]),
                               D::variable(3, c[1] - b[1]));
@@ -251,7 +250,7 @@ private:
     const Vec2& a = c_[(j + n - 1) % n];
     const Vec2& b = c_[j];
     const Vec2& d = c_[(j + 1) % n];
-    if (f_.discretisation == Discretisation::CIRCUMCIRCLE && a[0] == d[0] && a[1] == d[1])
+    if (f_.discretisation == Curvature_discretisation::CIRCUMCIRCLE && a[0] == d[0] && a[1] == d[1])
       throw Invalid_input_error(message(method_, ": vertices ", (j + n - 1) % n, " and ", (j + 1) % n,
                                         " around vertex ", j, " coincide at (", a[0], ", ", a[1],
                                         "): the circumcircle curvature is infinite"));
@@ -565,43 +564,6 @@ inline std::vector<double> discrete_curvatures(const Functional& f, const std::v
   for (std::size_t j = 0; j < g.n; ++j)
     if (g.kappa_active(static_cast<long>(j))) kappa[j] = g.kappa(static_cast<long>(j)).v;
   return kappa;
-}
-
-/// Reduction to normal offsets delta_j with fixed normals n_j (Sec. 2.3.2): reduced_gradient[a] =
-/// g_{f_a} . n_{f_a}, reduced_hessian(a, b) = n_{f_a}^T H_{f_a f_b} n_{f_b}, where f_0 < f_1 < ... are the
-/// free vertices (free[j] = 1) in increasing index: reduced index a <-> vertex f_a. Dropping fixed
-/// vertices does not widen the band (the reduced, cyclic if H is, distance is at most the original),
-/// so reduced_hessian has H's half-bandwidth and cyclicity. (A fixed vertex j does not decouple its
-/// neighbours: kappa_j couples c_{j-1} and c_{j+1}, so the reduced closed system stays cyclic.)
-inline void normal_offset_system(const std::vector<Vec2>& gradient, const Block_banded_hessian& hessian,
-                                 const std::vector<Vec2>& normals, const std::vector<unsigned char>& free,
-                                 std::vector<double>& reduced_gradient, Banded_symmetric& reduced_hessian) {
-  const std::size_t n = hessian.vertices(), w = hessian.half_bandwidth();
-  require(gradient.size() == n && normals.size() == n && free.size() == n,
-          "fair::internal::optimal::normal_offset_system: sizes gradient ", gradient.size(), ", normals ",
-          normals.size(), ", free ", free.size(), " differ from the Hessian's ", n, " vertices");
-  std::vector<std::size_t> index(n, n);
-  std::size_t m = 0;
-  for (std::size_t j = 0; j < n; ++j)
-    if (free[j]) index[j] = m++;
-  reduced_gradient.assign(m, 0.0);
-  reduced_hessian.reset(m, w, hessian.cyclic());
-  const std::size_t reach = hessian.cyclic() ? std::min(w, n - 1) : w;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!free[i]) continue;
-    const Vec2& ni = normals[i];
-    reduced_gradient[index[i]] = gradient[i][0] * ni[0] + gradient[i][1] * ni[1];
-    for (std::size_t d = 0; d <= reach; ++d) {
-      if (!hessian.cyclic() && i + d >= n) break;
-      const std::size_t j = (i + d) % n;
-      if (!free[j] || !hessian.in_band(i, j)) continue;
-      const Vec2& nj = normals[j];
-      double v = 0;
-      for (int r = 0; r < 2; ++r)
-        for (int s = 0; s < 2; ++s) v += ni[r] * hessian.at(i, j, r, s) * nj[s];
-      reduced_hessian.at(index[i], index[j]) = v;
-    }
-  }
 }
 
 }  // namespace optimal

@@ -84,7 +84,7 @@ inline std::size_t subdivide(const Level_problem& p, std::vector<Vec2>& c, doubl
   // four-point polygon is within O(h^4) of a smooth curve: the warm start is nearly converged.
   // Plain midpoints next to corners (their neighbours stay on the rays) and at open ends (no
   // fourth point). (The paper found other placements "less stable" with CG; with Newton and the
-  // step cap of solver.h the four-point start is the more stable one, measured on the tests.)
+  // step cap of line_search.h the four-point start is the more stable one, measured on the tests.)
   const std::vector<unsigned char>& zero = p.f.zero_curvature;
   // (With no curvature term at all, e.g. lambda = 0, the minimiser is the input polygon: plain
   // midpoints keep it exactly.)
@@ -204,9 +204,7 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
   f.derivative_weight = o.derivative_weight;
   f.derivative_exponent = o.derivative_exponent;
   f.derivative_weight[0] = 0;
-  f.discretisation = o.discretisation == Curvature_discretisation::CIRCUMCIRCLE    ? Discretisation::CIRCUMCIRCLE
-                     : o.discretisation == Curvature_discretisation::TURNING_ANGLE ? Discretisation::TURNING_ANGLE
-                                                                                   : Discretisation::REGULARISED;
+  f.discretisation = o.discretisation;
   Level_settings s;
   s.conjugate_gradient = o.solver == Optimal_curve_solver::CONJUGATE_GRADIENT;
   s.max_iterations = o.max_iterations_per_level;

@@ -31,7 +31,7 @@
 #define FAIR_INTERNAL_OPTIMAL_SPLINE_FIT_H
 
 #include <fair/Errors.h>
-#include <fair/internal/common/banded.h>
+#include <fair/internal/linear_algebra/banded_cholesky.h>
 #include <fair/internal/optimal/vec2.h>
 
 #include <algorithm>
@@ -154,7 +154,7 @@ inline void quintic_derivatives(const std::vector<Vec2>& p, const std::vector<do
     return static_cast<long>(2 * (knot - offset) + static_cast<std::size_t>(which));
   };
   const std::array<std::array<double, 6>, 6> M = quintic_jerk_matrix();
-  common::Banded_cholesky B;
+  linear_algebra::Banded_cholesky B;
   B.reset(size, 3);
   std::array<std::vector<double>, 2> rhs{{std::vector<double>(size, 0.0), std::vector<double>(size, 0.0)}};
   std::array<std::array<double, 4>, 4> closing{}; // the closing piece's block (closed only)

@@ -1,31 +1,33 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// Symmetric banded matrices of the optimal-curve solver (issue 11; doc/optimal_curves.md, "Banded
-// solve"): the 2x2-block Hessian of the functional in the vertex coordinates, and the scalar system on
-// the normal offsets, both optionally cyclic (closed curves), with an O(n w^2) Cholesky solve.
+// Symmetric band matrices, optionally cyclic (closed curves), and their O(n w^2) Cholesky solve
+// (doc/optimal_curves.md, "Banded solve"): the storage rule Band_layout, shared by the scalar
+// matrix Banded_symmetric (the reduced Newton system of the optimal-curve solver) and the 2x2-block
+// Hessian of optimal/hessian.h; solve_banded_positive_definite reorders a cyclic band by the
+// folding order of cyclic_order.h and factors it with banded_cholesky.h.
 //
-// Storage. Row i keeps the blocks (i, i + d) for d = 0..w (i + d taken mod n when cyclic); the block
-// (i, j) with j "before" i is the transpose of the stored (j, i). A cyclic matrix with n <= 2w + 1 has
-// every pair within cyclic distance w, and the two directions round the cycle would both be within w:
-// it is stored dense (n <= 2w + 1 is tiny), which keeps at(i, j) and at(j, i) one entry.
-// Memory O(n w) in both cases (no n^2 storage).
+// Storage. Row i keeps the entries (blocks) (i, i + d) for d = 0..w (i + d taken mod n when
+// cyclic); the entry (i, j) with j "before" i is the transpose of the stored (j, i). A cyclic
+// matrix with n <= 2w + 1 has every pair within cyclic distance w, and the two directions round
+// the cycle would both be within w: it is stored dense (n <= 2w + 1 is tiny), which keeps at(i, j)
+// and at(j, i) one entry. Memory O(n w) in both cases (no n^2 storage).
 
-#ifndef FAIR_INTERNAL_OPTIMAL_BANDED_H
-#define FAIR_INTERNAL_OPTIMAL_BANDED_H
+#ifndef FAIR_INTERNAL_LINEAR_ALGEBRA_SYMMETRIC_BAND_H
+#define FAIR_INTERNAL_LINEAR_ALGEBRA_SYMMETRIC_BAND_H
 
 #include <fair/Errors.h>
-#include <fair/internal/common/banded.h>
+#include <fair/internal/linear_algebra/banded_cholesky.h>
+#include <fair/internal/linear_algebra/cyclic_order.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace fair {
 namespace internal {
-namespace optimal {
-
-namespace banded_detail {
+namespace linear_algebra {
 
 /// Where the entry (i, j) of a symmetric band matrix lives: slot (row, offset) and whether it is the
 /// transpose of the stored one. Shared by the block and the scalar matrix.
@@ -67,54 +69,8 @@ struct Band_layout {
   }
 };
 
-}  // namespace banded_detail
-
-/// Symmetric block-banded (cyclic if closed) matrix of 2x2 vertex blocks, half-bandwidth w in vertices:
-/// the Hessian of the functional in the coordinates (x_0, y_0, x_1, y_1, ...). Block (i, i) is stored in
-/// full (both off-diagonal entries); block (j, i) is the transpose of block (i, j).
-class Block_banded_hessian {
-public:
-  /// Zero matrix of `vertices` x `vertices` blocks.
-  void reset(std::size_t vertices, std::size_t half_bandwidth, bool cyclic) {
-    layout_.reset(vertices, half_bandwidth, cyclic);
-    data_.assign(layout_.slots() * 4, 0.0);
-  }
-  std::size_t vertices() const { return layout_.n; }
-  std::size_t half_bandwidth() const { return layout_.w; }
-  bool cyclic() const { return layout_.cyclic; }
-  /// Whether block (i, j) lies within the band (cyclic distance <= w).
-  bool in_band(std::size_t i, std::size_t j) const { return layout_.in_band(i, j); }
-  /// Entry (row, col) of block (i, j), i.e. d^2 F / d c_i[row] d c_j[col]; Internal_error outside the band.
-  double& at(std::size_t i, std::size_t j, int row, int col) {
-    bool t;
-    const std::size_t s = layout_.slot(i, j, t);
-    return data_[s * 4 + (t ? col * 2 + row : row * 2 + col)];
-  }
-  double at(std::size_t i, std::size_t j, int row, int col) const {
-    bool t;
-    const std::size_t s = layout_.slot(i, j, t);
-    return data_[s * 4 + (t ? col * 2 + row : row * 2 + col)];
-  }
-  /// Adds the 2x2 block b (row-major) to block (i, j) (one slot lookup for the four entries).
-  void add_block(std::size_t i, std::size_t j, const double b[4]) {
-    bool t;
-    double* d = &data_[layout_.slot(i, j, t) * 4];
-    if (t) {
-      d[0] += b[0];
-      d[1] += b[2];
-      d[2] += b[1];
-      d[3] += b[3];
-    } else {
-      for (int k = 0; k < 4; ++k) d[k] += b[k];
-    }
-  }
-
-private:
-  banded_detail::Band_layout layout_;
-  std::vector<double> data_;
-};
-
-/// Scalar symmetric banded (cyclic if `cyclic`) matrix: the normal-offset system.
+/// Scalar symmetric banded (cyclic if `cyclic`) matrix: the reduced Newton system of the
+/// optimal-curve solver (optimal/reduced_system.h).
 class Banded_symmetric {
 public:
   void reset(std::size_t n, std::size_t half_bandwidth, bool cyclic) {
@@ -139,21 +95,9 @@ public:
   }
 
 private:
-  banded_detail::Band_layout layout_;
+  Band_layout layout_;
   std::vector<double> data_;
 };
-
-namespace banded_detail {
-
-/// The folding order 0, n-1, 1, n-2, 2, ...: position -> original index. It turns a cyclic band of
-/// half-bandwidth w into a plain band of half-bandwidth <= 2w (doc/optimal_curves.md, "Banded solve":
-/// neighbours i, i+d at positions 2i, 2i+2d; across the wrap and across the fold |4m + 3 - 2d| <= 2d - 1).
-inline void folding_order(std::size_t n, std::vector<std::size_t>& order) {
-  order.resize(n);  // the zig-zag order 0, n-1, 1, n-2, ... of common::cyclic_position
-  for (std::size_t j = 0; j < n; ++j) order[common::cyclic_position(j, n)] = j;
-}
-
-}  // namespace banded_detail
 
 /// Solves A x = b for symmetric positive definite A by banded Cholesky A = L L^T: O(n w^2) time, O(n w)
 /// memory. A cyclic A is first reordered by the folding order (half-bandwidth <= 2w, still O(n w^2); a
@@ -181,14 +125,14 @@ inline bool solve_banded_positive_definite(const Banded_symmetric& a, std::vecto
     for (std::size_t i = 0; i < n; ++i) order[i] = i;
     wb = n - 1;
   } else {
-    banded_detail::folding_order(n, order);
+    folding_order(n, order);
     wb = std::min(2 * w, n - 1);
   }
   position.resize(n);
   for (std::size_t p = 0; p < n; ++p) position[order[p]] = p;
   // The reordered matrix, entry (p, q) with q in [p - wb, p], factored by the library's one banded
-  // Cholesky (internal/common/banded.h).
-  thread_local common::Banded_cholesky chol;
+  // Cholesky (banded_cholesky.h).
+  thread_local Banded_cholesky chol;
   chol.reset(n, wb);
   const std::size_t reach = a.cyclic() ? std::min(w, n - 1) : w;
   for (std::size_t i = 0; i < n; ++i)
@@ -211,8 +155,8 @@ inline bool solve_banded_positive_definite(const Banded_symmetric& a, std::vecto
   return true;
 }
 
-}  // namespace optimal
-}  // namespace internal
-}  // namespace fair
+} // namespace linear_algebra
+} // namespace internal
+} // namespace fair
 
-#endif  // FAIR_INTERNAL_OPTIMAL_BANDED_H
+#endif // FAIR_INTERNAL_LINEAR_ALGEBRA_SYMMETRIC_BAND_H

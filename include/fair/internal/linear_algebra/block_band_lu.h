@@ -1,6 +1,6 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// Direct solver for the Jacobian of the kappa-curve system (system.h): a square matrix
+// Direct solver for the Jacobian of the kappa-curve system (kappa/system.h): a square matrix
 // of 4x4 blocks in which block row i only has the column blocks i-2, i-1, i, i+1 ("slots"
 // 0..3), clipped at the ends for open curves and cyclic for closed curves.
 //
@@ -30,11 +30,11 @@
 // factorisation can still be inaccurate (no pivoting across blocks): the Newton step it gives is
 // accepted only if the line search confirms a decrease of the residual.
 
-#ifndef FAIR_INTERNAL_KAPPA_BLOCK_LU_H
-#define FAIR_INTERNAL_KAPPA_BLOCK_LU_H
+#ifndef FAIR_INTERNAL_LINEAR_ALGEBRA_BLOCK_BAND_LU_H
+#define FAIR_INTERNAL_LINEAR_ALGEBRA_BLOCK_BAND_LU_H
 
 #include <fair/internal/common/large_buffer.h>
-#include <fair/internal/kappa/banded.h>
+#include <fair/internal/linear_algebra/banded_lu.h>
 
 #include <algorithm>
 #include <array>
@@ -46,7 +46,7 @@
 
 namespace fair {
 namespace internal {
-namespace kappa {
+namespace linear_algebra {
 
 /// A 4x4 block, row-major.
 typedef std::array<double, 16> Block4;
@@ -427,8 +427,8 @@ private:
   Banded_lu dense_lu_;                     // small cyclic systems
 };
 
-} // namespace kappa
+} // namespace linear_algebra
 } // namespace internal
 } // namespace fair
 
-#endif // FAIR_INTERNAL_KAPPA_BLOCK_LU_H
+#endif // FAIR_INTERNAL_LINEAR_ALGEBRA_BLOCK_BAND_LU_H

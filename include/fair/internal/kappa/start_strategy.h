@@ -1,0 +1,294 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// The start strategy of the kappa-curve solver: the cold solve (the density start, the paper's
+// initial guess and alternating passes, Newton's method, the Levenberg-Marquardt fallback, the
+// steering), the warm start after an edit (a local solve around the moved point, then Newton's
+// method from the previous solution) and the warm/cold policy of Kappa_curve_2
+// (solve_with_warm_start).
+
+#ifndef FAIR_INTERNAL_KAPPA_START_STRATEGY_H
+#define FAIR_INTERNAL_KAPPA_START_STRATEGY_H
+
+#include <fair/Kappa_curve_report.h>
+#include <fair/internal/kappa/active_set.h>
+#include <fair/internal/kappa/block_range.h>
+#include <fair/internal/kappa/fallback.h>
+#include <fair/internal/kappa/levenberg_marquardt.h>
+#include <fair/internal/kappa/newton.h>
+#include <fair/internal/kappa/outcome.h>
+#include <fair/internal/kappa/parameter_prediction.h>
+#include <fair/internal/kappa/refinement.h>
+#include <fair/internal/kappa/solve_settings.h>
+#include <fair/internal/kappa/steering.h>
+#include <fair/internal/kappa/system.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace fair {
+namespace internal {
+namespace kappa {
+
+/// Cold start: alternating passes before the first Newton run (they bring the residual to
+/// ~0.05 on typical data, inside Newton's basin).
+constexpr std::size_t fast_passes = 2;
+/// The alternating passes stop once max |r| is below this (Newton's basin).
+constexpr double refinement_stop = 1e-3;
+
+/// Local warm start: radii R (blocks on each side of the moved one) first, growth, last.
+constexpr std::size_t local_radius_first = 8;
+constexpr std::size_t local_radius_growth = 4;
+constexpr std::size_t local_radius_last = 32;
+/// Closed curves: a local range leaves at least this many blocks outside, so that its system
+/// stays open-structured (no wrap-around coupling).
+constexpr std::size_t closed_range_gap = 3;
+
+/// The density start of cold_start_newton runs when the predicted t_i move this far from 1/2.
+constexpr double predicted_spread_min = 0.1;
+/// Alternating passes between the density start and its Newton run: one brings lambda and P in
+/// line with the predicted t (eq. 10, eq. 18); more passes pull t back towards the passes' own
+/// fixed point near 1/2.
+constexpr std::size_t density_start_passes = 1;
+
+/// Cold start, the Newton paths. On dense smooth data with w = 1 first the density start
+/// (parameter_prediction.h: predicted t_i, one pass, at most density_start_iterations Jacobians
+/// of Newton's method, kept only at an interior root). Then the initial guess, fast_passes
+/// alternating passes, Newton's method with the active set (the fast path: from a residual of
+/// ~0.05 it converges quadratically in two or three Jacobians on typical data). If that does
+/// not end at an interior root: the paper's way, up to `refinement_passes` passes from the
+/// initial guess, then Newton's method again (on random data in the unit square it then
+/// converges as often as Levenberg-Marquardt, and it finds an interior root for some sets whose
+/// fast path ended on joins). An interior root is preferred; else the first root on joins
+/// found.
+/// Returns true (fmax set) at a root; otherwise st is the state after the passes.
+inline bool cold_start_newton(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                              Kappa_curve_report& res, double& fmax) {
+  // The density start (parameter_prediction.h): on densely sampled smooth data the interior
+  // root's t_i lie far from 1/2, where the paper's start begins (uniform samples of the ellipse
+  // (cos a, 0.99 sin a): n = 160-260 UNSOLVED from it, INTERIOR in 1-3 Jacobians from this one;
+  // doc/kappa_curves.md, "Dense smooth data"). Only with w = 1 (the estimate is that of
+  // parabolas), when a prediction is made (the chords turn little at every point, every t_i
+  // inside the density limit) and it moves some t_i by predicted_spread_min or more; kept only
+  // at an interior root (a root on joins from this start can be worse than what the paths
+  // below find).
+  std::vector<double> predicted;
+  if (pb.mode == Kappa_weights::UNIT && predicted_parameters(pb, predicted) >= predicted_spread_min) {
+    st.resize(pb.n);  // the initial guess (w = 1), with the predicted t instead of 1/2
+    st.t.swap(predicted);
+    solve_eq18(pb, st);
+    refine(pb, st, std::min(density_start_passes, settings.refinement_passes), refinement_stop, res);
+    fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), density_start_iterations));
+    if (is_root(pb, st, fmax, settings) && bounds_active(pb, st) == 0) return true;
+  }
+  initial_guess(pb, st);
+  const std::size_t first_passes = std::min<std::size_t>(fast_passes, settings.refinement_passes);
+  refine(pb, st, first_passes, refinement_stop, res);
+  fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), newton_iterations));
+  if (is_root(pb, st, fmax, settings) && bounds_active(pb, st) == 0) return true;
+  const bool on_joins = is_root(pb, st, fmax, settings);
+  Kappa_solver_state joins_root;
+  const double joins_fmax = fmax;
+  if (on_joins) joins_root = st;
+  // The start is recomputed (deterministic) rather than kept: no copy of the state on the
+  // fast path.
+  initial_guess(pb, st);
+  Kappa_curve_report passes;
+  refine(pb, st, settings.refinement_passes, refinement_stop, passes);
+  res.refinement_passes = passes.refinement_passes;
+  if (res.iterations < settings.max_iterations && passes.refinement_passes > first_passes) {
+    Kappa_solver_state after_passes = st;
+    fmax = newton(pb, st, settings, res, std::min(settings.max_iterations - res.iterations, newton_iterations));
+    if (is_root(pb, st, fmax, settings) && (!on_joins || bounds_active(pb, st) == 0)) return true;
+    st = after_passes;
+  }
+  if (!on_joins) return false;
+  st = std::move(joins_root);
+  fmax = joins_fmax;
+  return true;
+}
+
+/// The blocks within distance R of block `moved` (cyclic for closed curves, clipped for open
+/// ones); false when they would cover the curve, or leave fewer than closed_range_gap blocks of
+/// a closed one: then only the global solve is left.
+inline bool local_range(const Problem& pb, std::size_t moved, std::size_t R, Block_range& range) {
+  const std::size_t n = pb.n;
+  range.all = false;
+  if (pb.closed) {
+    if (2 * R + 1 + closed_range_gap > n) return false;
+    range.first = (moved + n - R) % n;
+    range.count = 2 * R + 1;
+  } else {
+    range.first = moved > R ? moved - R : 0;
+    range.count = std::min(n, moved + R + 1) - range.first;
+    if (range.count >= n) return false;
+  }
+  return true;
+}
+
+/// Local warm start after a change of the block settings.moved only: the change of one Q_i
+/// perturbs the solution by amounts that decay geometrically along the curve, so first solve
+/// only for the blocks within distance R of the moved one (the others held fixed; a square
+/// 4(2R+1) system, O(R) per iteration) and accept the result iff the residual of the WHOLE
+/// system is within the tolerance; R = local_radius_first, ... local_radius_last, then the
+/// global solve. The accepted state is a root of the full system to the same tolerance as a
+/// global solve. A local result that falls short but lowers the global residual is kept as the
+/// start of the next stage. Each stage: Newton (at most newton_iterations Jacobians), else a
+/// short Levenberg-Marquardt run (at most local_lm_iterations), both within the cap of the
+/// whole solve. Returns true (fmax set) at an interior root; otherwise st is the best state.
+inline bool local_warm_start(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                             Kappa_curve_report& res, double& fmax) {
+  if (settings.moved >= pb.n) return false;
+  std::vector<double> F;
+  double best = evaluate(pb, st, F);
+  for (std::size_t R = local_radius_first; R <= local_radius_last; R *= local_radius_growth) {
+    Block_range range;
+    if (!local_range(pb, settings.moved, R, range)) break;
+    Kappa_solver_state trial = st;
+    // An edit can take a point off its join: a t_i of the range on its face whose multiplier is
+    // negative already at the start is released before Newton's method (whose own release acts
+    // only at a root of the reduced system, which the edited data may not have with t_i fixed).
+    std::vector<char> released(range.count, 0);
+    release_faces(pb, trial, range, released);
+    const std::size_t newton_cap = std::min(remaining_iterations(settings, res), warm_newton_iterations);
+    if (!(newton(pb, trial, settings, res, newton_cap, range) <= settings.tolerance)) {
+      trial = st;
+      const std::size_t lm_cap = std::min(remaining_iterations(settings, res), local_lm_iterations);
+      // Without the active set: after an edit that takes a point off its join the previous t_i
+      // sits on its face, and only the unconstrained run can move it off (there is no release).
+      levenberg_marquardt(pb, trial, settings, res, lm_cap, range, false);
+    }
+    const double fm = evaluate(pb, trial, F);
+    if (is_root(pb, trial, fm, settings)) {
+      st = trial;
+      fmax = fm;
+      return true;
+    }
+    if (fm < best) {
+      st = trial;
+      best = fm;
+    }
+  }
+  return false;
+}
+
+/// Global warm start: Newton's method from the previous solution. Returns true (fmax set) at
+/// an interior root; otherwise st is left unchanged.
+inline bool global_warm_newton(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                               Kappa_curve_report& res, double& fmax) {
+  Kappa_solver_state start = st;
+  fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), warm_newton_iterations));
+  if (is_root(pb, st, fmax, settings)) return true;
+  st = start;
+  return false;
+}
+
+/// The cold solve: its Newton paths (cold_start_newton), on failure Levenberg-Marquardt with
+/// restart from the passes; then steer_off_minima. `newton_paths_failed`: this caller already ran
+/// cold_start_newton on these data with its full caps and it failed; it is deterministic, so
+/// the run is skipped and only the start and passes are recomputed (st is then the state after
+/// the passes, as cold_start_newton leaves it on failure). Returns max |r|.
+inline double cold_solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                         Kappa_curve_report& res, bool newton_paths_failed) {
+  double fmax = std::numeric_limits<double>::infinity();
+  bool root = false;
+  if (!newton_paths_failed) {
+    root = cold_start_newton(pb, st, settings, res, fmax);
+  } else {
+    initial_guess(pb, st);
+    refine(pb, st, settings.refinement_passes, refinement_stop, res);
+  }
+  if (!root) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
+  return steer_off_minima(pb, st, settings, res, fmax);
+}
+
+/// What solve() did beyond its report, for solve_with_warm_start.
+struct Solve_trace {
+  /// A warm solve ran cold_start_newton with its full caps (as a cold solve runs it) and it
+  /// failed.
+  bool cold_newton_paths_failed = false;
+};
+
+/// Solves the kappa-curve system; `st` holds the initial state when settings.warm.
+/// Cold start: cold_solve. Warm start (st of size n): local_warm_start around the moved block,
+/// else global_warm_newton, else cold_start_newton (report().warm_started false then), else
+/// levenberg_marquardt_with_restart from the previous solution.
+inline Kappa_curve_report solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                                Solve_trace* trace = nullptr) {
+  Kappa_curve_report res;
+  if (trace != nullptr) *trace = Solve_trace{};
+  const bool cold = !settings.warm || st.t.size() != pb.n;
+  res.warm_started = !cold;
+  if (cold) {
+    const double fmax = cold_solve(pb, st, settings, res, false);
+    return finish(pb, st, settings, res, fmax);
+  }
+  double fmax = std::numeric_limits<double>::infinity();
+  bool root = local_warm_start(pb, st, settings, res, fmax) || global_warm_newton(pb, st, settings, res, fmax);
+  if (!root) {
+    // The Newton paths of a cold start (a few Jacobians) before Levenberg-Marquardt from the
+    // previous solution: an edit that moves points onto or off joins can leave the previous
+    // solution outside Newton's basin while the cold start's passes land inside it.
+    // With the Jacobians of its three Newton runs left, their caps are those of a cold solve.
+    const bool full_caps =
+        remaining_iterations(settings, res) >=
+        std::min(settings.max_iterations, 2 * newton_iterations + density_start_iterations);
+    Kappa_solver_state fresh;
+    if (cold_start_newton(pb, fresh, settings, res, fmax)) {
+      st = std::move(fresh);
+      res.warm_started = false;
+      root = true;
+    } else if (trace != nullptr) {
+      trace->cold_newton_paths_failed = full_caps;
+    }
+  }
+  if (!root) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
+  return finish(pb, st, settings, res, steer_off_minima(pb, st, settings, res, fmax));
+}
+
+/// The warm/cold start policy of Kappa_curve_2: with a `previous` solution of the same size
+/// (offsets already in pb's normalisation), a warm start after a change of input point
+/// `moved_point` (any value that is not an input point: unknown change), and if that ends
+/// UNSOLVED a cold start as well, keeping the better solve (by outcome, then residual)
+/// (report().warm_started says which); without one, a cold start. `st` receives the solution.
+inline Kappa_curve_report solve_with_warm_start(const Problem& pb, const Kappa_solver_state* previous,
+                                                std::size_t moved_point, Solve_settings settings,
+                                                Kappa_solver_state& st) {
+  settings.warm = false;
+  settings.moved = Problem::no_block;
+  if (previous == nullptr || previous->t.size() != pb.n) return solve(pb, st, settings);
+  st = *previous;
+  Solve_settings warm = settings;
+  warm.warm = true;
+  warm.moved = pb.block_of_point(moved_point);
+  Solve_trace trace;
+  const Kappa_curve_report warm_report = solve(pb, st, warm, &trace);
+  // A warm root on joins is the constrained solution near the previous one: kept (a cold solve
+  // costs more than the whole warm one and would jump to another root far from the edit).
+  if (warm_report.status != Kappa_curve_status::UNSOLVED) return warm_report;
+  // The cold solve; when the warm one's fallback already ran the cold Newton paths and they
+  // failed, they are not repeated (up to 2 x newton_iterations + density_start_iterations
+  // Jacobians for nothing: fuzz finding slow-fixed-weights-25-points). Otherwise (e.g. a warm
+  // root with a point at a minimum from the warm Newton stages) the cold solve runs all paths.
+  Kappa_solver_state cold;
+  Kappa_curve_report cold_report;
+  const double cold_fmax = cold_solve(pb, cold, settings, cold_report, trace.cold_newton_paths_failed);
+  cold_report = finish(pb, cold, settings, cold_report, cold_fmax);
+  // Ranked by outcome (INTERIOR, ON_JOINS, UNSOLVED: the enum's order), then by residual (NaN last).
+  const auto rank = [](const Kappa_curve_report& r) { return static_cast<int>(r.status); };
+  const bool cold_better = rank(cold_report) < rank(warm_report) ||
+                           (rank(cold_report) == rank(warm_report) &&
+                            (cold_report.residual < warm_report.residual || (std::isnan(warm_report.residual) && !std::isnan(cold_report.residual))));
+  if (!cold_better) return warm_report;
+  st = std::move(cold);
+  return cold_report;
+}
+
+} // namespace kappa
+} // namespace internal
+} // namespace fair
+
+#endif // FAIR_INTERNAL_KAPPA_START_STRATEGY_H
