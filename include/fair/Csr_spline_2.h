@@ -151,7 +151,7 @@ private:
       spline_(std::move(data_.breakpoints), std::move(data_.control_points), closed) {
     // Finite control points can still give Bezier pieces (or their derivatives) that overflow,
     // e.g. coordinates near 1e308 or extreme knot ratios: refuse them rather than hand out NaN.
-    internal::classic::classic_check_finite_pieces(spline_.polynomial_pieces(), "Csr_spline_2");
+    spline_.check_finite_pieces("Csr_spline_2");
   }
 
   static internal::csr::Construction<K> construct(const std::vector<Point_2>& samples, const std::vector<FT>* parameters,
