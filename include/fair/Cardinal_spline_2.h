@@ -92,8 +92,8 @@ optimal_cardinal_parameters(const std::vector<Point_2>& p, bool closed = false) 
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
   typedef typename K::FT FT;
   const char* method = closed ? "optimal_cardinal_parameters (closed)" : "optimal_cardinal_parameters (open)";
-  internal::common::check_interpolation_input(p, closed ? 3 : 4, closed, method);
-  const internal::cardinal::Cardinal_sums<FT> s = internal::cardinal::cardinal_interior_sums<FT>(p, closed);
+  const internal::cardinal::Cardinal_sums<FT> s =
+      internal::cardinal::checked_cardinal_interior_sums<FT>(p, closed ? 3 : 4, closed, method); // one pass
   const FT D = s.D(), M = s.M();
   if (CGAL::is_zero(D))
     throw Invalid_input_error(internal::message(

@@ -37,6 +37,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -240,6 +241,14 @@ public:
   /// rational one, whose pieces Rational_bezier_2 checks). O(m), no allocation.
   void check_finite_pieces(const char* method) const {
     if (rational()) return;
+    // Sufficient and O(1): eq. 2 multiplies control points by sums of at most three intervals
+    // (each <= 2 T, T the largest |breakpoint|, a closed spline's period included) and divides
+    // by such sums; the Bezier points are convex combinations (<= C, the largest |coordinate|),
+    // their differences at most 6 C, 24 C. With 8 T C and 32 C below DBL_MAX nothing overflows,
+    // so the loop below could not throw.
+    const double T = std::max(std::abs(CGAL::to_double(t_.front())), std::abs(CGAL::to_double(t_.back())));
+    const double big = std::numeric_limits<double>::max() / 64;
+    if (bound_ <= big && 16 * T * bound_ <= big) return;
     const FT three(3), six(6);
     for (std::size_t j = 0; j < number_of_pieces(); ++j) {
       const std::array<Affine, 4> c = affine_bezier_points(static_cast<long>(j));
@@ -295,7 +304,7 @@ private:
   bool rational() const { return !w_.empty(); }
 
   void validate() {
-    internal::spline::check_spline_data<K>(t_, d_, rational() ? &w_ : nullptr, closed_);
+    bound_ = internal::spline::check_spline_data<K>(t_, d_, rational() ? &w_ : nullptr, closed_);
     if (rational() && std::all_of(w_.begin(), w_.end(), [&](const FT& w) { return w == w_.front(); }))
       w_.clear(); // equal weights: the same curve, polynomial form
   }
@@ -454,6 +463,7 @@ private:
   std::vector<Point_2> d_;
   std::vector<FT> w_; // empty for a polynomial spline
   bool closed_ = false;
+  double bound_ = 0;  // the largest |coordinate| of a control point (check_spline_data)
 };
 
 } // namespace fair

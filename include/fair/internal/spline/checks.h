@@ -59,8 +59,9 @@ void check_breakpoints(const std::vector<FT>& t, bool closed, const char* fn) {
 
 /// Breakpoints as above, m + 3 (open) or m (closed) finite control points and, when `w` is not
 /// null (a rational spline), as many finite positive weights. One pass over the control points.
+/// Returns the largest max(|x|, |y|) max(1, w) of a control point (for check_finite_pieces).
 template <class K>
-void check_spline_data(const std::vector<typename K::FT>& t, const std::vector<typename K::Point_2>& d,
+double check_spline_data(const std::vector<typename K::FT>& t, const std::vector<typename K::Point_2>& d,
                        const std::vector<typename K::FT>* w, bool closed) {
   check_breakpoints(t, closed, "Cubic_spline_2");
   const std::size_t m = t.size() - 1, expected = closed ? m : m + 3;
@@ -70,12 +71,14 @@ void check_spline_data(const std::vector<typename K::FT>& t, const std::vector<t
           d.size(), " control points");
   // (|x| or |y|) * max(1, w) * headroom finite; for w = 1 that is max(|x|, |y|) below DBL_MAX / headroom.
   const double limit = std::numeric_limits<double>::max() / overflow_headroom;
+  double bound = 0;
   for (std::size_t i = 0; i < d.size(); ++i) {
     const double x = CGAL::to_double(d[i].x()), y = CGAL::to_double(d[i].y());
     const double wi = w ? CGAL::to_double((*w)[i]) : 1.0;
     const double a = std::max(std::abs(x), std::abs(y)), scale = std::max(1.0, wi);
     // false for a NaN or infinite coordinate or weight: the checks below say which
     const bool small = std::abs(x) * scale <= limit && std::abs(y) * scale <= limit;
+    bound = std::max(bound, a * scale);
     if (!small)
       require(std::isfinite(x) && std::isfinite(y), "fair::Cubic_spline_2: control point ", i, " = (", x, ", ", y,
               ") is not finite");
@@ -88,6 +91,7 @@ void check_spline_data(const std::vector<typename K::FT>& t, const std::vector<t
               " is too large (combinations of control points would overflow double)");
     }
   }
+  return bound;
 }
 
 /// Throws Invalid_input_error unless the spline whose homogeneous Bezier points of piece i are
