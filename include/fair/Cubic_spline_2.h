@@ -17,12 +17,17 @@
 // t_{i+1} - t_i; consecutive pieces join with the G2 scalars beta_i = h_i / h_{i-1} of eq. 1.
 // The derivation of eqs. 1-3 and 10 in this form is in doc/cubic_splines.md.
 //
+// Representation: the breakpoints, the control points and, for a rational spline only, the
+// weights; nothing derived is stored. The Bezier points of piece i (eq. 2) are computed on demand
+// from c_{i-1} .. c_{i+2} and h_{i-2} .. h_{i+2} (internal/spline/bspline_form.h), in affine
+// coordinates for a polynomial spline and homogeneous ones for a rational spline.
+//
 // Exactness: construction, pieces, evaluation, knot insertion and from_bezier_pieces use
 // +, -, *, / only: exact in an exact kernel (EPECK, Simple_cartesian<Gmpq>), in double each
 // result is a few affine combinations (backward stable, relative error ~1e-15 of the control
 // polygon's extent). curvature() is computed in double. Complexity: O(1) per piece, O(m) for
-// all pieces, O(log m) per evaluation (binary search for the piece), O(m) per knot insertion
-// (the copy; 3 new control points).
+// all pieces, O(log m) per evaluation (a branch-free binary search for the piece), O(m) per knot
+// insertion (the copy; 3 new control points).
 
 #ifndef FAIR_CUBIC_SPLINE_2_H
 #define FAIR_CUBIC_SPLINE_2_H
