@@ -6,11 +6,14 @@
 //    the classic C2 interpolant (Cubic_interpolating_spline_2, the same curve: its spline());
 //  - all pieces of a spline of 10^5 pieces (pieces(), eq. 2), polynomial and rational;
 //  - Boehm insertion of one knot into 10^5 pieces (the O(m) copy);
-//  - the exact (EPECK) evaluation.
+//  - the exact (EPECK) evaluation;
+//  - fit_cubic_spline of a closed polygon of 10^5 vertices (the optimal curves' CAD output: the
+//    periodic chordal interpolant, its Cubic_spline_2 and the measured distance to the polygon).
 // Run with --benchmark_repetitions=9 --benchmark_report_aggregates_only=true for medians.
 
 #include <fair/Cubic_interpolating_spline_2.h>
 #include <fair/Cubic_spline_2.h>
+#include <fair/Polygon_spline_fit.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
@@ -115,5 +118,20 @@ void BM_spline_point_epeck(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * t.size()));
 }
 BENCHMARK(BM_spline_point_epeck)->Unit(benchmark::kMillisecond);
+
+void BM_fit_cubic_spline_closed(benchmark::State& state) {
+  // A closed polygon: n points on a wobbly circle (distinct consecutive vertices).
+  const std::size_t n = static_cast<std::size_t>(state.range(0));
+  std::vector<Kd::Point_2> p;
+  p.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    const double r = 1 + 0.1 * std::sin(7 * a);
+    p.emplace_back(r * std::cos(a), r * std::sin(a));
+  }
+  for (auto _ : state) benchmark::DoNotOptimize(fair::fit_cubic_spline<Kd>(p, true).max_distance);
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * n));
+}
+BENCHMARK(BM_fit_cubic_spline_closed)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 } // namespace

@@ -3,7 +3,7 @@
 
 #include <fair/Catmull_rom_2.h>
 #include <fair/Cubic_interpolating_spline_2.h>
-#include <fair/internal/classic/tridiagonal.h>
+#include <fair/internal/linear_algebra/tridiagonal.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -501,7 +501,7 @@ TEST(Classic_tridiagonal, ThomasAndShermanMorrisonSolveExactlyInGmpq) {
       b[i] = Q(20 + d(rng), 1);  // strictly diagonally dominant
       r[i] = Q(d(rng), 7);
     }
-    const std::vector<Q> x = fair::internal::classic::solve_tridiagonal(a, b, c, r);
+    const std::vector<Q> x = fair::internal::linear_algebra::solve_tridiagonal(a, b, c, r);
     for (std::size_t i = 0; i < n; ++i) {
       Q lhs = b[i] * x[i];
       if (i > 0) lhs += a[i] * x[i - 1];
@@ -509,10 +509,10 @@ TEST(Classic_tridiagonal, ThomasAndShermanMorrisonSolveExactlyInGmpq) {
       EXPECT_EQ(lhs, r[i]) << "tridiagonal row " << i << " of " << n;
     }
     if (n < 3) {
-      EXPECT_THROW(fair::internal::classic::solve_cyclic_tridiagonal(a, b, c, r), fair::Precondition_error);
+      EXPECT_THROW(fair::internal::linear_algebra::solve_cyclic_tridiagonal(a, b, c, r), fair::Precondition_error);
       continue;
     }
-    const std::vector<Q> y = fair::internal::classic::solve_cyclic_tridiagonal(a, b, c, r);
+    const std::vector<Q> y = fair::internal::linear_algebra::solve_cyclic_tridiagonal(a, b, c, r);
     for (std::size_t i = 0; i < n; ++i) {
       const Q lhs = a[i] * y[(i + n - 1) % n] + b[i] * y[i] + c[i] * y[(i + 1) % n];
       EXPECT_EQ(lhs, r[i]) << "cyclic row " << i << " of " << n;
@@ -531,13 +531,13 @@ TEST(Classic_tridiagonal, LargeDoubleSystemHasSmallResidualAndZeroPivotThrows) {
     b[i] = 2.5 + d(rng);
     r[i] = d(rng);
   }
-  const auto y = fair::internal::classic::solve_cyclic_tridiagonal(a, b, c, r);
+  const auto y = fair::internal::linear_algebra::solve_cyclic_tridiagonal(a, b, c, r);
   double worst = 0;
   for (std::size_t i = 0; i < n; ++i)
     worst = std::max(worst, std::fabs(a[i] * y[(i + n - 1) % n] + b[i] * y[i] + c[i] * y[(i + 1) % n] - r[i]));
   EXPECT_LT(worst, 1e-13);
-  EXPECT_THROW(fair::internal::classic::solve_tridiagonal<double>({0, 1}, {1, 1}, {1, 0}, {1, 1}), fair::Precondition_error);
-  EXPECT_THROW(fair::internal::classic::solve_tridiagonal<double>({0}, {1, 2}, {0}, {1}), fair::Precondition_error);
+  EXPECT_THROW(fair::internal::linear_algebra::solve_tridiagonal<double>({0, 1}, {1, 1}, {1, 0}, {1, 1}), fair::Precondition_error);
+  EXPECT_THROW(fair::internal::linear_algebra::solve_tridiagonal<double>({0}, {1, 2}, {0}, {1}), fair::Precondition_error);
 }
 
 } // namespace

@@ -7,7 +7,7 @@
 
 #include <fair/Kappa_certificate.h>
 #include <fair/Kappa_curve_2.h>
-#include <fair/internal/classic/tridiagonal.h>
+#include <fair/internal/linear_algebra/tridiagonal.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
@@ -280,11 +280,11 @@ void exact_eq18(bool closed, const std::vector<CGAL::Gmpq>& qx, const std::vecto
     }
   }
   if (closed) {
-    px = fair::internal::classic::solve_cyclic_tridiagonal(a, b, c, dx);
-    py = fair::internal::classic::solve_cyclic_tridiagonal(a, b, c, dy);
+    px = fair::internal::linear_algebra::solve_cyclic_tridiagonal(a, b, c, dx);
+    py = fair::internal::linear_algebra::solve_cyclic_tridiagonal(a, b, c, dy);
   } else {
-    px = fair::internal::classic::solve_tridiagonal(a, b, c, dx);
-    py = fair::internal::classic::solve_tridiagonal(a, b, c, dy);
+    px = fair::internal::linear_algebra::solve_tridiagonal(a, b, c, dx);
+    py = fair::internal::linear_algebra::solve_tridiagonal(a, b, c, dy);
   }
 }
 

@@ -98,8 +98,8 @@ optimal_cardinal_parameters(const std::vector<Point_2>& p, bool closed = false) 
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
   typedef typename K::FT FT;
   const char* method = closed ? "optimal_cardinal_parameters (closed)" : "optimal_cardinal_parameters (open)";
-  internal::common::check_interpolation_input(p, closed ? 3 : 4, closed, method);
-  const internal::cardinal::Cardinal_sums<FT> s = internal::cardinal::cardinal_interior_sums<FT>(p, closed);
+  const internal::cardinal::Cardinal_sums<FT> s =
+      internal::cardinal::checked_cardinal_interior_sums<FT>(p, closed ? 3 : 4, closed, method); // one pass
   const internal::cardinal::Alpha_optimum<FT> o = internal::cardinal::optimal_alpha(s);
   if (o.outcome == internal::cardinal::Alpha_optimum<FT>::ZERO_DENOMINATOR)
     throw Invalid_input_error(internal::message(
@@ -165,9 +165,8 @@ public:
     }
     const bool closed = options_.closed;
     const char* method = closed ? "Cardinal_spline_2 (closed)" : "Cardinal_spline_2 (open)";
-    internal::common::check_interpolation_input(points_, closed ? 3 : 4, closed, method);
-    const internal::cardinal::Alpha_optimum<FT> o =
-        internal::cardinal::optimal_alpha(internal::cardinal::cardinal_interior_sums<FT>(points_, closed));
+    const internal::cardinal::Alpha_optimum<FT> o = internal::cardinal::optimal_alpha(
+        internal::cardinal::checked_cardinal_interior_sums<FT>(points_, closed ? 3 : 4, closed, method)); // one pass
     const bool found = o.outcome == internal::cardinal::Alpha_optimum<FT>::FOUND;
     report_.status = found ? Cardinal_spline_status::OPTIMAL : Cardinal_spline_status::NO_OPTIMUM;
     report_.alpha = found ? o.alpha : FT(1) / FT(2);

@@ -153,7 +153,7 @@ private:
       pieces_(spline_.polynomial_pieces()) {
     // Finite control points can still give Bezier pieces (or their derivatives) that overflow,
     // e.g. coordinates near 1e308 or extreme knot ratios: refuse them rather than hand out NaN.
-    internal::classic::classic_check_finite_pieces(pieces_, "Csr_spline_2");
+    spline_.check_finite_pieces("Csr_spline_2");
   }
 
   static internal::csr::Construction<K> construct(const std::vector<Point_2>& samples, const std::vector<FT>* parameters,

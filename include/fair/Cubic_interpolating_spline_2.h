@@ -51,7 +51,7 @@
 #include <fair/Errors.h>
 #include <fair/Knot_spacing.h>
 #include <fair/internal/classic/common.h>
-#include <fair/internal/classic/tridiagonal.h>
+#include <fair/internal/linear_algebra/tridiagonal.h>
 #include <fair/internal/common/input_checks.h>
 
 #include <CGAL/number_utils.h>
@@ -217,11 +217,11 @@ private:
         my[2] = two * dy1 - my[1];
       }
     } else if (closed) {
-      mx = internal::classic::solve_cyclic_tridiagonal(a, b, c, dx);
-      my = internal::classic::solve_cyclic_tridiagonal(a, b, c, dy);
+      mx = internal::linear_algebra::solve_cyclic_tridiagonal(a, b, c, dx);
+      my = internal::linear_algebra::solve_cyclic_tridiagonal(a, b, c, dy);
     } else {
-      mx = internal::classic::solve_tridiagonal(a, b, c, dx);
-      my = internal::classic::solve_tridiagonal(a, b, c, dy);
+      mx = internal::linear_algebra::solve_tridiagonal(a, b, c, dx);
+      my = internal::linear_algebra::solve_tridiagonal(a, b, c, dy);
     }
     derivatives_.clear();
     derivatives_.reserve(n);

@@ -17,12 +17,17 @@
 // t_{i+1} - t_i; consecutive pieces join with the G2 scalars beta_i = h_i / h_{i-1} of eq. 1.
 // The derivation of eqs. 1-3 and 10 in this form is in doc/cubic_splines.md.
 //
+// Representation: the breakpoints, the control points and, for a rational spline only, the
+// weights; nothing derived is stored. The Bezier points of piece i (eq. 2) are computed on demand
+// from c_{i-1} .. c_{i+2} and h_{i-2} .. h_{i+2} (internal/spline/bspline_form.h), in affine
+// coordinates for a polynomial spline and homogeneous ones for a rational spline.
+//
 // Exactness: construction, pieces, evaluation, knot insertion and from_bezier_pieces use
 // +, -, *, / only: exact in an exact kernel (EPECK, Simple_cartesian<Gmpq>), in double each
 // result is a few affine combinations (backward stable, relative error ~1e-15 of the control
 // polygon's extent). curvature() is computed in double. Complexity: O(1) per piece, O(m) for
-// all pieces, O(log m) per evaluation (binary search for the piece), O(m) per knot insertion
-// (the copy; 3 new control points).
+// all pieces, O(log m) per evaluation (a branch-free binary search for the piece), O(m) per knot
+// insertion (the copy; 3 new control points).
 
 #ifndef FAIR_CUBIC_SPLINE_2_H
 #define FAIR_CUBIC_SPLINE_2_H
@@ -35,7 +40,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -59,8 +66,7 @@ public:
   /// names the index and the values); also for breakpoints or coordinates so large (beyond
   /// ~1e307) that the sums of a few of them in eq. 2 would overflow double.
   Cubic_spline_2(std::vector<FT> breakpoints, std::vector<Point_2> control_points, bool closed = false)
-    : t_(std::move(breakpoints)), d_(std::move(control_points)), w_(d_.size(), FT(1)), closed_(closed),
-      rational_(false) {
+    : t_(std::move(breakpoints)), d_(std::move(control_points)), closed_(closed) {
     validate();
   }
 
@@ -69,8 +75,9 @@ public:
   /// \throws Precondition_error as above, or for a weight that is not finite and > 0.
   Cubic_spline_2(std::vector<FT> breakpoints, std::vector<Point_2> control_points, std::vector<FT> weights,
                  bool closed = false)
-    : t_(std::move(breakpoints)), d_(std::move(control_points)), w_(std::move(weights)), closed_(closed),
-      rational_(false) {
+    : t_(std::move(breakpoints)), d_(std::move(control_points)), w_(std::move(weights)), closed_(closed) {
+    internal::require(w_.size() == d_.size(), "fair::Cubic_spline_2: ", w_.size(), " weights for ", d_.size(),
+                      " control points");
     validate();
   }
 
@@ -107,9 +114,14 @@ public:
 
   const std::vector<FT>& breakpoints() const { return t_; }
   const std::vector<Point_2>& control_points() const { return d_; }
-  /// The weights (all 1 for a polynomial spline).
-  const std::vector<FT>& weights() const { return w_; }
-  bool is_rational() const { return rational_; }
+  /// The weights, built on call (all 1 for a polynomial spline, which stores none).
+  std::vector<FT> weights() const { return rational() ? w_ : std::vector<FT>(d_.size(), FT(1)); }
+  /// Weight i (1 for a polynomial spline). \throws Precondition_error for i >= number_of_control_points().
+  FT weight(std::size_t i) const {
+    internal::require(i < d_.size(), "fair::Cubic_spline_2::weight: index ", i, " >= ", d_.size());
+    return rational() ? w_[i] : FT(1);
+  }
+  bool is_rational() const { return rational(); }
   bool is_closed() const { return closed_; }
   std::size_t number_of_pieces() const { return t_.size() - 1; }
   std::size_t number_of_control_points() const { return d_.size(); }
@@ -120,22 +132,21 @@ public:
   FT beta(std::size_t i) const {
     internal::require(i < number_of_pieces() && (closed_ || i >= 1), "fair::Cubic_spline_2::beta: index ", i,
                       " outside ", closed_ ? "[0, " : "[1, ", number_of_pieces(), ")");
-    const Form f = form();
-    return f.interval(static_cast<long>(i)) / f.interval(static_cast<long>(i) - 1);
+    return internal::spline::knot_interval(t_, closed_, static_cast<long>(i)) /
+           internal::spline::knot_interval(t_, closed_, static_cast<long>(i) - 1);
   }
 
   /// Piece i (0 <= i < m) over [t_i, t_{i+1}], as a rational cubic Bezier piece (eq. 2).
   Piece piece(std::size_t i) const {
     check_piece_index(i, "piece");
-    return to_piece(form().bezier_points(static_cast<long>(i)));
+    return to_piece(static_cast<long>(i));
   }
 
   /// All m pieces, computed on call (O(m)).
   std::vector<Piece> pieces() const {
     std::vector<Piece> out;
     out.reserve(number_of_pieces());
-    const Form f = form();
-    for (std::size_t i = 0; i < number_of_pieces(); ++i) out.push_back(to_piece(f.bezier_points(static_cast<long>(i))));
+    for (std::size_t i = 0; i < number_of_pieces(); ++i) out.push_back(to_piece(static_cast<long>(i)));
     return out;
   }
 
@@ -143,7 +154,7 @@ public:
   Polynomial_piece polynomial_piece(std::size_t i) const {
     check_piece_index(i, "polynomial_piece");
     require_polynomial("polynomial_piece");
-    return to_polynomial_piece(form().bezier_points(static_cast<long>(i)));
+    return to_polynomial_piece(affine_bezier_points(static_cast<long>(i)));
   }
 
   /// All pieces as polynomial cubic Bezier pieces. \throws Precondition_error if is_rational().
@@ -151,20 +162,30 @@ public:
     require_polynomial("polynomial_pieces");
     std::vector<Polynomial_piece> out;
     out.reserve(number_of_pieces());
-    const Form f = form();
     for (std::size_t i = 0; i < number_of_pieces(); ++i)
-      out.push_back(to_polynomial_piece(f.bezier_points(static_cast<long>(i))));
+      out.push_back(to_polynomial_piece(affine_bezier_points(static_cast<long>(i))));
     return out;
   }
 
   /// The point at the global parameter t in [t_0, t_m]. \throws Precondition_error outside.
+  /// O(log m): the binary search for the piece, its four Bezier points (eq. 2) and de Casteljau.
   Point_2 point(const FT& t) const {
-    const Jet j = jet(t, "point");
-    return Point_2(j[0].x / j[0].w, j[0].y / j[0].w);
+    const std::size_t i = locate(t, "point");
+    const FT u = (t - t_[i]) / (t_[i + 1] - t_[i]);
+    if (!rational()) {
+      const Affine p = internal::spline::cubic_point(affine_bezier_points(static_cast<long>(i)), u);
+      return Point_2(p.x, p.y);
+    }
+    const Homogeneous p = internal::spline::cubic_point(homogeneous_bezier_points(static_cast<long>(i)), u);
+    return Point_2(p.x / p.w, p.y / p.w);
   }
 
   /// d/dt at t (one-sided from the right at a breakpoint; C2 makes the sides agree).
   Vector_2 derivative(const FT& t) const {
+    if (!rational()) {
+      const Affine_jet j = affine_jet(t, "derivative");
+      return Vector_2(j[1].x, j[1].y);
+    }
     const Jet j = jet(t, "derivative");
     const FT& W = j[0].w;
     const FT cx = j[0].x / W, cy = j[0].y / W;
@@ -173,6 +194,10 @@ public:
 
   /// d^2/dt^2 at t: c'' = (X'' - 2 W' c' - W'' c) / W.
   Vector_2 second_derivative(const FT& t) const {
+    if (!rational()) {
+      const Affine_jet j = affine_jet(t, "second_derivative");
+      return Vector_2(j[2].x, j[2].y);
+    }
     const Jet j = jet(t, "second_derivative");
     const FT& W = j[0].w;
     const FT cx = j[0].x / W, cy = j[0].y / W;
@@ -201,7 +226,7 @@ public:
     std::vector<Homogeneous> c = internal::spline::insert_knot(t_, h, closed_, static_cast<long>(j), s);
     std::vector<FT> t = t_;
     t.insert(t.begin() + static_cast<std::ptrdiff_t>(j) + 1, s);
-    return from_homogeneous_control(std::move(t), c, closed_, rational_);
+    return from_homogeneous_control(std::move(t), c, closed_, rational());
   }
 
   /// The same spline with control point i moved to p (the designer's edit): C2 by construction.
@@ -213,42 +238,113 @@ public:
     return out;
   }
 
+  /// Throws Invalid_input_error naming `method` unless, in double, every Bezier point of every
+  /// piece and the Bezier coefficients of its first and second derivatives, 3 (b_{k+1} - b_k) and
+  /// 6 (b_{k+2} - 2 b_{k+1} + b_k), are finite: finite control points can still give pieces whose
+  /// combinations overflow (coordinates or breakpoints near DBL_MAX), and a family that hands out
+  /// pieces refuses them rather than return inf or NaN. Polynomial splines only (a no-op for a
+  /// rational one, whose pieces Rational_bezier_2 checks). O(m), no allocation.
+  void check_finite_pieces(const char* method) const {
+    if (rational()) return;
+    // Sufficient and O(1): eq. 2 multiplies control points by sums of at most three intervals
+    // (each <= 2 T, T the largest |breakpoint|, a closed spline's period included) and divides
+    // by such sums; the Bezier points are convex combinations (<= C, the largest |coordinate|),
+    // their differences at most 6 C, 24 C. With 8 T C and 32 C below DBL_MAX nothing overflows,
+    // so the loop below could not throw.
+    const double T = std::max(std::abs(CGAL::to_double(t_.front())), std::abs(CGAL::to_double(t_.back())));
+    const double big = std::numeric_limits<double>::max() / 64;
+    if (bound_ <= big && 16 * T * bound_ <= big) return;
+    const FT three(3), six(6);
+    for (std::size_t j = 0; j < number_of_pieces(); ++j) {
+      const std::array<Affine, 4> c = affine_bezier_points(static_cast<long>(j));
+      for (std::size_t k = 0; k < 4; ++k) {
+        const double x = CGAL::to_double(c[k].x), y = CGAL::to_double(c[k].y);
+        if (!std::isfinite(x) || !std::isfinite(y))
+          throw Invalid_input_error(internal::message(method, ": constructed point ", k, " = (", x, ", ", y,
+                                                      ") is not finite; the input coordinates are too large for "
+                                                      "this number type"));
+      }
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double dx = CGAL::to_double(three * (c[k + 1].x - c[k].x)), dy = CGAL::to_double(three * (c[k + 1].y - c[k].y));
+        double ex = 0, ey = 0;
+        if (k < 2) {
+          ex = CGAL::to_double(six * (c[k + 2].x - FT(2) * c[k + 1].x + c[k].x));
+          ey = CGAL::to_double(six * (c[k + 2].y - FT(2) * c[k + 1].y + c[k].y));
+        }
+        if (!std::isfinite(dx) || !std::isfinite(dy) || !std::isfinite(ex) || !std::isfinite(ey))
+          throw Invalid_input_error(internal::message(
+              method, ": piece ", j, ": the derivatives are not finite (first difference (", dx, ", ", dy,
+              "), second difference (", ex, ", ", ey, ") of control point ", k,
+              "); the input coordinates are too large for this number type"));
+      }
+    }
+  }
+
   /// The full knot vector of the NURBS form, size knot_vector_control_points().size() + 4.
   /// Open: t_0 x4, t_1, ..., t_{m-1}, t_m x4 with control_points(). Closed (unclamped periodic
   /// form): t_{-3}, ..., t_{m+3} (extended by the period) with the control points
   /// c_{-1}, c_0, ..., c_{m+1}; a standard B-spline evaluator on [t_0, t_m] gives the curve.
   std::vector<FT> knot_vector() const {
-    const Form f = form();
-    const long m = f.pieces();
+    const long m = static_cast<long>(number_of_pieces());
     std::vector<FT> u;
     u.reserve(static_cast<std::size_t>(m + 7));
-    for (long k = -3; k <= m + 3; ++k) u.push_back(f.knot(k)); // clamped or periodic extension
+    for (long k = -3; k <= m + 3; ++k) u.push_back(internal::spline::extended_knot(t_, closed_, k)); // clamped or periodic
     return u;
   }
 
   /// The control points matching knot_vector(): open, control_points(); closed, c_{-1} .. c_{m+1}.
   std::vector<Point_2> knot_vector_control_points() const { return wrapped(d_); }
   /// The weights matching knot_vector_control_points().
-  std::vector<FT> knot_vector_weights() const { return wrapped(w_); }
+  std::vector<FT> knot_vector_weights() const { return wrapped(weights()); }
 
 private:
   typedef internal::spline::Homogeneous_point<FT> Homogeneous;
-  typedef internal::spline::Bspline_form<FT> Form;
+  typedef internal::spline::Affine_point<FT> Affine;
   typedef std::array<Homogeneous, 3> Jet;
+  typedef std::array<Affine, 3> Affine_jet;
 
-  Form form() const { return Form(t_, hc_, closed_); }
+  // The representation (issue 23 §4): breakpoints, control points and, for a rational spline
+  // only, weights. Nothing derived is stored: the Bezier points of a piece (eq. 2) cost a few
+  // dozen operations from 4 control points and 5 intervals, less than reading a stored copy.
+  bool rational() const { return !w_.empty(); }
 
   void validate() {
-    internal::spline::check_spline_data<K>(t_, d_, w_, closed_);
-    rational_ = !std::all_of(w_.begin(), w_.end(), [&](const FT& w) { return w == w_.front(); });
-    if (!rational_) w_.assign(w_.size(), FT(1)); // equal weights: the same curve, polynomial form
-    hc_ = homogeneous_control();
+    bound_ = internal::spline::check_spline_data<K>(t_, d_, rational() ? &w_ : nullptr, closed_);
+    if (rational() && std::all_of(w_.begin(), w_.end(), [&](const FT& w) { return w == w_.front(); }))
+      w_.clear(); // equal weights: the same curve, polynomial form
+  }
+
+  // c_{i-1} .. c_{i+2} and h_{i-2} .. h_{i+2}, then eq. 2.
+  std::array<Affine, 4> affine_bezier_points(long i) const {
+    FT h[5];
+    internal::spline::intervals_around(t_, closed_, i, h);
+    const long m = static_cast<long>(number_of_pieces());
+    Affine c[4];
+    for (int k = 0; k < 4; ++k) {
+      const Point_2& p = d_[internal::spline::control_index(i - 1 + k, m, closed_)];
+      c[k] = Affine{p.x(), p.y()};
+    }
+    return internal::spline::bezier_points_of(c, h);
+  }
+
+  std::array<Homogeneous, 4> homogeneous_bezier_points(long i) const {
+    FT h[5];
+    internal::spline::intervals_around(t_, closed_, i, h);
+    const long m = static_cast<long>(number_of_pieces());
+    Homogeneous c[4];
+    for (int k = 0; k < 4; ++k) c[k] = homogeneous_control(internal::spline::control_index(i - 1 + k, m, closed_));
+    return internal::spline::bezier_points_of(c, h);
+  }
+
+  Homogeneous homogeneous_control(std::size_t k) const {
+    if (!rational()) return Homogeneous{d_[k].x(), d_[k].y(), FT(1)};
+    return Homogeneous{w_[k] * d_[k].x(), w_[k] * d_[k].y(), w_[k]};
   }
 
   std::vector<Homogeneous> homogeneous_control() const {
     std::vector<Homogeneous> h;
     h.reserve(d_.size());
-    for (std::size_t i = 0; i < d_.size(); ++i) h.push_back(Homogeneous{w_[i] * d_[i].x(), w_[i] * d_[i].y(), w_[i]});
+    for (std::size_t i = 0; i < d_.size(); ++i) h.push_back(homogeneous_control(i));
     return h;
   }
 
@@ -292,7 +388,7 @@ private:
         throw Invalid_input_error(internal::message("fair::Cubic_spline_2::", fn, ": control point ", i, " has weight ",
                                                     CGAL::to_double(c[i].w), " <= 0"));
     Cubic_spline_2 s = from_homogeneous_control(std::move(t), c, closed, rational);
-    internal::spline::check_reproduces<K>(s.form(), b, fn);
+    internal::spline::check_reproduces<K>([&](long i) { return s.homogeneous_bezier_points(i); }, b, fn);
     return s;
   }
 
@@ -309,20 +405,25 @@ private:
     return out;
   }
 
-  Piece to_piece(const std::array<Homogeneous, 4>& b) const {
+  Piece to_piece(long i) const {
     std::vector<Point_2> p;
+    p.reserve(4);
+    if (!rational()) {
+      for (const Affine& a : affine_bezier_points(i)) p.push_back(Point_2(a.x, a.y));
+      return Piece(std::move(p));
+    }
     std::vector<FT> w;
-    for (const Homogeneous& h : b) {
+    w.reserve(4);
+    for (const Homogeneous& h : homogeneous_bezier_points(i)) {
       p.push_back(Point_2(h.x / h.w, h.y / h.w));
       w.push_back(h.w);
     }
     return Piece(std::move(p), std::move(w));
   }
 
-  Polynomial_piece to_polynomial_piece(const std::array<Homogeneous, 4>& b) const {
-    std::vector<Point_2> p;
-    for (const Homogeneous& h : b) p.push_back(Point_2(h.x / h.w, h.y / h.w));
-    return Polynomial_piece(std::move(p));
+  Polynomial_piece to_polynomial_piece(const std::array<Affine, 4>& b) const {
+    return Polynomial_piece(Point_2(b[0].x, b[0].y), Point_2(b[1].x, b[1].y), Point_2(b[2].x, b[2].y),
+                            Point_2(b[3].x, b[3].y));
   }
 
   void check_piece_index(std::size_t i, const char* fn) const {
@@ -330,34 +431,53 @@ private:
   }
 
   void require_polynomial(const char* fn) const {
-    internal::require(!rational_, "fair::Cubic_spline_2::", fn, ": the spline is rational; use pieces()");
+    internal::require(!rational(), "fair::Cubic_spline_2::", fn, ": the spline is rational; use pieces()");
   }
 
   std::size_t locate(const FT& t, const char* fn) const {
-    internal::require(t_.front() <= t && t <= t_.back(), "fair::Cubic_spline_2::", fn, ": parameter ",
-                      CGAL::to_double(t), " outside [", CGAL::to_double(t_.front()), ", ", CGAL::to_double(t_.back()),
-                      "]");
-    const std::size_t i = static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin());
-    return std::min(i == 0 ? 0 : i - 1, number_of_pieces() - 1);
+    if (!(t_.front() <= t && t <= t_.back()))
+      internal::require(false, "fair::Cubic_spline_2::", fn, ": parameter ", CGAL::to_double(t), " outside [",
+                        CGAL::to_double(t_.front()), ", ", CGAL::to_double(t_.back()), "]");
+    // The last i < m with t_i <= t, by a binary search without data-dependent branches (the
+    // halving is a conditional move): with random t, std::upper_bound's mispredicted branches
+    // cost more than the piece's arithmetic (issue 23 §4 profile).
+    const FT* base = t_.data();
+    std::size_t n = number_of_pieces();
+    while (n > 1) {
+      const std::size_t half = n / 2;
+      base = (base[half] <= t) ? base + half : base;
+      n -= half;
+    }
+    return static_cast<std::size_t>(base - t_.data());
   }
 
   // Value and first two derivatives d/dt in homogeneous coordinates.
   Jet jet(const FT& t, const char* fn) const {
     const std::size_t i = locate(t, fn);
     const FT h = t_[i + 1] - t_[i];
-    Jet j = internal::spline::homogeneous_jet(form().bezier_points(static_cast<long>(i)), (t - t_[i]) / h);
+    Jet j = internal::spline::cubic_jet(homogeneous_bezier_points(static_cast<long>(i)), (t - t_[i]) / h);
     const FT h2 = h * h;
     j[1] = Homogeneous{j[1].x / h, j[1].y / h, j[1].w / h};
     j[2] = Homogeneous{j[2].x / h2, j[2].y / h2, j[2].w / h2};
     return j;
   }
 
+  // The same for a polynomial spline (weight 1: the derivatives are those of the affine points).
+  Affine_jet affine_jet(const FT& t, const char* fn) const {
+    const std::size_t i = locate(t, fn);
+    const FT h = t_[i + 1] - t_[i];
+    Affine_jet j = internal::spline::cubic_jet(affine_bezier_points(static_cast<long>(i)), (t - t_[i]) / h);
+    const FT h2 = h * h;
+    j[1] = Affine{j[1].x / h, j[1].y / h};
+    j[2] = Affine{j[2].x / h2, j[2].y / h2};
+    return j;
+  }
+
   std::vector<FT> t_;
   std::vector<Point_2> d_;
-  std::vector<FT> w_;
-  std::vector<Homogeneous> hc_; // (w d, w), kept in step with d_ and w_
+  std::vector<FT> w_; // empty for a polynomial spline
   bool closed_ = false;
-  bool rational_ = false;
+  double bound_ = 0;  // the largest |coordinate| of a control point (check_spline_data)
 };
 
 } // namespace fair

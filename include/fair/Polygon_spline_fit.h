@@ -17,6 +17,10 @@
 // to rounding). Complexity O(n): tridiagonal / cyclic tridiagonal (cubic), banded Cholesky of
 // half-bandwidth 3 plus a rank-4 Woodbury correction when closed (quintic).
 //
+// Closed cubics solve the periodic interpolation for the B-spline control points directly
+// (internal/spline/polygon_fit.h); open ones (not-a-knot ends) take them from
+// Cubic_interpolating_spline_2. max_distance is measured on the spline's own pieces.
+//
 // Corners (fit_cubic_spline_runs): one C2 run between consecutive corners, G0 there, so that
 // the CORNER constraints of an optimal curve survive in the spline; io::spline_runs_to_json
 // writes the runs as one NURBS with triple knots at the corners.
@@ -35,6 +39,7 @@
 #include <fair/Knot_spacing.h>
 #include <fair/internal/common/input_checks.h>
 #include <fair/internal/optimal/spline_fit.h>
+#include <fair/internal/spline/polygon_fit.h>
 
 #include <CGAL/Simple_cartesian.h>
 
@@ -63,26 +68,6 @@ struct Polygon_quintic_fit {
   double max_distance;
 };
 
-namespace internal {
-namespace optimal {
-
-template <class K>
-std::vector<Vec2> polygon_to_double(const std::vector<typename K::Point_2>& polygon, bool closed, const char* fn) {
-  common::check_interpolation_input(polygon, closed ? 3 : 2, closed, fn);
-  std::vector<Vec2> p;
-  p.reserve(polygon.size());
-  for (const typename K::Point_2& q : polygon) p.push_back(Vec2{{CGAL::to_double(q.x()), CGAL::to_double(q.y())}});
-  return p;
-}
-
-template <class K>
-typename K::Point_2 to_point(const Vec2& v) {
-  return typename K::Point_2(typename K::FT(v[0]), typename K::FT(v[1]));
-}
-
-} // namespace optimal
-} // namespace internal
-
 /// The C2 cubic interpolant of `polygon` (open: n >= 2 vertices, closed: n >= 3, without a
 /// repeated last vertex) on cumulative chord length: breakpoint i at vertex i (closed: one more
 /// breakpoint closing the polygon, m = n pieces; open m = n - 1). 2 vertices give the segment,
@@ -91,33 +76,42 @@ typename K::Point_2 to_point(const Vec2& v) {
 /// vertices that coincide (also in double: a zero chord).
 template <class K>
 Polygon_spline_fit<K> fit_cubic_spline(const std::vector<typename K::Point_2>& polygon, bool closed) {
-  using namespace internal::optimal;
-  typedef CGAL::Simple_cartesian<double> Kd;
+  using namespace internal::spline;
+  typedef typename K::FT FT;
   const char* fn = "fair::fit_cubic_spline";
   const std::vector<Vec2> p = polygon_to_double<K>(polygon, closed, fn);
-  std::vector<Kd::Point_2> q;  // a chord that vanishes in double: the spline's Invalid_input_error
-  q.reserve(p.size());
-  for (const Vec2& v : p) q.emplace_back(v[0], v[1]);
-  Cubic_interpolating_spline_options options;  // closed: periodic; open: not-a-knot ends
-  options.closed = closed;
-  options.end_condition = Spline_end_condition::NOT_A_KNOT;
-  options.knot_spacing = Knot_spacing::CHORDAL;
-  const Cubic_interpolating_spline_2<Kd> c(std::move(q), options);
-  std::vector<std::array<Vec2, 4>> b;
-  b.reserve(c.number_of_pieces());
-  for (const Bezier_2<Kd>& piece : c.pieces()) {
-    std::array<Vec2, 4> v;
-    for (std::size_t k = 0; k < 4; ++k) v[k] = Vec2{{piece.control_point(k).x(), piece.control_point(k).y()}};
-    b.push_back(v);
+  std::vector<double> t;
+  std::vector<Vec2> control;
+  // Closed: the periodic interpolant's control points directly (internal/spline/polygon_fit.h),
+  // unless a knot interval dwarfs its neighbours (then the Hermite form below).
+  if (closed) {
+    t = internal::optimal::chord_breakpoints(p, true, fn);
+    if (!periodic_interpolation_control(p, t, control)) t.clear();
   }
-  std::vector<typename K::FT> breakpoints;
-  breakpoints.reserve(c.knots().size());
-  for (double x : c.knots()) breakpoints.push_back(typename K::FT(x));
-  std::vector<typename K::Point_2> control;
-  control.reserve(c.spline().number_of_control_points());
-  for (const Kd::Point_2& d : c.spline().control_points()) control.push_back(to_point<K>(Vec2{{d.x(), d.y()}}));
-  return Polygon_spline_fit<K>{Cubic_spline_2<K>(std::move(breakpoints), std::move(control), closed),
-                               max_chord_distance(b)};
+  if (t.empty()) {
+    typedef CGAL::Simple_cartesian<double> Kd;
+    std::vector<Kd::Point_2> q;  // a chord that vanishes in double: the spline's Invalid_input_error
+    q.reserve(p.size());
+    for (const Vec2& v : p) q.emplace_back(v[0], v[1]);
+    Cubic_interpolating_spline_options options;  // closed: periodic; open: not-a-knot ends
+    options.closed = closed;
+    options.end_condition = Spline_end_condition::NOT_A_KNOT;
+    options.knot_spacing = Knot_spacing::CHORDAL;
+    const Cubic_interpolating_spline_2<Kd> c(std::move(q), options);
+    t = c.knots();
+    control.clear();
+    for (const Kd::Point_2& d : c.spline().control_points()) control.push_back(Vec2{{d.x(), d.y()}});
+  }
+  const double distance = internal::optimal::max_chord_distance(bezier_pieces(t, control, closed));
+  std::vector<FT> breakpoints;
+  breakpoints.reserve(t.size());
+  for (double x : t) breakpoints.push_back(FT(x));
+  std::vector<typename K::Point_2> points;
+  points.reserve(control.size());
+  for (const Vec2& v : control) points.push_back(to_point<K>(v));
+  Cubic_spline_2<K> spline(std::move(breakpoints), std::move(points), closed);
+  spline.check_finite_pieces(fn);
+  return Polygon_spline_fit<K>{std::move(spline), distance};
 }
 
 /// Splines through every vertex that keep the polygon's corners: one C2 cubic per run between
@@ -193,6 +187,8 @@ Polygon_spline_runs<K> fit_cubic_spline_runs(const std::vector<typename K::Point
 template <class K>
 Polygon_quintic_fit<K> fit_quintic_spline(const std::vector<typename K::Point_2>& polygon, bool closed) {
   using namespace internal::optimal;
+  using internal::spline::polygon_to_double;
+  using internal::spline::to_point;
   const char* fn = "fair::fit_quintic_spline";
   const std::vector<Vec2> p = polygon_to_double<K>(polygon, closed, fn);
   const std::vector<double> t = chord_breakpoints(p, closed, fn);

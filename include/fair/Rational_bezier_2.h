@@ -7,7 +7,8 @@
 // with control points P_i and weights w_i > 0. Unit (or all equal) weights give the polynomial
 // Bezier piece. Models the CurvePiece_2 concept of doc/contributing.md.
 //
-// Method: the homogeneous coordinates X, Y, W are kept as fair::Bernstein_polynomial<FT>;
+// Method: the piece stores its control points and weights only; the homogeneous coordinates
+// X, Y, W (fair::Bernstein_polynomial<FT> on request) are evaluated by de Casteljau on demand;
 //   c   = X / W,
 //   c'  = (X' W - X W') / W^2,
 //   c'' = (X'' - 2 W' c' - W'' c) / W        (differentiate X = W c twice).
@@ -89,34 +90,40 @@ public:
     return true;
   }
 
-  /// Homogeneous coordinates X, Y and W as Bernstein polynomials of degree n.
-  const Polynomial& homogeneous_x() const { return X_; }
-  const Polynomial& homogeneous_y() const { return Y_; }
-  const Polynomial& homogeneous_w() const { return W_; }
+  /// Homogeneous coordinates X, Y and W as Bernstein polynomials of degree n (built on call:
+  /// the piece stores only its control points and weights).
+  Polynomial homogeneous_x() const { return Polynomial(homogeneous(0)); }
+  Polynomial homogeneous_y() const { return Polynomial(homogeneous(1)); }
+  Polynomial homogeneous_w() const { return Polynomial(w_); }
 
   /// c(t) (exact in an exact kernel); t in [0,1].
   Point_2 point(const FT& t) const {
     check_parameter(t, "point");
-    const FT W = W_.evaluate(t);
-    return Point_2(X_.evaluate(t) / W, Y_.evaluate(t) / W);
+    FT v[3][3];
+    homogeneous_jet(t, 0, v);
+    return Point_2(v[0][0] / v[0][2], v[0][1] / v[0][2]);
   }
 
   /// c'(t) (exact in an exact kernel); t in [0,1].
   Vector_2 derivative(const FT& t) const {
     check_parameter(t, "derivative");
+    FT v[3][3];
+    homogeneous_jet(t, 1, v);
     FT cx, cy, dx, dy;
-    first_order(t, cx, cy, dx, dy);
+    first_order(v, cx, cy, dx, dy);
     return Vector_2(dx, dy);
   }
 
   /// c''(t) (exact in an exact kernel); t in [0,1].
   Vector_2 second_derivative(const FT& t) const {
     check_parameter(t, "second_derivative");
+    FT v[3][3];
+    homogeneous_jet(t, 2, v);
     FT cx, cy, dx, dy;
-    first_order(t, cx, cy, dx, dy);
-    const FT W = W_.evaluate(t), W1 = W1_.evaluate(t), W2 = W2_.evaluate(t);
-    const FT ex = (X2_.evaluate(t) - FT(2) * W1 * dx - W2 * cx) / W;
-    const FT ey = (Y2_.evaluate(t) - FT(2) * W1 * dy - W2 * cy) / W;
+    first_order(v, cx, cy, dx, dy);
+    const FT &W = v[0][2], &W1 = v[1][2], &W2 = v[2][2];
+    const FT ex = (v[2][0] - FT(2) * W1 * dx - W2 * cx) / W;
+    const FT ey = (v[2][1] - FT(2) * W1 * dy - W2 * cy) / W;
     return Vector_2(ex, ey);
   }
 
@@ -153,7 +160,8 @@ public:
   std::pair<Rational_bezier_2, Rational_bezier_2> split(const FT& s) const {
     internal::require(s > FT(0) && s < FT(1), "Rational_bezier_2::split: s = ", CGAL::to_double(s),
                       " is not in (0,1)");
-    const std::pair<Polynomial, Polynomial> x = X_.split(s), y = Y_.split(s), w = W_.split(s);
+    const std::pair<Polynomial, Polynomial> x = homogeneous_x().split(s), y = homogeneous_y().split(s),
+                                            w = homogeneous_w().split(s);
     return std::make_pair(from_homogeneous(x.first, y.first, w.first),
                           from_homogeneous(x.second, y.second, w.second));
   }
@@ -180,31 +188,94 @@ private:
                       " is not in [0,1]");
   }
 
-  void first_order(const FT& t, FT& cx, FT& cy, FT& dx, FT& dy) const {
-    const FT W = W_.evaluate(t), W1 = W1_.evaluate(t);
-    cx = X_.evaluate(t) / W;
-    cy = Y_.evaluate(t) / W;
-    dx = (X1_.evaluate(t) - W1 * cx) / W;
-    dy = (Y1_.evaluate(t) - W1 * cy) / W;
+  // The homogeneous coordinates (w_i x_i or w_i y_i) of coordinate k (0: x, 1: y).
+  std::vector<FT> homogeneous(int k) const {
+    std::vector<FT> h(cp_.size());
+    for (std::size_t i = 0; i < cp_.size(); ++i) h[i] = w_[i] * (k == 0 ? cp_[i].x() : cp_[i].y());
+    return h;
+  }
+
+  // c and c' from the homogeneous jet v (rows: X, X', X''; columns: x, y, w).
+  static void first_order(const FT (&v)[3][3], FT& cx, FT& cy, FT& dx, FT& dy) {
+    const FT &W = v[0][2], &W1 = v[1][2];
+    cx = v[0][0] / W;
+    cy = v[0][1] / W;
+    dx = (v[1][0] - W1 * cx) / W;
+    dy = (v[1][1] - W1 * cy) / W;
+  }
+
+  // de Casteljau of the m scalar Bernstein coefficients in b (destroyed) at t.
+  template <class T>
+  static T de_casteljau(T* b, std::size_t m, const T& t) {
+    const T s = T(1) - t;
+    for (std::size_t r = 1; r < m; ++r)
+      for (std::size_t i = 0; i + r < m; ++i) b[i] = s * b[i] + t * b[i + 1];
+    return b[0];
+  }
+
+  // v[d] = the d-th derivative (d <= order) of (X, Y, W) at t, each the de Casteljau value of
+  // the derivative's Bernstein coefficients n (b_{i+1} - b_i) (applied d times): the arithmetic
+  // of Bernstein_polynomial::derivative() and evaluate(), so the values are those of the
+  // polynomial forms, without storing them (issue 23 §4: a piece is its control points and
+  // weights; building nine polynomials per piece made pieces() cost microseconds a piece).
+  template <class T, class Coordinate>
+  void jet_of(const T& t, int order, T (&v)[3][3], Coordinate coordinate) const {
+    const std::size_t m = cp_.size();
+    T local[3][8];
+    std::vector<T> heap[3];
+    T* b[3];
+    for (int k = 0; k < 3; ++k) {
+      if (m <= 8) b[k] = local[k];
+      else {
+        heap[k].resize(m);
+        b[k] = heap[k].data();
+      }
+    }
+    for (int d = 0; d <= order; ++d) {
+      for (int k = 0; k < 3; ++k) {
+        for (std::size_t i = 0; i < m; ++i) b[k][i] = coordinate(i, k);
+        std::size_t len = m;
+        for (int e = 0; e < d; ++e) { // the e-th derivative's coefficients, as derivative() forms them
+          if (len == 1) {
+            b[k][0] = T(0);
+            break;
+          }
+          const T nn(static_cast<int>(len - 1));
+          for (std::size_t i = 0; i + 1 < len; ++i) b[k][i] = nn * (b[k][i + 1] - b[k][i]);
+          --len;
+        }
+        v[d][k] = de_casteljau(b[k], len, t);
+      }
+    }
+  }
+
+  void homogeneous_jet(const FT& t, int order, FT (&v)[3][3]) const {
+    jet_of(t, order, v, [&](std::size_t i, int k) -> FT {
+      return k == 2 ? w_[i] : w_[i] * (k == 0 ? cp_[i].x() : cp_[i].y());
+    });
   }
 
   void double_derivatives(double t, double& cx, double& cy, double& dx, double& dy, double& ex,
                           double& ey) const {
-    const double W = Wd_.evaluate(t), W1 = Wd1_.evaluate(t), W2 = Wd2_.evaluate(t);
-    cx = Xd_.evaluate(t) / W;
-    cy = Yd_.evaluate(t) / W;
-    dx = (Xd1_.evaluate(t) - W1 * cx) / W;
-    dy = (Yd1_.evaluate(t) - W1 * cy) / W;
-    ex = (Xd2_.evaluate(t) - 2.0 * W1 * dx - W2 * cx) / W;
-    ey = (Yd2_.evaluate(t) - 2.0 * W1 * dy - W2 * cy) / W;
+    double v[3][3];
+    jet_of(t, 2, v, [&](std::size_t i, int k) -> double {
+      const double wi = CGAL::to_double(w_[i]);
+      return k == 2 ? wi : wi * CGAL::to_double(k == 0 ? cp_[i].x() : cp_[i].y());
+    });
+    const double W = v[0][2], W1 = v[1][2], W2 = v[2][2];
+    cx = v[0][0] / W;
+    cy = v[0][1] / W;
+    dx = (v[1][0] - W1 * cx) / W;
+    dy = (v[1][1] - W1 * cy) / W;
+    ex = (v[2][0] - 2.0 * W1 * dx - W2 * cx) / W;
+    ey = (v[2][1] - 2.0 * W1 * dy - W2 * cy) / W;
   }
 
+  // One validation pass over the control points; nothing else is built.
   void init() {
     internal::require(!cp_.empty(), "Rational_bezier_2: needs at least one control point");
     internal::require(cp_.size() == w_.size(), "Rational_bezier_2: ", cp_.size(), " control points but ", w_.size(),
                       " weights");
-    std::vector<FT> x, y;
-    std::vector<double> xd, yd, wd;
     for (std::size_t i = 0; i < cp_.size(); ++i) {
       const double px = CGAL::to_double(cp_[i].x()), py = CGAL::to_double(cp_[i].y());
       const double wi = CGAL::to_double(w_[i]);
@@ -212,28 +283,11 @@ private:
                         ", ", py, ") is not finite");
       internal::require(std::isfinite(wi) && w_[i] > FT(0), "Rational_bezier_2: weight ", i, " = ", wi,
                         " must be finite and > 0");
-      x.push_back(w_[i] * cp_[i].x());
-      y.push_back(w_[i] * cp_[i].y());
-      xd.push_back(wi * px);
-      yd.push_back(wi * py);
-      wd.push_back(wi);
     }
-    X_ = Polynomial(x);
-    Y_ = Polynomial(y);
-    W_ = Polynomial(w_);
-    X1_ = X_.derivative(); Y1_ = Y_.derivative(); W1_ = W_.derivative();
-    X2_ = X1_.derivative(); Y2_ = Y1_.derivative(); W2_ = W1_.derivative();
-    Xd_ = Bernstein_polynomial<double>(xd);
-    Yd_ = Bernstein_polynomial<double>(yd);
-    Wd_ = Bernstein_polynomial<double>(wd);
-    Xd1_ = Xd_.derivative(); Yd1_ = Yd_.derivative(); Wd1_ = Wd_.derivative();
-    Xd2_ = Xd1_.derivative(); Yd2_ = Yd1_.derivative(); Wd2_ = Wd1_.derivative();
   }
 
   std::vector<Point_2> cp_;
   std::vector<FT> w_;
-  Polynomial X_, Y_, W_, X1_, Y1_, W1_, X2_, Y2_, W2_;
-  Bernstein_polynomial<double> Xd_, Yd_, Wd_, Xd1_, Yd1_, Wd1_, Xd2_, Yd2_, Wd2_;
 };
 
 } // namespace fair

@@ -194,6 +194,12 @@ inline bool solve_eq18_banded(const Problem& pb, Kappa_solver_state& st, Refinem
 /// forms the same Schur complement of row n-1, whose pivot stays dominant).
 /// Degenerate case: a singular matrix or a non-finite solution returns false and leaves `st`
 /// unchanged.
+/// Not linear_algebra::solve_tridiagonal (the library's generic Thomas solve): this is the same
+/// elimination, kept fused with the row assembly (each row is eliminated as it is built, and the
+/// dominance test of the row decides the fallback before anything is solved), with two
+/// right-hand sides and reciprocal pivots in a reused workspace, and bordered rather than
+/// Sherman-Morrison when closed. Routing it through the generic solver would change its rounding,
+/// and with it the kappa solver's pinned outcomes on real data, for no measured gain.
 inline bool solve_eq18(const Problem& pb, Kappa_solver_state& st, Refinement_workspace& ws) {
   const std::size_t n = pb.n;
   if (n == 0) return true;

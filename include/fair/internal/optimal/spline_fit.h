@@ -8,8 +8,9 @@
 // approximates arc length to O(h^3) per edge, which keeps the fits O(h^4) (cubic) and better
 // (quintic); uniform parameters would not on non-uniform polygons.
 //
-// Cubic (C2): fair::Cubic_interpolating_spline_2 with chordal knots, not-a-knot ends (open) or
-// periodic (closed), in Simple_cartesian<double> (fair::fit_cubic_spline).
+// Cubic (C2): the chordal interpolating cubic spline, not-a-knot ends (open, from
+// fair::Cubic_interpolating_spline_2) or periodic (closed, solved for its B-spline control points
+// in internal/spline/polygon_fit.h), in double (fair::fit_cubic_spline).
 //
 // Quintic (C4): piecewise quintic Hermite in (p_i, m_i, s_i) (value, first and second
 // derivative at the knots, so C2 by construction); the m_i, s_i minimise the sum over pieces of
@@ -23,7 +24,9 @@
 // matrix of the closing piece; Sherman-Morrison-Woodbury with 4 extra banded solves, O(n).
 //
 // Distance: for each piece, the largest distance of a point of the piece to the polygon edge
-// it replaces (the piece evaluated by Horner in the power basis), from 32 uniform samples refined by golden-section search around the largest
+// it replaces. Cubic pieces that project inside their edge: in closed form (the extrema of a
+// cubic, cubic_chord_distance_closed_form). Otherwise (the piece evaluated by Horner in the
+// power basis), from 32 uniform samples refined by golden-section search around the largest
 // (40 steps: the location to 1e-9 of the piece, the value to ~1e-16 relative); it misses a
 // maximum only if the distance has two bumps closer than 1/32 of the piece apart.
 
@@ -310,8 +313,53 @@ std::array<Vec2, N> power_coefficients(const std::array<Vec2, N>& b) {
   return a;
 }
 
+/// The largest distance of a cubic piece to its chord in closed form, when the projection of
+/// every point of the piece onto the chord's line falls inside the chord: the Bernstein
+/// coefficients q_k = e.(b_k - b_0) of the projection (e = b_3 - b_0) all in [0, |e|^2] (convex
+/// hull property). Then the distance is |f(u)| / |e| with f(u) = e x (c(u) - b_0), a cubic with
+/// Bernstein coefficients (0, f_1, f_2, 0), f_k = e x (b_k - b_0); |f| is largest where
+/// f'(u) = 3 [f_1 + 2 (f_2 - 2 f_1) u + 3 (f_1 - f_2) u^2] vanishes in (0, 1). Returns -1 when
+/// the projection may leave the chord or a value is not finite (the sampled search then).
+/// ~60 operations instead of ~70 evaluations of the sampled search (issue 23 §4: 73 % of
+/// fit_cubic_spline's instructions were that search).
+inline double cubic_chord_distance_closed_form(const std::array<Vec2, 4>& b) {
+  const double ex = b[3][0] - b[0][0], ey = b[3][1] - b[0][1], l2 = ex * ex + ey * ey;
+  double f[2], q[2];
+  for (int k = 0; k < 2; ++k) {
+    const double dx = b[k + 1][0] - b[0][0], dy = b[k + 1][1] - b[0][1];
+    q[k] = ex * dx + ey * dy;
+    f[k] = ex * dy - ey * dx;
+  }
+  if (!(l2 > 0) || !std::isfinite(l2) || !std::isfinite(f[0] * f[1]) || !(q[0] >= 0 && q[0] <= l2) ||
+      !(q[1] >= 0 && q[1] <= l2))
+    return -1;
+  // g(u) = f(u) / 3 = f1 u (1 - u)^2 + f2 u^2 (1 - u); roots of g'(u) = A u^2 + B u + C.
+  const double f1 = f[0], f2 = f[1];
+  auto g = [&](double u) { const double v = 1 - u; return u * v * (f1 * v + f2 * u); };
+  const double A = 3 * (f1 - f2), B = 2 * (f2 - 2 * f1), C = f1;
+  double best = 0;
+  auto consider = [&](double u) {
+    if (u > 0 && u < 1) best = std::max(best, std::fabs(g(u)));
+  };
+  if (A == 0) {
+    if (B != 0) consider(-C / B);
+  } else {
+    const double disc = B * B - 4 * A * C;
+    if (disc >= 0) {
+      const double r = std::sqrt(disc), qq = -0.5 * (B + (B >= 0 ? r : -r)); // no cancellation
+      consider(qq / A);
+      if (qq != 0) consider(C / qq);
+    }
+  }
+  return 3 * best / std::sqrt(l2);
+}
+
 template <std::size_t N>
 double piece_chord_distance(const std::array<Vec2, N>& b) {
+  if constexpr (N == 4) {
+    const double d = cubic_chord_distance_closed_form(b);
+    if (d >= 0) return d;
+  }
   const std::array<Vec2, N> a = power_coefficients(b);
   auto f = [&](double u) {
     Vec2 x = a[N - 1];

@@ -40,10 +40,20 @@ struct Homogeneous_point {
   FT x, y, w;
 };
 
+/// A point of a polynomial spline (its weight is 1 and is not stored).
+template <class FT>
+struct Affine_point {
+  FT x, y;
+};
+
 /// a p + b q.
 template <class FT>
 Homogeneous_point<FT> combine(const FT& a, const Homogeneous_point<FT>& p, const FT& b, const Homogeneous_point<FT>& q) {
   return Homogeneous_point<FT>{a * p.x + b * q.x, a * p.y + b * q.y, a * p.w + b * q.w};
+}
+template <class FT>
+Affine_point<FT> combine(const FT& a, const Affine_point<FT>& p, const FT& b, const Affine_point<FT>& q) {
+  return Affine_point<FT>{a * p.x + b * q.x, a * p.y + b * q.y};
 }
 
 /// (a p + b q) / s.
@@ -51,6 +61,84 @@ template <class FT>
 Homogeneous_point<FT> combine(const FT& a, const Homogeneous_point<FT>& p, const FT& b, const Homogeneous_point<FT>& q,
                               const FT& s) {
   return Homogeneous_point<FT>{(a * p.x + b * q.x) / s, (a * p.y + b * q.y) / s, (a * p.w + b * q.w) / s};
+}
+template <class FT>
+Affine_point<FT> combine(const FT& a, const Affine_point<FT>& p, const FT& b, const Affine_point<FT>& q, const FT& s) {
+  return Affine_point<FT>{(a * p.x + b * q.x) / s, (a * p.y + b * q.y) / s};
+}
+
+/// f (a - 2 b + c).
+template <class FT>
+Homogeneous_point<FT> scaled_second_difference(const FT& f, const Homogeneous_point<FT>& a,
+                                               const Homogeneous_point<FT>& b, const Homogeneous_point<FT>& c) {
+  return Homogeneous_point<FT>{f * (a.x - FT(2) * b.x + c.x), f * (a.y - FT(2) * b.y + c.y),
+                               f * (a.w - FT(2) * b.w + c.w)};
+}
+template <class FT>
+Affine_point<FT> scaled_second_difference(const FT& f, const Affine_point<FT>& a, const Affine_point<FT>& b,
+                                          const Affine_point<FT>& c) {
+  return Affine_point<FT>{f * (a.x - FT(2) * b.x + c.x), f * (a.y - FT(2) * b.y + c.y)};
+}
+
+inline long floor_div(long a, long b) {
+  long q = a / b;
+  if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
+  return q;
+}
+
+/// t_k for any k (the periodic or clamped extension of the breakpoints t_0..t_m).
+template <class FT>
+FT extended_knot(const std::vector<FT>& t, bool closed, long k) {
+  const long m = static_cast<long>(t.size()) - 1;
+  if (!closed) return t[static_cast<std::size_t>(k < 0 ? 0 : (k > m ? m : k))];
+  const long q = floor_div(k, m);
+  const FT period = t.back() - t.front();
+  return t[static_cast<std::size_t>(k - q * m)] + FT(q) * period;
+}
+
+/// h_i = t_{i+1} - t_i for any i. Open: t_{i+1} - t_i inside [0, m), else the clamped
+/// extension's t_k - t_k = 0. Closed: from the reduced index, so that h_{i+m} == h_i bit for bit
+/// and the last piece of a closed spline ends exactly where the first begins.
+template <class FT>
+FT knot_interval(const std::vector<FT>& t, bool closed, long i) {
+  const long m = static_cast<long>(t.size()) - 1;
+  if (closed) i -= floor_div(i, m) * m;
+  else if (i < 0 || i >= m) return t[i < 0 ? 0 : static_cast<std::size_t>(m)] - t[i < 0 ? 0 : static_cast<std::size_t>(m)];
+  return t[static_cast<std::size_t>(i + 1)] - t[static_cast<std::size_t>(i)];
+}
+
+/// The intervals h_{i-2} .. h_{i+2} around piece i: direct differences in the interior (most
+/// pieces), knot_interval near the ends.
+template <class FT>
+void intervals_around(const std::vector<FT>& t, bool closed, long i, FT (&h)[5]) {
+  const long m = static_cast<long>(t.size()) - 1;
+  if (i >= 2 && i + 3 <= m) {
+    const FT* u = t.data() + (i - 2);
+    for (int k = 0; k < 5; ++k) h[k] = u[k + 1] - u[k];
+  } else {
+    for (int k = 0; k < 5; ++k) h[k] = knot_interval(t, closed, i - 2 + k);
+  }
+}
+
+/// eq. 2: the four Bezier points of piece i from its control points c = (c_{i-1}, c_i, c_{i+1},
+/// c_{i+2}) and the intervals h = (h_{i-2}, ..., h_{i+2}) (the formulas of the header comment;
+/// b_0 uses b_2^{i-1} and b_3 uses b_1^{i+1}, the only points of the neighbours it needs).
+template <class FT, class P>
+std::array<P, 4> bezier_points_of(const P (&c)[4], const FT (&h)[5]) {
+  const FT &hm2 = h[0], &hm = h[1], &hi = h[2], &hp = h[3], &hp2 = h[4];
+  const P left2 = combine(hi, c[0], hm2 + hm, c[1], hm2 + hm + hi);               // b_2^{i-1}
+  const FT s = hm + hi + hp;
+  const P mid1 = combine(hi + hp, c[1], hm, c[2], s), mid2 = combine(hp, c[1], hm + hi, c[2], s);  // b_1^i, b_2^i
+  const P right1 = combine(hp + hp2, c[2], hi, c[3], hi + hp + hp2);              // b_1^{i+1}
+  return {combine(hi, left2, hm, mid1, hm + hi), mid1, mid2, combine(hp, mid2, hi, right1, hi + hp)};
+}
+
+/// The storage index of c_j: open d_{j+1} (-1 <= j <= m+1), closed d_{j mod m}.
+inline std::size_t control_index(long j, long m, bool closed) {
+  if (!closed) return static_cast<std::size_t>(j + 1);
+  if (j < 0) j += m;
+  else if (j >= m) j -= m;
+  return static_cast<std::size_t>(j);
 }
 
 /// The homogeneous control points and breakpoints of a spline, with the index extensions above.
@@ -69,21 +157,10 @@ public:
   long pieces() const { return static_cast<long>(t_.size()) - 1; }
 
   /// t_k for any k (periodic or clamped extension).
-  FT knot(long k) const {
-    const long m = pieces();
-    if (!closed_) return t_[static_cast<std::size_t>(k < 0 ? 0 : (k > m ? m : k))];
-    const long q = floor_div(k, m);
-    const FT period = t_.back() - t_.front();
-    return t_[static_cast<std::size_t>(k - q * m)] + FT(q) * period;
-  }
+  FT knot(long k) const { return extended_knot(t_, closed_, k); }
 
-  /// h_i = t_{i+1} - t_i. Closed: from the reduced index, so that h_{i+m} == h_i bit for bit
-  /// and the last piece of a closed spline ends exactly where the first begins.
-  FT interval(long i) const {
-    if (!closed_) return knot(i + 1) - knot(i);
-    const long m = pieces(), r = i - floor_div(i, m) * m;
-    return t_[static_cast<std::size_t>(r + 1)] - t_[static_cast<std::size_t>(r)];
-  }
+  /// h_i = t_{i+1} - t_i (knot_interval).
+  FT interval(long i) const { return knot_interval(t_, closed_, i); }
 
   /// c_i (open: -1 <= i <= m+1; closed: any i).
   const Point& control(long i) const {
@@ -95,28 +172,15 @@ public:
     return c_[static_cast<std::size_t>(i + 1)];
   }
 
-  /// b_1^i and b_2^i (eq. 2).
-  std::array<Point, 2> inner_bezier_points(long i) const {
-    const FT hm = interval(i - 1), h = interval(i), hp = interval(i + 1);
-    const FT s = hm + h + hp;
-    return {combine(h + hp, control(i), hm, control(i + 1), s), combine(hp, control(i), hm + h, control(i + 1), s)};
-  }
-
-  /// The four homogeneous Bezier points of piece i, 0 <= i < m.
+  /// The four homogeneous Bezier points of piece i, 0 <= i < m (eq. 2).
   std::array<Point, 4> bezier_points(long i) const {
-    const std::array<Point, 2> left = inner_bezier_points(i - 1), mid = inner_bezier_points(i),
-                               right = inner_bezier_points(i + 1);
-    const FT hm = interval(i - 1), h = interval(i), hp = interval(i + 1);
-    return {combine(h, left[1], hm, mid[0], hm + h), mid[0], mid[1], combine(hp, mid[1], h, right[0], h + hp)};
+    FT h[5];
+    intervals_around(t_, closed_, i, h);
+    const Point c[4] = {control(i - 1), control(i), control(i + 1), control(i + 2)};
+    return bezier_points_of(c, h);
   }
 
 private:
-  static long floor_div(long a, long b) {
-    long q = a / b;
-    if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
-    return q;
-  }
-
   const std::vector<FT>& t_;
   const std::vector<Point>& c_;
   bool closed_;
@@ -137,14 +201,11 @@ std::vector<Homogeneous_point<FT>> control_from_bezier(const std::vector<FT>& br
   typedef Homogeneous_point<FT> Point;
   const long m = static_cast<long>(breakpoints.size()) - 1;
   FAIR_ASSERT(static_cast<long>(b.size()) == m);
-  // The extended knots do not depend on the control points: a Bspline_form over dummies.
-  const std::vector<Point> dummy(static_cast<std::size_t>(closed ? m : m + 3), Point{FT(0), FT(0), FT(1)});
-  const Bspline_form<FT> form(breakpoints, dummy, closed);
   std::vector<Point> c;
-  c.reserve(dummy.size());
+  c.reserve(static_cast<std::size_t>(closed ? m : m + 3));
   if (!closed) c.push_back(b.front()[0]);
   for (long i = 0; i < m; ++i) {
-    const FT hm = form.interval(i - 1), h = form.interval(i);
+    const FT hm = knot_interval(breakpoints, closed, i - 1), h = knot_interval(breakpoints, closed, i);
     const bool has_left = closed || i > 0; // open: c_0 = b_1^0 (hm = 0 makes the right form exact)
     if (!has_left || !(h < hm)) {
       const std::array<Point, 4>& bi = b[static_cast<std::size_t>(i)];
@@ -198,21 +259,27 @@ std::vector<Homogeneous_point<FT>> insert_knot(const std::vector<FT>& breakpoint
   return out;
 }
 
-/// De Casteljau in homogeneous coordinates: the value and the first two derivatives (d/du) of
-/// the homogeneous cubic with Bezier points b at u.
-template <class FT>
-std::array<Homogeneous_point<FT>, 3> homogeneous_jet(const std::array<Homogeneous_point<FT>, 4>& b, const FT& u) {
-  typedef Homogeneous_point<FT> Point;
+/// De Casteljau of the cubic with Bezier points b at u: the value and the first two derivatives
+/// (d/du), in homogeneous or (polynomial spline) affine coordinates.
+template <class FT, class P>
+std::array<P, 3> cubic_jet(const std::array<P, 4>& b, const FT& u) {
   const FT v = FT(1) - u;
-  const Point a0 = combine(v, b[0], u, b[1]), a1 = combine(v, b[1], u, b[2]), a2 = combine(v, b[2], u, b[3]);
-  const Point p0 = combine(v, a0, u, a1), p1 = combine(v, a1, u, a2);
-  const Point value = combine(v, p0, u, p1);
+  const P a0 = combine(v, b[0], u, b[1]), a1 = combine(v, b[1], u, b[2]), a2 = combine(v, b[2], u, b[3]);
+  const P p0 = combine(v, a0, u, a1), p1 = combine(v, a1, u, a2);
+  const P value = combine(v, p0, u, p1);
   const FT three(3), six(6);
-  const Point d1 = combine(three, p1, -three, p0);
+  const P d1 = combine(three, p1, -three, p0);
   // second derivative: 6 (b0 - 2 b1 + b2) at level 1 of the de Casteljau triangle
-  const Point second{six * (a0.x - FT(2) * a1.x + a2.x), six * (a0.y - FT(2) * a1.y + a2.y),
-                     six * (a0.w - FT(2) * a1.w + a2.w)};
-  return {value, d1, second};
+  const P d2 = scaled_second_difference(six, a0, a1, a2);
+  return {value, d1, d2};
+}
+
+/// The value alone (three levels of de Casteljau).
+template <class FT, class P>
+P cubic_point(const std::array<P, 4>& b, const FT& u) {
+  const FT v = FT(1) - u;
+  const P a0 = combine(v, b[0], u, b[1]), a1 = combine(v, b[1], u, b[2]), a2 = combine(v, b[2], u, b[3]);
+  return combine(v, combine(v, a0, u, a1), u, combine(v, a1, u, a2));
 }
 
 } // namespace spline

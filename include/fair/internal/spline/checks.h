@@ -15,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -56,33 +57,49 @@ void check_breakpoints(const std::vector<FT>& t, bool closed, const char* fn) {
           " are too large (sums of intervals would overflow double)");
 }
 
-/// Breakpoints as above, m + 3 (open) or m (closed) finite control points, as many finite
-/// positive weights.
+/// Breakpoints as above, m + 3 (open) or m (closed) finite control points and, when `w` is not
+/// null (a rational spline), as many finite positive weights. One pass over the control points.
+/// Returns the largest max(|x|, |y|) max(1, w) of a control point (for check_finite_pieces).
 template <class K>
-void check_spline_data(const std::vector<typename K::FT>& t, const std::vector<typename K::Point_2>& d,
-                       const std::vector<typename K::FT>& w, bool closed) {
+double check_spline_data(const std::vector<typename K::FT>& t, const std::vector<typename K::Point_2>& d,
+                       const std::vector<typename K::FT>* w, bool closed) {
   check_breakpoints(t, closed, "Cubic_spline_2");
   const std::size_t m = t.size() - 1, expected = closed ? m : m + 3;
   require(d.size() == expected, "fair::Cubic_spline_2: ", m, " pieces ", closed ? "(closed)" : "(open)", " need ",
           expected, " control points, got ", d.size());
-  require(w.size() == d.size(), "fair::Cubic_spline_2: ", w.size(), " weights for ", d.size(), " control points");
+  require(w == nullptr || w->size() == d.size(), "fair::Cubic_spline_2: ", w ? w->size() : 0, " weights for ",
+          d.size(), " control points");
+  // (|x| or |y|) * max(1, w) * headroom finite; for w = 1 that is max(|x|, |y|) below DBL_MAX / headroom.
+  const double limit = std::numeric_limits<double>::max() / overflow_headroom;
+  double bound = 0;
   for (std::size_t i = 0; i < d.size(); ++i) {
-    const double x = CGAL::to_double(d[i].x()), y = CGAL::to_double(d[i].y()), wi = CGAL::to_double(w[i]);
-    require(std::isfinite(x) && std::isfinite(y), "fair::Cubic_spline_2: control point ", i, " = (", x, ", ", y,
-            ") is not finite");
-    require(std::isfinite(wi) && w[i] > typename K::FT(0), "fair::Cubic_spline_2: weight ", i, " = ", wi,
-            " is not finite and > 0");
-    require(std::isfinite(overflow_headroom * std::max(std::abs(x), std::abs(y)) * std::max(1.0, wi)),
-            "fair::Cubic_spline_2: control point ", i, " = (", x, ", ", y, ") with weight ", wi,
-            " is too large (combinations of control points would overflow double)");
+    const double x = CGAL::to_double(d[i].x()), y = CGAL::to_double(d[i].y());
+    const double wi = w ? CGAL::to_double((*w)[i]) : 1.0;
+    const double a = std::max(std::abs(x), std::abs(y)), scale = std::max(1.0, wi);
+    // false for a NaN or infinite coordinate or weight: the checks below say which
+    const bool small = std::abs(x) * scale <= limit && std::abs(y) * scale <= limit;
+    bound = std::max(bound, a * scale);
+    if (!small)
+      require(std::isfinite(x) && std::isfinite(y), "fair::Cubic_spline_2: control point ", i, " = (", x, ", ", y,
+              ") is not finite");
+    if (w)
+      require(std::isfinite(wi) && (*w)[i] > typename K::FT(0), "fair::Cubic_spline_2: weight ", i, " = ", wi,
+              " is not finite and > 0");
+    if (!small) {
+      require(std::isfinite(overflow_headroom * a * scale), "fair::Cubic_spline_2: control point ", i,
+              " = (", x, ", ", y, ") with weight ", wi,
+              " is too large (combinations of control points would overflow double)");
+    }
   }
+  return bound;
 }
 
-/// Throws Invalid_input_error unless the spline `form` reproduces the homogeneous Bezier points
-/// `b` (in Euclidean coordinates): exactly in an exact number type, else to
-/// c2_relative_tolerance of the extent of the pieces' control points.
-template <class K>
-void check_reproduces(const Bspline_form<typename K::FT>& form,
+/// Throws Invalid_input_error unless the spline whose homogeneous Bezier points of piece i are
+/// `bezier_points(i)` reproduces the homogeneous Bezier points `b` (in Euclidean coordinates):
+/// exactly in an exact number type, else to c2_relative_tolerance of the extent of the pieces'
+/// control points.
+template <class K, class Bezier_points>
+void check_reproduces(const Bezier_points& bezier_points,
                       const std::vector<std::array<Homogeneous_point<typename K::FT>, 4>>& b, const char* fn) {
   typedef typename K::FT FT;
   const bool exact = is_exact_number<FT>();
@@ -93,7 +110,7 @@ void check_reproduces(const Bspline_form<typename K::FT>& form,
         extent = std::max({extent, std::abs(CGAL::to_double(p.x / p.w)), std::abs(CGAL::to_double(p.y / p.w))});
   const double tolerance = c2_relative_tolerance * std::max(extent, 1e-300);
   for (std::size_t i = 0; i < b.size(); ++i) {
-    const std::array<Homogeneous_point<FT>, 4> r = form.bezier_points(static_cast<long>(i));
+    const std::array<Homogeneous_point<FT>, 4> r = bezier_points(static_cast<long>(i));
     for (std::size_t k = 0; k < 4; ++k) {
       const FT rx = r[k].x / r[k].w, ry = r[k].y / r[k].w, bx = b[i][k].x / b[i][k].w, by = b[i][k].y / b[i][k].w;
       const FT rw = r[k].w / b[i][k].w; // the homogeneous points must agree up to the weight too

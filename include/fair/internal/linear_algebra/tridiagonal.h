@@ -1,11 +1,21 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// O(n) solvers for the linear systems of the classic C2 cubic interpolating spline:
+// The library's one tridiagonal solver, plain and cyclic (issue 23 §3: one linear-algebra part),
+// O(n), used by the classic C2 cubic interpolating spline (Cubic_interpolating_spline_2), the
+// periodic polygon fit (fit_cubic_spline) and the exact kappa certificate's oracle tests:
 //  - solve_tridiagonal: the Thomas algorithm (Gaussian elimination without pivoting on a
 //    tridiagonal matrix);
 //  - solve_cyclic_tridiagonal: a tridiagonal matrix plus the two corner entries of a periodic
 //    problem, reduced to two tridiagonal solves by the Sherman-Morrison formula
 //    (A = B + u v^T  =>  x = y - (v.y / (1 + v.z)) z  with  B y = d, B z = u).
+//
+// Not folded here, because they are other algorithms: the fraction-free integer solve of the
+// kappa certificate (kappa/exact_integer.h: continuants and exact divisions, no field
+// arithmetic) and the banded solvers with pivoting or Cholesky (the quintic fit's rank-4
+// Woodbury correction sits on a banded Cholesky of half-bandwidth 3, not on a tridiagonal).
+// The kappa refinement's eq.-18 solve (kappa/refinement.h) is this Thomas elimination, fused
+// with the row assembly, a per-row dominance test that falls back to banded LU, and a bordered
+// (not Sherman-Morrison) closing row, in a reused workspace: see the note there.
 //
 // Both are generic in the number type NT: they only add, subtract, multiply and divide, so they
 // are exact with an exact field type (Gmpq, Lazy_exact_nt<Gmpq>).
@@ -19,13 +29,13 @@
 // Lazy exact numbers (EPECK): every unknown depends on all the previous ones, so without care
 // the lazy expression DAG is n levels deep and its exact evaluation recurses n levels deep (a
 // stack overflow beyond a few thousand rows). For long systems the solvers therefore force the
-// exact value every `classic_prune_stride` rows, which cuts the DAG (CGAL prunes a lazy node
+// exact value every `prune_stride` rows, which cuts the DAG (CGAL prunes a lazy node
 // once its exact value is known). The exact values themselves have bit lengths growing linearly
 // with n (the Thomas recurrence is a continued fraction), so an exact solve costs O(n^2) bit
 // operations: about 1 s for n = 2000 uniform knots on a 2020s laptop core.
 
-#ifndef FAIR_INTERNAL_CLASSIC_TRIDIAGONAL_H
-#define FAIR_INTERNAL_CLASSIC_TRIDIAGONAL_H
+#ifndef FAIR_INTERNAL_LINEAR_ALGEBRA_TRIDIAGONAL_H
+#define FAIR_INTERNAL_LINEAR_ALGEBRA_TRIDIAGONAL_H
 
 #include <fair/Errors.h>
 
@@ -37,18 +47,18 @@
 
 namespace fair {
 namespace internal {
-namespace classic {
+namespace linear_algebra {
 
 /// Rows between two forced exact evaluations in the solvers (for lazy number types only).
-constexpr std::size_t classic_prune_stride = 128;
+constexpr std::size_t prune_stride = 128;
 /// Systems shorter than this are never pruned (their lazy DAG is shallow enough).
-constexpr std::size_t classic_prune_minimum = 512;
+constexpr std::size_t prune_minimum = 512;
 
 /// Forces and caches the exact value of a lazy number (pruning its DAG); no-op for other types.
 template <class NT>
-void classic_prune(const NT&) {}
+void prune_lazy(const NT&) {}
 template <class ET>
-void classic_prune(const CGAL::Lazy_exact_nt<ET>& x) {
+void prune_lazy(const CGAL::Lazy_exact_nt<ET>& x) {
   CGAL::exact(x);
 }
 
@@ -75,9 +85,9 @@ std::vector<NT> solve_tridiagonal(const std::vector<NT>& a, const std::vector<NT
             " (the matrix is not diagonally dominant)");
     cp[i] = (i + 1 < n) ? c[i] / pivot : NT(0);
     dp[i] = (d[i] - a[i] * dp[i - 1]) / pivot;
-    if (n >= classic_prune_minimum && i % classic_prune_stride == 0) {
-      classic_prune(cp[i]);
-      classic_prune(dp[i]);
+    if (n >= prune_minimum && i % prune_stride == 0) {
+      prune_lazy(cp[i]);
+      prune_lazy(dp[i]);
     }
   }
   // Back substitution.
@@ -85,7 +95,7 @@ std::vector<NT> solve_tridiagonal(const std::vector<NT>& a, const std::vector<NT
   x[n - 1] = dp[n - 1];
   for (std::size_t i = n - 1; i-- > 0;) {
     x[i] = dp[i] - cp[i] * x[i + 1];
-    if (n >= classic_prune_minimum && i % classic_prune_stride == 0) classic_prune(x[i]);
+    if (n >= prune_minimum && i % prune_stride == 0) prune_lazy(x[i]);
   }
   return x;
 }
@@ -123,8 +133,8 @@ std::vector<NT> solve_cyclic_tridiagonal(const std::vector<NT>& a, const std::ve
   return x;
 }
 
-} // namespace classic
+} // namespace linear_algebra
 } // namespace internal
 } // namespace fair
 
-#endif // FAIR_INTERNAL_CLASSIC_TRIDIAGONAL_H
+#endif // FAIR_INTERNAL_LINEAR_ALGEBRA_TRIDIAGONAL_H
