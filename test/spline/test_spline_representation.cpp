@@ -214,8 +214,10 @@ TYPED_TEST(Spline_representation_floating, PeriodicFitIsThePeriodicInterpolant) 
       p.push_back(P(r * std::cos(a), r * std::sin(a)));
     }
     const fair::Polygon_spline_fit<K> fit = fair::fit_cubic_spline<K>(p, true);
-    const fair::Cubic_interpolating_spline_2<K> classic(p, fair::Spline_end_condition::PERIODIC,
-                                                        fair::Knot_spacing::CHORDAL);
+    fair::Cubic_interpolating_spline_options periodic;
+    periodic.closed = true;
+    periodic.knot_spacing = fair::Knot_spacing::CHORDAL;
+    const fair::Cubic_interpolating_spline_2<K> classic(p, periodic);
     ASSERT_EQ(fit.spline.number_of_control_points(), classic.spline().number_of_control_points());
     for (std::size_t i = 0; i < n; ++i) {
       EXPECT_TRUE(same<K>(fit.spline.control_points()[i], classic.spline().control_points()[i], 1e-12)) << trial;
