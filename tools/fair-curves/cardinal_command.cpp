@@ -85,15 +85,12 @@ Cardinal_result<K> compute_cardinal(const Cardinal_options& o) {
 // The curve JSON: the pieces plus the method's parameters, energies and input.
 template <class K>
 nlohmann::json cardinal_json(const Cardinal_result<K>& r, const Cardinal_options& o) {
-  nlohmann::json extra{{"method", "cardinal"},
-                       {"closed", r.closed},
-                       {"alpha", CGAL::to_double(r.alpha)},
+  nlohmann::json extra{{"alpha", CGAL::to_double(r.alpha)},
                        {"alpha_choice", r.optimal ? "optimal (Li eq. 18)" : "given"},
                        {"energy_approx", CGAL::to_double(r.energy_approx)},
                        {"energy_true", r.energy_parameter.value},
                        {"energy_true_error", r.energy_parameter.error_bound},
-                       {"energy_true_arc_length", r.energy_arc_length.value},
-                       {"input", fair::io::points_to_json(r.data.points, r.closed)}};
+                       {"energy_true_arc_length", r.energy_arc_length.value}};
   if (o.exact) {
     extra["alpha_exact"] = fair::io::number_text(r.alpha);
     extra["energy_approx_exact"] = fair::io::number_text(r.energy_approx);
@@ -102,7 +99,7 @@ nlohmann::json cardinal_json(const Cardinal_result<K>& r, const Cardinal_options
     extra["aux_start"] = fair::io::point_to_json(r.curve->aux_start(), "aux_start");
     extra["aux_end"] = fair::io::point_to_json(r.curve->aux_end(), "aux_end");
   }
-  return fair::io::curve_to_json(r.pieces, extra);
+  return fair::io::curve_to_json("cardinal", r.closed, r.data.points, r.pieces, extra);
 }
 
 // The text report (stdout unless the JSON goes there).

@@ -12,6 +12,7 @@
 #include <fair/Cubic_bspline_2.h>
 #include <fair/Cubic_interpolating_spline_2.h>
 #include <fair/Cubic_quasi_interpolant_2.h>
+#include <fair/Fairness_metrics.h>
 #include <fair/Four_point_subdivision_2.h>
 
 #include <algorithm>
@@ -49,22 +50,14 @@ std::vector<fair::io::Xy> as_xy(const std::vector<Point_2>& p) {
   return out;
 }
 
-// Sign changes of the sampled curvature (ignoring |kappa| < 1e-9) and its maximum magnitude.
+// The library's certified inflections (curvature sign changes, also at joins) and its curvature
+// range (profile samples and certified extrema), fair/Fairness_metrics.h.
 void curvature_figures(const std::vector<Piece>& pieces, fair_curves::Curve_case& c) {
-  const fair::Sampled_curve s = fair::sample_curve(pieces, c.samples_per_piece);
-  int changes = 0, last = 0;
-  double kmax = 0;
-  for (const fair::Curve_sample& q : s.samples) {
-    kmax = std::max(kmax, std::fabs(q.curvature));
-    const int sign = q.curvature > 1e-9 ? 1 : (q.curvature < -1e-9 ? -1 : 0);
-    if (sign != 0) {
-      if (last != 0 && sign != last) ++changes;
-      last = sign;
-    }
-  }
+  const fair::Fairness_report r = fair::fairness_report(pieces);
   c.measurements.emplace_back("pieces", std::to_string(pieces.size()));
-  c.measurements.emplace_back("curvature sign changes (sampled)", std::to_string(changes));
-  c.measurements.emplace_back("max |curvature| (sampled)", fair_curves::format_number(kmax));
+  c.measurements.emplace_back(std::string("inflections") + (r.certified ? " (certified)" : " (sampled)"),
+                              std::to_string(r.inflection_count));
+  c.measurements.emplace_back("max |curvature|", fair_curves::format_number(std::max(-r.min_curvature, r.max_curvature)));
 }
 
 // Largest distance from a data point to the curve point at its knot (approximating methods).

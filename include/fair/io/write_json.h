@@ -1,6 +1,10 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// Writing points and curves as JSON (nlohmann-json) and points as CSV. See doc/io.md.
+// Writing points, curves and the solvers' reports as JSON (nlohmann-json) and points as CSV.
+// See doc/io.md. The one curve JSON of every method (curve_to_json with the method, the input
+// points and the pieces): {"format": "fair-curve", "version": 1, "method", "closed", "points",
+// "pieces": [{"degree", "control_points", "weights"?}, ...]} plus the method's members
+// ("bspline" where the family has one, "status" and "report" for the solver families).
 //
 // A coordinate is written as the JSON number of its nearest double (shortest text that reads
 // back to the same double). In an exact kernel a coordinate that is not exactly a double is
@@ -14,6 +18,9 @@
 #include <fair/Cubic_spline_2.h>
 #include <fair/Curve_traits.h>
 #include <fair/Errors.h>
+#include <fair/Kappa_curve_report.h>
+#include <fair/Optimal_curve_report.h>
+#include <fair/io/enum_names.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/number_utils.h>
@@ -170,6 +177,86 @@ nlohmann::json curve_to_json(const PieceRange& pieces,
     out[it.key()] = it.value();
   }
   return out;
+}
+
+/// The one curve JSON of every method: curve_to_json(pieces, extra) preceded by "method",
+/// "closed" and the input "points" ([[x, y], ...]). `piece_extra`, when not empty, holds one JSON
+/// object per piece whose members are written beside the piece's own (the kappa-curve's "point"
+/// and "t"). Throws Precondition_error if `piece_extra` has another size, redefines a member of a
+/// piece, or `extra` redefines a member of the curve.
+template <class Point_2, class PieceRange>
+nlohmann::json curve_to_json(const std::string& method, bool closed, const std::vector<Point_2>& points,
+                             const PieceRange& pieces, const nlohmann::json& extra = nlohmann::json::object(),
+                             const std::vector<nlohmann::json>& piece_extra = {}) {
+  fair::internal::require(extra.is_object(), "fair::io::curve_to_json: extra must be a JSON object, got ",
+                          extra.type_name());
+  nlohmann::json head{{"method", method}, {"closed", closed}};
+  nlohmann::json pts = nlohmann::json::array();
+  for (std::size_t i = 0; i < points.size(); ++i)
+    pts.push_back(point_to_json(points[i], fair::internal::message("point ", i)));
+  head["points"] = std::move(pts);
+  for (auto it = extra.begin(); it != extra.end(); ++it) {
+    fair::internal::require(!head.contains(it.key()), "fair::io::curve_to_json: extra member \"", it.key(),
+                            "\" would overwrite a member of the curve");
+    head[it.key()] = it.value();
+  }
+  nlohmann::json out = curve_to_json(pieces, head);
+  if (!piece_extra.empty()) {
+    nlohmann::json& ps = out["pieces"];
+    fair::internal::require(piece_extra.size() == ps.size(), "fair::io::curve_to_json: ", piece_extra.size(),
+                            " piece extras for ", ps.size(), " pieces");
+    for (std::size_t i = 0; i < ps.size(); ++i)
+      for (auto it = piece_extra[i].begin(); it != piece_extra[i].end(); ++it) {
+        fair::internal::require(!ps[i].contains(it.key()), "fair::io::curve_to_json: piece extra member \"", it.key(),
+                                "\" would overwrite a member of piece ", i);
+        ps[i][it.key()] = it.value();
+      }
+  }
+  return out;
+}
+
+/// A kappa-curve's solve report: {"status": "interior" | "on_joins" | "unsolved", the counts,
+/// "residuals" (the dimensionless residuals of the report), "energy" (its terms and total), and
+/// the point lists (0-based input indices)}.
+inline nlohmann::json to_json(const Kappa_curve_report& r) {
+  nlohmann::json worst = nlohmann::json::array();
+  for (const Kappa_point_residual& p : r.worst_points) worst.push_back({{"point", p.point}, {"residual", p.residual}});
+  return nlohmann::json{{"status", spelling(r.status)},
+                        {"warm_started", r.warm_started},
+                        {"refinement_passes", r.refinement_passes},
+                        {"iterations", r.iterations},
+                        {"residuals",
+                         {{"max", r.residual},
+                          {"interpolation", r.interpolation_residual},
+                          {"max_curvature_eq7", r.curvature_residual},
+                          {"abs_curvature_continuity", r.g2_residual},
+                          {"weight_eq16", r.weight_residual}}},
+                        {"energy",
+                         {{"total", r.energy()},
+                          {"interpolation", r.energy_interpolation},
+                          {"curvature_eq12", r.energy_curvature},
+                          {"g2_eq11", r.energy_g2},
+                          {"weight_eq13", r.energy_weight}}},
+                        {"bounds_active", r.bounds_active},
+                        {"points_on_joins", r.points_on_joins},
+                        {"points_at_minima", r.points_at_minima},
+                        {"worst_points", std::move(worst)},
+                        {"points_beyond_density_limit", r.points_beyond_density_limit}};
+}
+
+/// An optimal curve's solve report: {"status": "converged" | "diverging" | "capped", "energy",
+/// "iterations", "gradient_norm", "levels": [{"vertices", "iterations", "energy",
+/// "gradient_norm", "status"}, ...]} (one level per polygon of the hierarchy, coarse to fine).
+inline nlohmann::json to_json(const Optimal_curve_report& r) {
+  nlohmann::json levels = nlohmann::json::array();
+  for (const Optimal_curve_level& l : r.levels)
+    levels.push_back({{"vertices", l.vertices}, {"iterations", l.iterations}, {"energy", l.energy},
+                      {"gradient_norm", l.gradient_norm}, {"status", spelling(l.status)}});
+  return nlohmann::json{{"status", spelling(r.status)},
+                        {"energy", r.energy},
+                        {"iterations", r.iterations},
+                        {"gradient_norm", r.gradient_norm},
+                        {"levels", std::move(levels)}};
 }
 
 /// The "bspline" member of the curve format: {"degree": 3, "closed": ..., "knots": [...],
