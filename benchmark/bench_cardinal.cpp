@@ -88,7 +88,7 @@ std::vector<double> parameters(double max) {
 
 fair::Cardinal_spline_2<Kd> fair_catmull_rom(const std::vector<std::array<double, 2>>& w) {
   const auto p = points_of<Kd>(w);
-  return fair::Cardinal_spline_2<Kd>::catmull_rom(p, p.back(), p.front());
+  return fair::Cardinal_spline_2<Kd>(p, 0.5, p.back(), p.front());  // alpha = 1/2, given auxiliary points
 }
 
 void BM_eval_fair_catmull_rom(benchmark::State& state) {

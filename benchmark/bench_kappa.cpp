@@ -8,6 +8,7 @@
 // with and without small noise: issue 9); exact certification (fair::certify).
 // Run: ./bench_kappa --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
+#include <fair/Kappa_certificate.h>
 #include <fair/Kappa_curve_2.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -142,7 +143,7 @@ void BM_kappa_warm_resolve_1000(benchmark::State& state) {
   for (auto _ : state) {
     curve.move_point(500, flip ? a : b);
     flip = !flip;
-    warm = warm && curve.report().warm_started && curve.report().converged;
+    warm = warm && curve.report().warm_started && (curve.report().status == fair::Kappa_curve_status::INTERIOR);
   }
   state.counters["warm_and_converged"] = warm ? 1 : 0;
 }

@@ -5,6 +5,7 @@
 // exact arithmetic. Exits non-zero if a published value or a certificate does not hold.
 
 #include <fair/Cardinal_spline_2.h>
+#include <fair/Kappa_certificate.h>
 #include <fair/Kappa_curve_2.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -20,9 +21,12 @@ int main() {
   const double px[] = {35, 16, 15, 25, 40, 65, 50, 60, 80}, py[] = {47, 40, 15, 36, 15, 25, 40, 42, 37};
   std::vector<Point_2> data;
   for (int i = 0; i < 9; ++i) data.emplace_back(px[i], py[i]);
-  const fair::Cardinal_parameters<K> optimum = fair::optimal_cardinal_parameters(data);
-  std::cout << "Cardinal alpha* = " << optimum.alpha.exact() << " ~ " << CGAL::to_double(optimum.alpha) << '\n';
-  if (optimum.alpha != K::FT(9192) / K::FT(12241)) return 1;
+  const fair::Cardinal_spline_2<K> cardinal(data);  // alpha* of eq. 18 and the optimal end points
+  const fair::Cardinal_spline_report<K>& optimum = cardinal.report();
+  std::cout << "Cardinal alpha* = " << optimum.alpha.exact() << " ~ " << CGAL::to_double(optimum.alpha) << '\n'
+            << optimum << '\n';
+  if (cardinal.status() != fair::Cardinal_spline_status::OPTIMAL || optimum.alpha != K::FT(9192) / K::FT(12241))
+    return 1;
 
   // The published open polynomial κ-curve through four points, certified exactly.
   const std::vector<Point_2> q = {{-1, 0}, {0, 1}, {1, 0}, {2, 1}};

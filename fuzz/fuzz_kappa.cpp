@@ -85,7 +85,7 @@ extern "C" int FAIR_FUZZ_ENTRY(kappa)(const std::uint8_t* data, std::size_t size
   opt.weights = static_cast<fair::Kappa_weights>((head >> 1) % 3);
   const bool odd_options = head & 8;  // decoded weights, tension and clamp instead of the defaults
   const bool move = head & 16;
-  opt.throw_on_non_convergence = head & 32;
+  opt.throw_on_failure = head & 32;
   std::vector<Point_2> points = in.kernel_points<Point_2>();
   if (opt.weights == fair::Kappa_weights::FIXED || odd_options) {
     // One weight per point (sometimes a wrong count): mostly in [1/4, 4], sometimes any number.

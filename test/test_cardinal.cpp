@@ -4,6 +4,7 @@
 // "Curvature variation minimizing Cardinal spline curves" (eqs. 1-20, Tables 1-2).
 
 #include <fair/Cardinal_spline_2.h>
+#include <fair/Fairness_metrics.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -17,6 +18,8 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace {
@@ -44,6 +47,12 @@ double d(const typename K::FT& x) {
   return CGAL::to_double(x);
 }
 
+fair::Cardinal_spline_options closed_options() {
+  fair::Cardinal_spline_options o;
+  o.closed = true;
+  return o;
+}
+
 template <class K>
 class Cardinal_typed : public ::testing::Test {};
 TYPED_TEST_SUITE(Cardinal_typed, All_kernels);
@@ -66,12 +75,12 @@ TYPED_TEST(Cardinal_typed, PaperTable1) {
   // Table 1: 1.9964e5 for the optimum, 2.4081e5 for Catmull-Rom. The paper keeps the optimal
   // auxiliary points p_{-1}*, p_9* for its Catmull-Rom curve (with the Catmull-Rom curve's own optimal
   // auxiliary points, eqs. 19-20 at alpha = 1/2, the figure would be 2.27385e5).
-  const fair::Cardinal_spline_2<K> best = fair::Cardinal_spline_2<K>::optimal(p);
+  const fair::Cardinal_spline_2<K> best = fair::Cardinal_spline_2<K>(p);
   EXPECT_NEAR(d<K>(best.approximate_energy()) / 1.9964e5, 1.0, 5e-5);
   EXPECT_NEAR(d<K>(o.energy) / 1.9964e5, 1.0, 5e-5);
-  const auto cr = fair::Cardinal_spline_2<K>::catmull_rom(p, o.aux_start, o.aux_end);
+  const auto cr = fair::Cardinal_spline_2<K>(p, typename fair::Cardinal_spline_2<K>::FT(0.5), o.aux_start, o.aux_end);
   EXPECT_NEAR(d<K>(cr.approximate_energy()) / 2.4081e5, 1.0, 5e-5);
-  const fair::Cardinal_spline_2<K> cr_own(p, FT(1) / FT(2), false);
+  const fair::Cardinal_spline_2<K> cr_own(p, FT(1) / FT(2));
   if (is_exact<K>()) {
     EXPECT_TRUE(cr_own.approximate_energy() == FT(227385));
   } else {
@@ -98,9 +107,9 @@ TYPED_TEST(Cardinal_typed, PaperTable2HalfCircle) {
   EXPECT_NEAR(d<K>(o.aux_end.x()), -std::sqrt(0.5), 1e-14);
   EXPECT_NEAR(d<K>(o.aux_end.y()), -std::sqrt(0.5), 1e-14);
   // Energy ~ 0 (the paper's 1.8087e-7 comes from its 4-digit inputs); Catmull-Rom 7.2364.
-  const auto best = fair::Cardinal_spline_2<K>::optimal(p);
+  const auto best = fair::Cardinal_spline_2<K>(p);
   EXPECT_LT(std::fabs(d<K>(best.approximate_energy())), 1e-12);
-  const auto cr = fair::Cardinal_spline_2<K>::catmull_rom(p, o.aux_start, o.aux_end);
+  const auto cr = fair::Cardinal_spline_2<K>(p, typename fair::Cardinal_spline_2<K>::FT(0.5), o.aux_start, o.aux_end);
   EXPECT_NEAR(d<K>(cr.approximate_energy()), 7.2364, 5e-5);
 }
 
@@ -109,7 +118,7 @@ TYPED_TEST(Cardinal_typed, InterpolatesAndIsC1AndMatchesBezierPieces) {
   typedef TypeParam K;
   typedef typename K::FT FT;
   const auto p = data_set_1<K>();
-  const auto c = fair::Cardinal_spline_2<K>::optimal(p);
+  const auto c = fair::Cardinal_spline_2<K>(p);
   ASSERT_EQ(c.number_of_pieces(), p.size() - 1);
   const auto pieces = c.pieces();
   const FT ts[] = {FT(0), FT(1) / FT(3), FT(1) / FT(2), FT(7) / FT(8), FT(1)};
@@ -158,7 +167,8 @@ TYPED_TEST(Cardinal_typed, InterpolatesAndIsC1AndMatchesBezierPieces) {
   }
   EXPECT_THROW(c.point(FT(9)), fair::Precondition_error);
   EXPECT_THROW(c.point(c.number_of_pieces(), FT(0)), fair::Precondition_error);
-  EXPECT_EQ(c.data_points().size(), p.size());
+  EXPECT_EQ(c.points().size(), p.size());
+  EXPECT_TRUE(c.points() == p);  // the input, without the auxiliary points
 }
 
 TYPED_TEST(Cardinal_typed, ClosedSquareIsExactCircleLike) {
@@ -171,7 +181,7 @@ TYPED_TEST(Cardinal_typed, ClosedSquareIsExactCircleLike) {
   const auto o = fair::optimal_cardinal_parameters(sq, true);
   EXPECT_TRUE(o.alpha == FT(1));
   EXPECT_TRUE(o.energy == FT(0));
-  const auto c = fair::Cardinal_spline_2<K>::optimal(sq, true);
+  const auto c = fair::Cardinal_spline_2<K>(sq, closed_options());
   EXPECT_TRUE(c.is_closed());
   EXPECT_EQ(c.number_of_pieces(), 4u);
   EXPECT_TRUE(c.point(3, FT(1)) == sq[0]);
@@ -180,7 +190,7 @@ TYPED_TEST(Cardinal_typed, ClosedSquareIsExactCircleLike) {
   EXPECT_THROW(c.aux_start(), fair::Precondition_error);
   // The closed optimum is the minimiser of the closed energy: a parabola in alpha.
   const FT a = o.alpha;
-  const fair::Cardinal_spline_2<K> lo(sq, a - FT(1) / FT(64), true), hi(sq, a + FT(1) / FT(64), true);
+  const fair::Cardinal_spline_2<K> lo(sq, a - FT(1) / FT(64), closed_options()), hi(sq, a + FT(1) / FT(64), closed_options());
   EXPECT_TRUE(lo.approximate_energy() > c.approximate_energy());
   EXPECT_TRUE(hi.approximate_energy() > c.approximate_energy());
 }
@@ -238,7 +248,7 @@ TYPED_TEST(Cardinal_typed, BadInputIsRejected) {
   EXPECT_THROW(fair::Cardinal_spline_2<K>(std::vector<P>{P(0, 0)}, FT(1) / FT(2), P(0, 0), P(0, 0)),
                fair::Invalid_input_error);
   EXPECT_THROW(fair::Cardinal_spline_2<K>(three, FT(0), P(0, 0), P(0, 0)), fair::Precondition_error);
-  EXPECT_THROW(fair::Cardinal_spline_2<K>(three, FT(-1), true), fair::Precondition_error);
+  EXPECT_THROW(fair::Cardinal_spline_2<K>(three, FT(-1), closed_options()), fair::Precondition_error);
   EXPECT_THROW(fair::cardinal_auxiliary_points(three, FT(0)), fair::Precondition_error);
   // Two points with explicit auxiliary points: one segment.
   const fair::Cardinal_spline_2<K> two(std::vector<P>{P(0, 0), P(1, 0)}, FT(1) / FT(2), P(-1, 1), P(2, 1));
@@ -272,7 +282,7 @@ TYPED_TEST(Cardinal_typed, RandomOptimumIsTheMinimum) {
     for (const FT& da : {FT(-1) / FT(16), FT(1) / FT(1024), FT(1) / FT(8)}) {
       const FT a = o.alpha + da;
       EXPECT_TRUE(fair::Cardinal_spline_2<K>(p, a, o.aux_start, o.aux_end).approximate_energy() + tol >= E);
-      EXPECT_TRUE(fair::Cardinal_spline_2<K>(p, a, false).approximate_energy() + tol >= E);
+      EXPECT_TRUE(fair::Cardinal_spline_2<K>(p, a).approximate_energy() + tol >= E);
     }
     const typename K::Vector_2 v(FT(1) / FT(4), FT(-3) / FT(8));
     EXPECT_TRUE(fair::Cardinal_spline_2<K>(p, o.alpha, o.aux_start + v, o.aux_end).approximate_energy() + tol >= E);
@@ -333,7 +343,7 @@ TEST(Cardinal, NonFiniteInput) {
                fair::Invalid_input_error);
   EXPECT_THROW(fair::Cardinal_spline_2<SC_double>(std::vector<P>{P(0, 0), P(1, 0)}, 0.5, P(inf, 0), P(0, 0)),
                fair::Invalid_input_error);
-  EXPECT_THROW(fair::Cardinal_spline_2<SC_double>(std::vector<P>{P(0, 0), P(1, 0), P(2, 1)}, nan, true),
+  EXPECT_THROW(fair::Cardinal_spline_2<SC_double>(std::vector<P>{P(0, 0), P(1, 0), P(2, 1)}, nan, closed_options()),
                fair::Precondition_error);
 }
 
@@ -344,10 +354,11 @@ TEST(Cardinal, TrueCurvatureVariation) {
   for (int set = 0; set < 2; ++set) {
     const auto p = set == 0 ? data_set_1<SC_double>() : half_circle<SC_double>();
     const auto o = fair::optimal_cardinal_parameters(p);
-    const auto best = fair::Cardinal_spline_2<SC_double>::optimal(p);
-    const auto cr = fair::Cardinal_spline_2<SC_double>::catmull_rom(p, o.aux_start, o.aux_end);
+    const auto best = fair::Cardinal_spline_2<SC_double>(p);
+    const auto cr = fair::Cardinal_spline_2<SC_double>(p, typename fair::Cardinal_spline_2<SC_double>::FT(0.5), o.aux_start, o.aux_end);
     for (auto m : {fair::Energy_measure::PARAMETER, fair::Energy_measure::ARC_LENGTH}) {
-      const fair::Quadrature_estimate eb = best.curvature_variation_energy(m), ec = cr.curvature_variation_energy(m);
+      const fair::Quadrature_estimate eb = fair::curvature_variation_energy(best.pieces(), m),
+                                      ec = fair::curvature_variation_energy(cr.pieces(), m);
       EXPECT_LE(eb.error_bound, 1e-9 * eb.value + 1e-13);
       EXPECT_LT(eb.value, ec.value) << set;
     }
@@ -368,6 +379,112 @@ TEST(Cardinal, TrueCurvatureVariation) {
   }
   ref *= (2.0 / m) / 3;
   EXPECT_NEAR(e.value, ref, 1e-9 * ref);
+}
+
+// ------------------------------------------------------------------------ the family contract
+// The constructor is the optimum of optimal_cardinal_parameters (exactly in an exact kernel),
+// with status OPTIMAL; options.alpha gives GIVEN_ALPHA with the auxiliary points optimal for it.
+TYPED_TEST(Cardinal_typed, ReportIsTheOptimumOrTheGivenAlpha) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  const auto p = data_set_1<K>();
+  const fair::Cardinal_parameters<K> o = fair::optimal_cardinal_parameters(p);
+  const fair::Cardinal_spline_2<K> c(p);
+  EXPECT_EQ(c.status(), fair::Cardinal_spline_status::OPTIMAL);
+  EXPECT_EQ(c.report().status, c.status());
+  EXPECT_FALSE(c.is_closed());
+  EXPECT_FALSE(c.options().alpha.has_value());
+  EXPECT_TRUE(same<K>(c.report().alpha, o.alpha));
+  EXPECT_TRUE(same<K>(c.report().aux_start, o.aux_start));
+  EXPECT_TRUE(same<K>(c.report().aux_end, o.aux_end));
+  EXPECT_TRUE(same<K>(c.report().energy, o.energy, 1e-9));
+  EXPECT_TRUE(c.aux_start() == c.report().aux_start);
+  EXPECT_EQ(c.number_of_pieces(), c.pieces().size());
+  EXPECT_TRUE(c.piece(3).control_points() == c.pieces()[3].control_points());
+  EXPECT_THROW(c.piece(c.number_of_pieces()), fair::Precondition_error);
+  // options.alpha = 1/2: the Catmull-Rom spline with its own optimal auxiliary points (eqs. 16-17),
+  // eq. 10 = 227385 (Table 1's note), the same curve as the expert constructor with FT(1/2).
+  fair::Cardinal_spline_options half;
+  half.alpha = 0.5;
+  const fair::Cardinal_spline_2<K> cr(p, half), cr_ft(p, FT(1) / FT(2));
+  EXPECT_EQ(cr.status(), fair::Cardinal_spline_status::GIVEN_ALPHA);
+  EXPECT_TRUE(cr.report() == cr_ft.report());
+  EXPECT_TRUE(cr.alpha() == FT(1) / FT(2));
+  const std::pair<typename K::Point_2, typename K::Point_2> aux = fair::cardinal_auxiliary_points(p, FT(1) / FT(2));
+  EXPECT_TRUE(cr.report().aux_start == aux.first);
+  EXPECT_TRUE(cr.report().aux_end == aux.second);
+  EXPECT_TRUE(same<K>(cr.report().energy, FT(227385), 1e-12));
+  // Closed: the auxiliary members are the first and last point.
+  const fair::Cardinal_spline_2<K> closed(p, closed_options());
+  EXPECT_TRUE(closed.is_closed());
+  EXPECT_EQ(closed.number_of_pieces(), p.size());
+  EXPECT_TRUE(closed.report().aux_start == p.front());
+  EXPECT_TRUE(closed.report().aux_end == p.back());
+  // alpha given twice, auxiliary points for a closed curve, alpha <= 0 in the options.
+  EXPECT_THROW(fair::Cardinal_spline_2<K>(p, FT(1) / FT(2), half), fair::Precondition_error);
+  EXPECT_THROW(fair::Cardinal_spline_2<K>(p, FT(1) / FT(2), p[1], p[2], closed_options()), fair::Precondition_error);
+  fair::Cardinal_spline_options bad;
+  bad.alpha = -0.25;
+  EXPECT_THROW(fair::Cardinal_spline_2<K>(p, bad), fair::Precondition_error);
+}
+
+// Eq. 18 without a positive optimum (D = 0; alpha* = 0; alpha* < 0; closed alternating data):
+// the curve is Catmull-Rom (alpha = 1/2, the auxiliary points optimal for it), status NO_OPTIMUM,
+// no throw; with throw_on_failure a Solve_error carrying that same report.
+TYPED_TEST(Cardinal_typed, NoOptimumFallsBackToCatmullRomOrThrows) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  const std::vector<std::pair<std::vector<P>, bool>> cases = {
+      {{P(0, 0), P(1, 0), P(0, 1), P(1, -1)}, false},   // D = 0
+      {{P(0, 0), P(1, 0), P(2, 0), P(-1, 1)}, false},   // alpha* = 0
+      {{P(-10, 0), P(1, 0), P(0, 0), P(5, 0)}, false},  // alpha* = -1/7
+      {{P(0, 0), P(1, 0), P(0, 0), P(1, 0)}, true}};    // closed, alternating: every d_i = 0
+  for (const auto& c : cases) {
+    const std::vector<P>& p = c.first;
+    fair::Cardinal_spline_options o;
+    o.closed = c.second;
+    const fair::Cardinal_spline_2<K> curve(p, o);
+    EXPECT_EQ(curve.status(), fair::Cardinal_spline_status::NO_OPTIMUM) << curve.report();
+    EXPECT_TRUE(curve.alpha() == FT(1) / FT(2));
+    const fair::Cardinal_spline_2<K> catmull_rom(p, FT(1) / FT(2), o);
+    EXPECT_TRUE(curve.report().aux_start == catmull_rom.report().aux_start);
+    EXPECT_TRUE(curve.report().aux_end == catmull_rom.report().aux_end);
+    EXPECT_TRUE(curve.report().energy == catmull_rom.report().energy);
+    ASSERT_EQ(curve.number_of_pieces(), catmull_rom.number_of_pieces());
+    for (std::size_t i = 0; i < curve.number_of_pieces(); ++i)
+      EXPECT_TRUE(curve.pieces()[i].control_points() == catmull_rom.pieces()[i].control_points()) << i;
+    o.throw_on_failure = true;
+    try {
+      const fair::Cardinal_spline_2<K> thrown(p, o);
+      ADD_FAILURE() << "NO_OPTIMUM with throw_on_failure did not throw";
+    } catch (const fair::Solve_error& e) {
+      ASSERT_NE(e.report<fair::Cardinal_spline_report<K>>(), nullptr);
+      EXPECT_TRUE(*e.report<fair::Cardinal_spline_report<K>>() == curve.report()) << e.what();
+      EXPECT_NE(std::string(e.what()).find("no positive optimum"), std::string::npos) << e.what();
+    }
+  }
+  // A given alpha never fails, even with throw_on_failure.
+  fair::Cardinal_spline_options given;
+  given.alpha = 0.75;
+  given.throw_on_failure = true;
+  EXPECT_EQ(fair::Cardinal_spline_2<K>(cases[0].first, given).status(), fair::Cardinal_spline_status::GIVEN_ALPHA);
+}
+
+TEST(Cardinal, ReportSpellingsAndPrinting) {
+  EXPECT_STREQ(fair::to_string(fair::Cardinal_spline_status::OPTIMAL), "optimal");
+  EXPECT_STREQ(fair::to_string(fair::Cardinal_spline_status::GIVEN_ALPHA), "given_alpha");
+  EXPECT_STREQ(fair::to_string(fair::Cardinal_spline_status::NO_OPTIMUM), "no_optimum");
+  const fair::Cardinal_spline_report<SC_double> empty;  // every member initialised
+  EXPECT_EQ(empty.status, fair::Cardinal_spline_status::NO_OPTIMUM);
+  EXPECT_EQ(empty.alpha, 0.5);
+  EXPECT_EQ(empty.energy, 0.0);
+  EXPECT_TRUE(empty.aux_start == SC_double::Point_2(0, 0));
+  std::ostringstream out;
+  const fair::Cardinal_spline_2<SC_double> square(
+      std::vector<SC_double::Point_2>{{1, 0}, {0, 1}, {-1, 0}, {0, -1}}, closed_options());
+  out << square.report();
+  EXPECT_EQ(out.str(), "Cardinal_spline_report{optimal, alpha 1, aux_start (1, 0), aux_end (0, -1), energy 0}");
 }
 
 } // namespace

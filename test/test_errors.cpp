@@ -34,6 +34,32 @@ TEST(Errors, HierarchyIsCatchableAsFairError) {
   EXPECT_DOUBLE_EQ(n.residual(), 1e-3);
 }
 
+// Solve_error carries the report of any family (std::any inside): the type it was given comes
+// back by pointer, equal to the original; any other type gives nullptr.
+TEST(Errors, SolveErrorCarriesItsReport) {
+  struct Report_a {
+    int status = 0;
+    double energy = 0;
+  };
+  struct Report_b {
+    int iterations = 0;
+  };
+  const Report_a a{2, 0.25};
+  const fair::Solve_error e("solve failed", a);
+  EXPECT_STREQ(e.what(), "solve failed");
+  ASSERT_NE(e.report<Report_a>(), nullptr);
+  EXPECT_EQ(e.report<Report_a>()->status, 2);
+  EXPECT_EQ(e.report<Report_a>()->energy, 0.25);
+  EXPECT_EQ(e.report<Report_b>(), nullptr);
+  EXPECT_EQ(e.report<int>(), nullptr);
+  // A copy (what a catch by value makes) carries its own equal report.
+  const fair::Solve_error copy = e;
+  ASSERT_NE(copy.report<Report_a>(), nullptr);
+  EXPECT_NE(copy.report<Report_a>(), e.report<Report_a>());
+  EXPECT_EQ(copy.report<Report_a>()->energy, 0.25);
+  EXPECT_THROW(throw fair::Solve_error("x", a), fair::Error);
+}
+
 TEST(Errors, AssertThrowsInternalErrorNamingExpressionFileAndLine) {
   EXPECT_NO_THROW(FAIR_ASSERT(1 + 1 == 2));
   const int line = __LINE__ + 2;

@@ -4,7 +4,9 @@
 // polynomial kappa-curve, the defining properties on seeded random data, circle reproduction
 // and its documented failure, warm starts, and bad or hard input.
 
+#include <fair/Kappa_certificate.h>
 #include <fair/Kappa_curve_2.h>
+#include <fair/Optimal_curve_report.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -44,7 +46,7 @@ TYPED_TEST(Kappa_typed, PublishedPolynomialKappaCurve) {
   const std::vector<typename K::Point_2> q = {pt<K>(-1, 0), pt<K>(0, 1), pt<K>(1, 0), pt<K>(2, 1)};
   const fair::Kappa_curve_2<K> curve(q);
   ASSERT_EQ(curve.number_of_pieces(), 2u);
-  EXPECT_TRUE(curve.report().converged) << curve.report();
+  EXPECT_EQ(curve.report().status, fair::Kappa_curve_status::INTERIOR) << curve.report();
   EXPECT_LE(curve.report().residual, 1e-12);
   const double expected[2][3][2] = {{{-1, 0}, {-0.08187, 1.71183}, {0.5, 0.5}},
                                     {{0.5, 0.5}, {1.08187, -0.711831}, {2, 1}}};
@@ -143,7 +145,7 @@ TEST(Kappa, PropertiesOnRandomClosedCurves) {
       // Interpolation and G1 hold to rounding in every case (the solver restores them).
       EXPECT_LE(k.interpolation, 1e-12) << trial << c.report();
       EXPECT_LE(k.g1, 1e-9) << trial << c.report();
-      if (c.report().converged) {
+      if ((c.report().status == fair::Kappa_curve_status::INTERIOR)) {
         EXPECT_LE(k.kappa, 1e-9) << trial << c.report();
         if (mode != fair::Kappa_weights::AUTOMATIC) {
           // w >= 1: Q_i is the certified maximum of |kappa| of its piece (Sec. 3.2).
@@ -162,7 +164,7 @@ TEST(Kappa, PropertiesOnRandomClosedCurves) {
 TEST(Kappa, CornerDataConverges) {
   // Points at corners (the intended use): with unit, fixed and automatic weights, open and
   // closed, the solver reaches 1e-12 on (nearly) all inputs and the defining properties hold.
-  // The few failures are reported (status != INTERIOR, converged == false), never silent.
+  // The few failures are reported (status != INTERIOR), never silent.
   std::mt19937 g(7);
   int converged = 0, total = 0;
   for (int trial = 0; trial < 30; ++trial) {
@@ -177,7 +179,7 @@ TEST(Kappa, CornerDataConverges) {
       const Check k = check_curve(c);
       EXPECT_LE(k.interpolation, 1e-12);
       EXPECT_LE(k.g1, 1e-9);
-      if (!c.report().converged) {
+      if (c.report().status != fair::Kappa_curve_status::INTERIOR) {
         EXPECT_TRUE(c.report().residual > o.tolerance || c.report().bounds_active > 0 ||
                     !c.report().points_at_minima.empty())
             << c.report();
@@ -216,7 +218,7 @@ TEST(Kappa, CircleReproduction) {
     o.closed = true;
     o.weights = fair::Kappa_weights::AUTOMATIC;
     const fair::Kappa_curve_2<Kd> c(p, o);
-    ASSERT_TRUE(c.report().converged) << trial << " " << c.report();
+    ASSERT_EQ(c.report().status, fair::Kappa_curve_status::INTERIOR) << trial << " " << c.report();
     double dev = 0;
     for (const auto& pc : c.pieces())
       for (int k = 0; k <= 8; ++k) {
@@ -236,7 +238,7 @@ TEST(Kappa, CircleReproductionThreePointsEquilateral) {
   o.closed = true;
   o.weights = fair::Kappa_weights::AUTOMATIC;
   const fair::Kappa_curve_2<Kd> c(p, o);
-  ASSERT_TRUE(c.report().converged) << c.report();
+  ASSERT_EQ(c.report().status, fair::Kappa_curve_status::INTERIOR) << c.report();
   for (const auto& pc : c.pieces()) {
     EXPECT_NEAR(CGAL::to_double(pc.weight()), 0.5, 1e-12);
     for (int k = 0; k <= 8; ++k) {
@@ -273,15 +275,15 @@ TEST(Kappa, WarmStartAfterMovingOnePoint) {
   fair::Kappa_curve_options o;
   o.closed = true;
   fair::Kappa_curve_2<Kd> c(p, o);
-  ASSERT_TRUE(c.report().converged) << c.report();
+  ASSERT_EQ(c.report().status, fair::Kappa_curve_status::INTERIOR) << c.report();
   const std::size_t cold_iterations = c.report().iterations + c.report().refinement_passes;
   p[7] = Pd(p[7].x() * 1.02, p[7].y() * 1.02);
   c.move_point(7, p[7]);
-  EXPECT_TRUE(c.report().converged) << c.report();
+  EXPECT_EQ(c.report().status, fair::Kappa_curve_status::INTERIOR) << c.report();
   EXPECT_TRUE(c.report().warm_started);
   EXPECT_LT(c.report().iterations + c.report().refinement_passes, cold_iterations);
   const fair::Kappa_curve_2<Kd> cold(p, o);
-  ASSERT_TRUE(cold.report().converged);
+  ASSERT_EQ(cold.report().status, fair::Kappa_curve_status::INTERIOR);
   for (std::size_t j = 0; j < c.number_of_pieces(); ++j) {
     EXPECT_NEAR(c.t(j), cold.t(j), 1e-8);
     EXPECT_NEAR(c.piece(j).control_point(1).x(), cold.piece(j).control_point(1).x(), 1e-8);
@@ -300,16 +302,16 @@ TEST(Kappa, WarmStartIsLocalAndAgreesWithColdSolve) {
     fair::Kappa_curve_options o;
     o.closed = closed;
     fair::Kappa_curve_2<Kd> c(p, o);
-    ASSERT_TRUE(c.report().converged) << c.report();
+    ASSERT_EQ(c.report().status, fair::Kappa_curve_status::INTERIOR) << c.report();
     for (const std::size_t i : {std::size_t(0), std::size_t(150), p.size() - 1}) {
       p[i] = Pd(p[i].x() * 1.01 + 1e-3, p[i].y() * 0.99);
       c.move_point(i, p[i]);
-      ASSERT_TRUE(c.report().converged) << "closed " << closed << " i " << i << " " << c.report();
+      ASSERT_EQ(c.report().status, fair::Kappa_curve_status::INTERIOR) << "closed " << closed << " i " << i << " " << c.report();
       EXPECT_TRUE(c.report().warm_started);
       EXPECT_EQ(c.report().refinement_passes, 0u);
       EXPECT_LE(c.report().iterations, 12u) << "closed " << closed << " i " << i;
       const fair::Kappa_curve_2<Kd> cold(p, o);
-      ASSERT_TRUE(cold.report().converged);
+      ASSERT_EQ(cold.report().status, fair::Kappa_curve_status::INTERIOR);
       ASSERT_EQ(c.number_of_pieces(), cold.number_of_pieces());
       double dev = 0;
       for (std::size_t j = 0; j < c.number_of_pieces(); ++j) {
@@ -384,12 +386,12 @@ TEST(Kappa, HugeAndTinyCoordinatesScale) {
   fair::Kappa_curve_options o;
   o.closed = true;
   const fair::Kappa_curve_2<Kd> ref(base, o);
-  ASSERT_TRUE(ref.report().converged);
+  ASSERT_EQ(ref.report().status, fair::Kappa_curve_status::INTERIOR);
   for (double s : {1e150, 1e-150}) {
     std::vector<Pd> p;
     for (const Pd& q : base) p.push_back(Pd(q.x() * s, q.y() * s));
     const fair::Kappa_curve_2<Kd> c(p, o);
-    EXPECT_TRUE(c.report().converged) << s << c.report();
+    EXPECT_EQ(c.report().status, fair::Kappa_curve_status::INTERIOR) << s << c.report();
     for (std::size_t j = 0; j < c.number_of_pieces(); ++j)
       for (int k = 0; k < 3; ++k) {
         EXPECT_NEAR(c.piece(j).control_point(k).x() / s, ref.piece(j).control_point(k).x(), 1e-10) << s;
@@ -501,7 +503,7 @@ TEST(Kappa, NonConvergenceIsReportedOrThrown) {
   const fair::Kappa_curve_2<Kd> c(p, o);
   const fair::Kappa_curve_report& r = c.report();
   EXPECT_EQ(r.status, fair::Kappa_curve_status::UNSOLVED);
-  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.status, fair::Kappa_curve_status::INTERIOR);
   EXPECT_GT(r.residual, o.tolerance);
   // How far and where: the worst points, worst first, the first one carrying the residual.
   ASSERT_EQ(r.worst_points.size(), fair::Kappa_curve_report::worst_points_listed) << r;
@@ -519,8 +521,18 @@ TEST(Kappa, NonConvergenceIsReportedOrThrown) {
   EXPECT_TRUE(r.points_beyond_density_limit.empty()) << r;
   EXPECT_LE(check_curve(c).interpolation, 1e-12);  // still a valid interpolating G1 curve
   EXPECT_FALSE(fair::certify(c).proves_outcome());
-  o.throw_on_non_convergence = true;
-  EXPECT_THROW(fair::Kappa_curve_2<Kd>(p, o), fair::Non_convergence_error);
+  // With throw_on_failure the same solve throws Solve_error carrying the same report.
+  o.throw_on_failure = true;
+  EXPECT_THROW(fair::Kappa_curve_2<Kd>(p, o), fair::Solve_error);
+  try {
+    fair::Kappa_curve_2<Kd> thrown(p, o);
+    FAIL() << "an UNSOLVED solve with throw_on_failure did not throw";
+  } catch (const fair::Solve_error& e) {
+    ASSERT_NE(e.report<fair::Kappa_curve_report>(), nullptr);
+    EXPECT_EQ(*e.report<fair::Kappa_curve_report>(), r) << *e.report<fair::Kappa_curve_report>() << " vs " << r;
+    EXPECT_EQ(e.report<fair::Optimal_curve_report>(), nullptr);
+    EXPECT_NE(std::string(e.what()).find("unsolved after 0 iterations"), std::string::npos) << e.what();
+  }
 }
 
 // The three outcomes and their spellings (the JSON of fair-curves kappa uses them).
@@ -534,16 +546,16 @@ TEST(Kappa, OutcomeSpellings) {
 }
 
 // A random spiky star (every point a corner, the benchmark's data) ends INTERIOR: nothing on a join or at a minimum, no
-// worst points, the deprecated alias converged set, the certificate proving valid().
+// worst points, status() the report's, the certificate proving valid().
 TEST(Kappa, RandomStarIsInterior) {
   std::mt19937 g(7);
   fair::Kappa_curve_options o;
   o.closed = true;
-  o.throw_on_non_convergence = true;
+  o.throw_on_failure = true;
   const fair::Kappa_curve_2<Kd> c(spiky_star(g, 16, 0.1), o);
   const fair::Kappa_curve_report& r = c.report();
   EXPECT_EQ(r.status, fair::Kappa_curve_status::INTERIOR) << r;
-  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(c.status(), fair::Kappa_curve_status::INTERIOR);
   EXPECT_LE(r.residual, o.tolerance);
   EXPECT_TRUE(r.points_on_joins.empty());
   EXPECT_TRUE(r.points_at_minima.empty());
@@ -562,14 +574,16 @@ TEST(Kappa, BoundaryRootNamesThePoint) {
   const std::vector<Pd> p = {Pd(0.8420396853122557, 0.73342007152880162), Pd(0.46358155033629755, 0.8249558033892006),
                              Pd(0.4147174195865368, 0.82380946371988828), Pd(0.27611375678874384, 0.64727747335147212)};
   fair::Kappa_curve_options o;
-  o.throw_on_non_convergence = true;  // ON_JOINS is an outcome, not a failure: no throw
+  o.throw_on_failure = true;  // ON_JOINS is an outcome, not a failure: no throw
   const fair::Kappa_curve_2<Kd> c(p, o);
   const fair::Kappa_curve_report& r = c.report();
   EXPECT_EQ(r.status, fair::Kappa_curve_status::ON_JOINS) << r;
-  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.status, fair::Kappa_curve_status::INTERIOR);
   EXPECT_GE(r.bounds_active, 1u);
   ASSERT_EQ(r.points_on_joins, std::vector<std::size_t>{1}) << r;
-  EXPECT_EQ(r.boundary_points, r.points_on_joins);  // the deprecated alias
+  std::ostringstream text;  // the report names the point on a join
+  text << r;
+  EXPECT_NE(text.str().find("(points on a join: 1)"), std::string::npos) << text.str();
   EXPECT_TRUE(r.points_at_minima.empty());
   EXPECT_TRUE(r.worst_points.empty());
   EXPECT_GT(c.t(0), 1 - 1e-4);
@@ -587,7 +601,7 @@ TEST(Kappa, BoundaryRootNamesThePoint) {
 // Automatic weights w_i < 1 can put a point at a curvature MINIMUM of its piece (paper Sec.
 // 3.2): 6 random points in the unit square (std::mt19937 seed 307), closed. Every equation holds
 // (residual <= 1e-12, no point on a join), yet point 5 is a minimum: the outcome is UNSOLVED, the
-// point listed, the exact certificate agreeing, and throw_on_non_convergence throws.
+// point listed, the exact certificate agreeing, and throw_on_failure throws Solve_error with the report.
 TEST(Kappa, PointAtACurvatureMinimumIsUnsolved) {
   const std::vector<Pd> p = {Pd(0.19889350873851647, 0.63531557873837441), Pd(0.41116133888305417, 0.29134000893768197),
                              Pd(0.19565686281376002, 0.78263404471619846), Pd(0.88627965362420014, 0.82247598969570035),
@@ -598,7 +612,7 @@ TEST(Kappa, PointAtACurvatureMinimumIsUnsolved) {
   const fair::Kappa_curve_2<Kd> c(p, o);
   const fair::Kappa_curve_report& r = c.report();
   EXPECT_EQ(r.status, fair::Kappa_curve_status::UNSOLVED) << r;
-  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.status, fair::Kappa_curve_status::INTERIOR);
   EXPECT_LE(r.residual, o.tolerance) << r;
   EXPECT_TRUE(r.points_on_joins.empty()) << r;
   ASSERT_EQ(r.points_at_minima, std::vector<std::size_t>{5}) << r;
@@ -608,8 +622,15 @@ TEST(Kappa, PointAtACurvatureMinimumIsUnsolved) {
   ASSERT_TRUE(cert.pieces[5].has_extremum_at_t) << cert;
   EXPECT_EQ(cert.pieces[5].kind_at_t, fair::Curvature_extremum_kind::MINIMUM) << cert;
   EXPECT_FALSE(cert.proves_outcome());
-  o.throw_on_non_convergence = true;
-  EXPECT_THROW(fair::Kappa_curve_2<Kd>(p, o), fair::Non_convergence_error);
+  o.throw_on_failure = true;
+  try {
+    fair::Kappa_curve_2<Kd> thrown(p, o);
+    FAIL() << "an UNSOLVED solve with throw_on_failure did not throw";
+  } catch (const fair::Solve_error& e) {
+    ASSERT_NE(e.report<fair::Kappa_curve_report>(), nullptr);
+    EXPECT_EQ(*e.report<fair::Kappa_curve_report>(), r);
+    EXPECT_NE(std::string(e.what()).find("curvature minimum"), std::string::npos) << e.what();
+  }
 }
 
 // Unit weights never put a point at a minimum (w = 1: eq. 7's root is a maximum, Appendix A): no
@@ -640,7 +661,7 @@ TEST(Kappa, HundredThousandPointsStress) {
   o.closed = true;
   const fair::Kappa_curve_2<Kd> c(p, o);
   ASSERT_EQ(c.number_of_pieces(), 100000u);
-  EXPECT_TRUE(c.report().converged) << c.report();
+  EXPECT_EQ(c.report().status, fair::Kappa_curve_status::INTERIOR) << c.report();
   const Check k = check_curve(c);
   EXPECT_LE(k.interpolation, 1e-12) << c.report();
   EXPECT_LE(k.g1, 1e-9);

@@ -410,7 +410,7 @@ TEST(KappaNewton, ColdSolveUsesTheFastPath) {
   const Problem pb = star(1000, 3, Kappa_weights::UNIT);
   Kappa_solver_state st;
   const Kappa_curve_report res = solve(pb, st, Solve_settings{});
-  EXPECT_TRUE(res.converged);
+  EXPECT_EQ(res.status, fair::Kappa_curve_status::INTERIOR);
   EXPECT_LE(res.refinement_passes, 2u);
   EXPECT_LE(res.iterations, 6u);
   EXPECT_LE(res.residual, 1e-12);
@@ -431,7 +431,7 @@ TEST(KappaNewton, IterationCapHoldsForTheWholeSolve) {
     Kappa_solver_state cold;
     EXPECT_LE(solve(pb, cold, tight).iterations, 3u);
     Kappa_solver_state st;
-    if (!solve(pb, st, Solve_settings{}).converged) continue;
+    if (solve(pb, st, Solve_settings{}).status != fair::Kappa_curve_status::INTERIOR) continue;
     const std::size_t m = static_cast<std::size_t>(trial) % pb.n;  // a large move of one point
     pb.qx[m] *= 1.0 + 0.3 * (U(g) - 0.5);
     pb.qy[m] += 0.2 * (U(g) - 0.5);
@@ -441,7 +441,7 @@ TEST(KappaNewton, IterationCapHoldsForTheWholeSolve) {
     warm.max_iterations = 25;
     const Kappa_curve_report r = solve(pb, st, warm);
     EXPECT_LE(r.iterations, 25u);
-    warm_converged += r.converged ? 1 : 0;
+    warm_converged += (r.status == fair::Kappa_curve_status::INTERIOR) ? 1 : 0;
   }
   EXPECT_GE(warm_converged, 25);
 }
@@ -450,7 +450,7 @@ TEST(KappaNewton, IterationCapHoldsForTheWholeSolve) {
 TEST(KappaNewton, RangeSolveTouchesOnlyItsBlocks) {
   Problem pb = star(60, 5, Kappa_weights::UNIT);
   Kappa_solver_state st;
-  ASSERT_TRUE(solve(pb, st, Solve_settings{}).converged);
+  ASSERT_EQ(solve(pb, st, Solve_settings{}).status, fair::Kappa_curve_status::INTERIOR);
   pb.qx[30] *= 1.01;
   Block_range range;
   range.all = false;
@@ -687,13 +687,13 @@ TEST(KappaSolver, WarmStartPolicy) {
   Problem pb = star(60, 5, Kappa_weights::UNIT);
   Kappa_solver_state st;
   const Kappa_curve_report cold = solve_with_warm_start(pb, nullptr, 0, Solve_settings{}, st);
-  ASSERT_TRUE(cold.converged);
+  ASSERT_EQ(cold.status, fair::Kappa_curve_status::INTERIOR);
   EXPECT_FALSE(cold.warm_started);
   const Kappa_solver_state previous = st;
   pb.qx[30] *= 1.01;
   Kappa_solver_state moved;
   const Kappa_curve_report warm = solve_with_warm_start(pb, &previous, 30, Solve_settings{}, moved);
-  EXPECT_TRUE(warm.converged);
+  EXPECT_EQ(warm.status, fair::Kappa_curve_status::INTERIOR);
   EXPECT_TRUE(warm.warm_started);
   EXPECT_EQ(warm.refinement_passes, 0u);
   Kappa_solver_state other_size;

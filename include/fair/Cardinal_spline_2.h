@@ -3,7 +3,9 @@
 // Cardinal spline curves and the parameter / auxiliary points that minimise their curvature
 // variation, after J. Li, "Curvature variation minimizing Cardinal spline curves"
 // ([Li] in doc/references.md; eq. numbers refer to it).
-// The user manual is doc/cardinal_splines.md.
+// The user manual is doc/cardinal_splines.md. The class Cardinal_spline_2 is how users meet it
+// (options: Cardinal_spline_options.h, report: Cardinal_spline_report.h); the free functions
+// optimal_cardinal_parameters and cardinal_auxiliary_points are its engine.
 //
 // Conventions. The segment on the four consecutive points (q0, q1, q2, q3) is (eqs. 1-2)
 //     r(t) = b0(t) q0 + b1(t) q1 + b2(t) q2 + b3(t) q3,   t in [0,1],
@@ -25,8 +27,9 @@
 #define FAIR_CARDINAL_SPLINE_2_H
 
 #include <fair/Bezier_2.h>
+#include <fair/Cardinal_spline_options.h>
+#include <fair/Cardinal_spline_report.h>
 #include <fair/Errors.h>
-#include <fair/Fairness_metrics.h>
 #include <fair/internal/cardinal/optimum.h>
 #include <fair/internal/classic/common.h>
 #include <fair/internal/common/input_checks.h>
@@ -36,6 +39,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -84,7 +88,8 @@ std::pair<Point_2, Point_2> cardinal_auxiliary_points(const std::vector<Point_2>
 ///    is no unique optimum;
 ///  - alpha* <= 0: the infimum of eq. 10 over alpha > 0 is not attained (alpha* = 0) or the minimiser
 ///    reverses every tangent (alpha* < 0, cusps at the data points); happens only for data that fold
-///    back on themselves. Callers wanting a fallback catch the error and use Catmull-Rom (alpha = 1/2).
+///    back on themselves. Cardinal_spline_2 falls back to Catmull-Rom (alpha = 1/2) there, with the
+///    status NO_OPTIMUM.
 /// Also throws Invalid_input_error for too few points, non-finite or duplicate consecutive points.
 template <class Point_2>
 Cardinal_parameters<typename CGAL::Kernel_traits<Point_2>::Kernel>
@@ -94,17 +99,17 @@ optimal_cardinal_parameters(const std::vector<Point_2>& p, bool closed = false) 
   const char* method = closed ? "optimal_cardinal_parameters (closed)" : "optimal_cardinal_parameters (open)";
   internal::common::check_interpolation_input(p, closed ? 3 : 4, closed, method);
   const internal::cardinal::Cardinal_sums<FT> s = internal::cardinal::cardinal_interior_sums<FT>(p, closed);
-  const FT D = s.D(), M = s.M();
-  if (CGAL::is_zero(D))
+  const internal::cardinal::Alpha_optimum<FT> o = internal::cardinal::optimal_alpha(s);
+  if (o.outcome == internal::cardinal::Alpha_optimum<FT>::ZERO_DENOMINATOR)
     throw Invalid_input_error(internal::message(
         method, ": the denominator of eq. 18, sum |d_i|^2 with d_i = -p_i - p_{i+1} + p_{i+2} + p_{i+3}, is 0 "
         "(the data alternate so that every d_i vanishes): the energy of eq. 10 does not depend on alpha and "
         "has no unique minimiser"));
-  const FT alpha = -FT(2) * M / D; // eq. 18 (closed: same formula over all N segments)
-  if (!CGAL::is_positive(alpha))
+  const FT alpha = o.alpha;
+  if (o.outcome == internal::cardinal::Alpha_optimum<FT>::NOT_POSITIVE)
     throw Invalid_input_error(internal::message(
         method, ": the optimal parameter of eq. 18 is alpha* = ", CGAL::to_double(alpha),
-        " <= 0 (sum d_i.m_i / sum |d_i|^2 = ", CGAL::to_double(M) / CGAL::to_double(D),
+        " <= 0 (sum d_i.m_i / sum |d_i|^2 = ", CGAL::to_double(o.M) / CGAL::to_double(o.D),
         "): the data fold back on themselves and no Cardinal spline with alpha > 0 minimises eq. 10; "
         "use a fixed alpha such as 1/2 (Catmull-Rom)"));
   Cardinal_parameters<K> out{alpha, p.front(), p.back(), internal::cardinal::checked_energy(s.energy(alpha), method),
@@ -121,9 +126,12 @@ optimal_cardinal_parameters(const std::vector<Point_2>& p, bool closed = false) 
   return out;
 }
 
-/// \brief A Cardinal spline curve (eqs. 1-2), open with two auxiliary points or closed.
+/// \brief A Cardinal spline curve (eqs. 1-2), open with two auxiliary points or closed: a model
+/// of the curve-family contract (doc/concepts.md).
 ///
-/// Models a piecewise curve whose pieces are exactly cubic Bezier_2<K> pieces (pieces()).
+/// Its pieces are exactly cubic Bezier_2<K> pieces (pieces()); report() says which alpha it uses
+/// and why (status()), its auxiliary points and the energy of eq. 10. Exact in an exact kernel.
+/// Complexity: O(n) construction (eq. 18 and the pieces), O(1) evaluation.
 template <class K>
 class Cardinal_spline_2 {
 public:
@@ -132,81 +140,108 @@ public:
   typedef typename K::Point_2 Point_2;
   typedef typename K::Vector_2 Vector_2;
   typedef Bezier_2<K> Piece;
+  typedef Cardinal_spline_report<K> Report;
 
-  /// Open curve through p_0..p_n (n >= 1) with parameter alpha > 0 and the auxiliary points
-  /// p_{-1} = aux_start, p_{n+1} = aux_end.
-  /// \throws Invalid_input_error for bad data points or non-finite auxiliary points,
-  ///         Precondition_error unless alpha > 0.
-  Cardinal_spline_2(std::vector<Point_2> points, const FT& alpha, const Point_2& aux_start, const Point_2& aux_end)
-    : p_(std::move(points)), alpha_(alpha), closed_(false) {
-    internal::common::check_interpolation_input(p_, 2, false, "Cardinal_spline_2");
-    internal::common::check_finite_points(std::vector<Point_2>{aux_start, aux_end}, "Cardinal_spline_2 (auxiliary points)");
-    check_alpha();
-    p_.insert(p_.begin(), aux_start);
-    p_.push_back(aux_end);
-    check_pieces();
-  }
-
-  /// Closed curve (closed = true, N >= 3 points, the last point is joined back to the first; do not
-  /// repeat the first point) or open curve whose auxiliary points are the optimal ones of eqs. 19-20
-  /// for this alpha (closed = false, n + 1 >= 3 points).
-  Cardinal_spline_2(std::vector<Point_2> points, const FT& alpha, bool closed)
-    : p_(std::move(points)), alpha_(alpha), closed_(closed) {
-    if (closed) {
-      internal::common::check_interpolation_input(p_, 3, true, "Cardinal_spline_2 (closed)");
-      check_alpha();
-    } else {
-      check_alpha();
-      const std::pair<Point_2, Point_2> aux = cardinal_auxiliary_points(p_, alpha_);
-      p_.insert(p_.begin(), aux.first);
-      p_.push_back(aux.second);
+  /// The Cardinal spline through `points` (closed: N >= 3 points, do not repeat the first; open:
+  /// n + 1 points). Without options.alpha: Li's alpha* of eq. 18 (open: n + 1 >= 4 points) and,
+  /// open, the optimal auxiliary points of eqs. 19-20 (status OPTIMAL); when eq. 18 has no positive
+  /// optimum the Catmull-Rom spline, alpha = 1/2, with the auxiliary points optimal for it
+  /// (status NO_OPTIMUM). With options.alpha: that alpha and, open (n + 1 >= 3 points), the
+  /// auxiliary points optimal for it (eqs. 16-17; status GIVEN_ALPHA).
+  /// \throws Invalid_input_error for too few, non-finite or coincident consecutive points, or when
+  /// a piece, its third derivative or eq. 10 overflows the number type; Precondition_error unless
+  /// options.alpha is finite and > 0; Solve_error carrying the report for NO_OPTIMUM when
+  /// options.throw_on_failure is set.
+  explicit Cardinal_spline_2(std::vector<Point_2> points, const Cardinal_spline_options& options = {})
+    : points_(std::move(points)), options_(options) {
+    if (options_.alpha) {
+      given_alpha(FT(*options_.alpha));
+      return;
     }
-    check_pieces();
+    const bool closed = options_.closed;
+    const char* method = closed ? "Cardinal_spline_2 (closed)" : "Cardinal_spline_2 (open)";
+    internal::common::check_interpolation_input(points_, closed ? 3 : 4, closed, method);
+    const internal::cardinal::Alpha_optimum<FT> o =
+        internal::cardinal::optimal_alpha(internal::cardinal::cardinal_interior_sums<FT>(points_, closed));
+    const bool found = o.outcome == internal::cardinal::Alpha_optimum<FT>::FOUND;
+    report_.status = found ? Cardinal_spline_status::OPTIMAL : Cardinal_spline_status::NO_OPTIMUM;
+    report_.alpha = found ? o.alpha : FT(1) / FT(2);
+    set_auxiliary_points();
+    build();
+    if (!found && options_.throw_on_failure)
+      throw Solve_error(
+          internal::message(method, ": eq. 18 has no positive optimum (",
+                            o.outcome == internal::cardinal::Alpha_optimum<FT>::ZERO_DENOMINATOR
+                                ? std::string("its denominator sum |d_i|^2 is 0")
+                                : internal::message("alpha* = ", CGAL::to_double(o.alpha), " <= 0"),
+                            "); without throw_on_failure the curve is Catmull-Rom (alpha = 1/2), ", report_),
+          report_);
   }
 
-  /// The curve with the optimal parameter and auxiliary points of optimal_cardinal_parameters().
-  static Cardinal_spline_2 optimal(const std::vector<Point_2>& points, bool closed = false) {
-    const Cardinal_parameters<K> o = optimal_cardinal_parameters(points, closed);
-    return closed ? Cardinal_spline_2(points, o.alpha, true) : Cardinal_spline_2(points, o.alpha, o.aux_start, o.aux_end);
+  /// Expert: an alpha in FT (any rational in an exact kernel), for the data and the closedness of
+  /// `options` (options.alpha must be empty), with, open, the auxiliary points optimal for it.
+  /// Status GIVEN_ALPHA. \throws as the first constructor.
+  Cardinal_spline_2(std::vector<Point_2> points, const FT& alpha, const Cardinal_spline_options& options = {})
+    : points_(std::move(points)), options_(options) {
+    internal::require(!options_.alpha, "Cardinal_spline_2: alpha given twice (argument and options.alpha)");
+    given_alpha(alpha);
   }
 
-  /// The uniform Catmull-Rom spline (alpha = 1/2) with the given auxiliary points.
-  static Cardinal_spline_2 catmull_rom(const std::vector<Point_2>& points, const Point_2& aux_start, const Point_2& aux_end) {
-    return Cardinal_spline_2(points, FT(1) / FT(2), aux_start, aux_end);
+  /// Expert: an open curve through p_0..p_n (n >= 1) with parameter alpha > 0 and the given
+  /// auxiliary points p_{-1} = aux_start, p_{n+1} = aux_end (options.closed must be false and
+  /// options.alpha empty). Status GIVEN_ALPHA.
+  /// \throws Invalid_input_error for bad data points or non-finite auxiliary points,
+  ///         Precondition_error unless alpha > 0, for options.closed or options.alpha.
+  Cardinal_spline_2(std::vector<Point_2> points, const FT& alpha, const Point_2& aux_start, const Point_2& aux_end,
+                    const Cardinal_spline_options& options = {})
+    : points_(std::move(points)), options_(options) {
+    internal::require(!options_.closed, "Cardinal_spline_2: a closed curve has no auxiliary points");
+    internal::require(!options_.alpha, "Cardinal_spline_2: alpha given twice (argument and options.alpha)");
+    internal::common::check_interpolation_input(points_, 2, false, "Cardinal_spline_2");
+    internal::common::check_finite_points(std::vector<Point_2>{aux_start, aux_end}, "Cardinal_spline_2 (auxiliary points)");
+    report_.status = Cardinal_spline_status::GIVEN_ALPHA;
+    report_.alpha = alpha;
+    check_alpha();
+    report_.aux_start = aux_start;
+    report_.aux_end = aux_end;
+    build();
   }
 
-  const FT& alpha() const { return alpha_; }
+  /// The interpolated data points p_0..p_n, as given (without auxiliary points).
+  const std::vector<Point_2>& points() const { return points_; }
+  /// All segments as cubic Bezier pieces, joined end to start (C^1 at the joins): n for an open
+  /// curve on n+1 points, N for a closed one on N points.
+  const std::vector<Piece>& pieces() const { return pieces_; }
+  std::size_t number_of_pieces() const { return pieces_.size(); }
+  bool is_closed() const { return options_.closed; }
+  const Cardinal_spline_options& options() const { return options_; }
+  /// The alpha used and why, the auxiliary points, the energy of eq. 10.
+  const Report& report() const { return report_; }
+  /// report().status: OPTIMAL, GIVEN_ALPHA or NO_OPTIMUM.
+  Cardinal_spline_status status() const { return report_.status; }
+
+  /// The alpha used (report().alpha).
+  const FT& alpha() const { return report_.alpha; }
   /// The tension T = 1 - 2 alpha (alpha = (1-T)/2, eq. 2).
-  FT tension() const { return FT(1) - FT(2) * alpha_; }
-  bool is_closed() const { return closed_; }
-
-  /// The interpolated data points p_0..p_n (without auxiliary points).
-  std::vector<Point_2> data_points() const {
-    return closed_ ? p_ : std::vector<Point_2>(p_.begin() + 1, p_.end() - 1);
-  }
+  FT tension() const { return FT(1) - FT(2) * report_.alpha; }
   /// p_{-1} and p_{n+1}; \throws Precondition_error for a closed curve.
   const Point_2& aux_start() const {
-    internal::require(!closed_, "Cardinal_spline_2::aux_start: a closed curve has no auxiliary points");
-    return p_.front();
+    internal::require(!is_closed(), "Cardinal_spline_2::aux_start: a closed curve has no auxiliary points");
+    return report_.aux_start;
   }
   const Point_2& aux_end() const {
-    internal::require(!closed_, "Cardinal_spline_2::aux_end: a closed curve has no auxiliary points");
-    return p_.back();
+    internal::require(!is_closed(), "Cardinal_spline_2::aux_end: a closed curve has no auxiliary points");
+    return report_.aux_end;
   }
-
-  /// Number of pieces (the paper's segments): n for an open curve on n+1 points, N for a closed
-  /// one on N points.
-  std::size_t number_of_pieces() const { return closed_ ? p_.size() : p_.size() - 3; }
+  /// The approximate curvature variation energy of eq. 10 (report().energy): the sum over all
+  /// segments of int_0^1 |r_i'''(t)|^2 dt (eq. 9), exact in an exact kernel. The true energy of
+  /// eq. 5: fair::curvature_variation_energy(pieces(), ...) (Fairness_metrics.h).
+  const FT& approximate_energy() const { return report_.energy; }
 
   /// The four points (q0, q1, q2, q3) that define segment i (eq. 1).
   void segment_points(std::size_t i, const Point_2*& q0, const Point_2*& q1, const Point_2*& q2, const Point_2*& q3) const {
     check_segment(i);
-    if (closed_) {
-      const std::size_t N = p_.size();
-      q0 = &p_[(i + N - 1) % N]; q1 = &p_[i]; q2 = &p_[(i + 1) % N]; q3 = &p_[(i + 2) % N];
-    } else {
-      q0 = &p_[i]; q1 = &p_[i + 1]; q2 = &p_[i + 2]; q3 = &p_[i + 3];
-    }
+    segment_points_unchecked(i, q0, q1, q2, q3);
   }
 
   /// r_i(t) (eq. 1), t in [0,1], exact in an exact kernel.
@@ -215,25 +250,24 @@ public:
     basis(t, b);
     return combine(i, b);
   }
-  /// r_i'(t).
+  /// The first derivative r_i'(t).
   Vector_2 derivative(std::size_t i, const FT& t) const {
-    const FT a = alpha_, t2 = t * t;
+    const FT a = report_.alpha, t2 = t * t;
     FT b[4] = {-FT(3) * a * t2 + FT(4) * a * t - a, FT(3) * (FT(2) - a) * t2 + FT(2) * (a - FT(3)) * t,
                FT(3) * (a - FT(2)) * t2 + FT(2) * (FT(3) - FT(2) * a) * t + a, FT(3) * a * t2 - FT(2) * a * t};
     return combine(i, b) - CGAL::ORIGIN;
   }
-  /// r_i''(t).
+  /// The second derivative r_i''(t).
   Vector_2 second_derivative(std::size_t i, const FT& t) const {
-    const FT a = alpha_;
+    const FT a = report_.alpha;
     FT b[4] = {-FT(6) * a * t + FT(4) * a, FT(6) * (FT(2) - a) * t + FT(2) * (a - FT(3)),
                FT(6) * (a - FT(2)) * t + FT(2) * (FT(3) - FT(2) * a), FT(6) * a * t - FT(2) * a};
     return combine(i, b) - CGAL::ORIGIN;
   }
-  /// r_i''' = 6 alpha d_i + 12 m_i, constant on the segment (eqs. 7-8).
+  /// The third derivative 6 alpha d_i + 12 m_i, constant on the segment (eqs. 7-8).
   Vector_2 third_derivative(std::size_t i) const {
-    const FT a = alpha_;
-    FT b[4] = {-FT(6) * a, FT(12) - FT(6) * a, FT(6) * a - FT(12), FT(6) * a};
-    return combine(i, b) - CGAL::ORIGIN;
+    check_segment(i);
+    return third_derivative_unchecked(i);
   }
 
   /// The point at the global parameter u in [0, number_of_pieces()]: segment floor(u) (the last
@@ -253,68 +287,96 @@ public:
   }
 
   /// Segment i as the cubic Bezier piece q1, q1 + alpha (q2 - q0)/3, q2 - alpha (q3 - q1)/3, q2
-  /// (same parametrisation: piece(t) = r_i(t) identically).
-  Piece piece(std::size_t i) const {
-    const Point_2 *q0, *q1, *q2, *q3;
-    segment_points(i, q0, q1, q2, q3);
-    const FT c = alpha_ / FT(3);
-    return Piece(*q1, Point_2(q1->x() + c * (q2->x() - q0->x()), q1->y() + c * (q2->y() - q0->y())),
-                 Point_2(q2->x() - c * (q3->x() - q1->x()), q2->y() - c * (q3->y() - q1->y())), *q2);
-  }
-  /// All segments as cubic Bezier pieces, joined end to start (C^1 at the joins).
-  std::vector<Piece> pieces() const {
-    std::vector<Piece> out;
-    out.reserve(number_of_pieces());
-    for (std::size_t i = 0; i < number_of_pieces(); ++i) out.push_back(piece(i));
-    return out;
-  }
-
-  /// The approximate curvature variation energy of eq. 10, sum over all segments of
-  /// int_0^1 |r_i'''(t)|^2 dt (eq. 9), exact in an exact kernel. \throws Invalid_input_error
-  /// if it overflows a floating-point FT (coordinates beyond ~1e150).
-  FT approximate_energy() const {
-    internal::cardinal::Cardinal_sums<FT> s;
-    const Point_2 *q0, *q1, *q2, *q3;
-    for (std::size_t i = 0; i < number_of_pieces(); ++i) {
-      segment_points(i, q0, q1, q2, q3);
-      s.add(*q0, *q1, *q2, *q3);
-    }
-    return internal::cardinal::checked_energy(s.energy(alpha_), "Cardinal_spline_2::approximate_energy");
-  }
-
-  /// The true curvature variation energy, summed over the segments:
-  /// measure = Energy_measure::PARAMETER gives sum_i int_0^1 (d kappa/dt)^2 dt (eq. 5),
-  /// measure = Energy_measure::ARC_LENGTH gives int (d kappa/ds)^2 ds. Adaptive Gauss-Kronrod
-  /// quadrature with the error bound and caps of fair::curvature_variation_energy.
-  Quadrature_estimate curvature_variation_energy(Energy_measure measure = Energy_measure::PARAMETER,
-                                                 const Quadrature_options& options = Quadrature_options()) const {
-    return fair::curvature_variation_energy(pieces(), measure, options);
+  /// (same parametrisation: piece(t) = r_i(t) identically). \throws Precondition_error if
+  /// i >= number_of_pieces().
+  const Piece& piece(std::size_t i) const {
+    check_segment(i);
+    return pieces_[i];
   }
 
 private:
-  void check_alpha() const {
-    internal::require(std::isfinite(CGAL::to_double(alpha_)) && CGAL::is_positive(alpha_),
-                      "Cardinal_spline_2: alpha = ", CGAL::to_double(alpha_),
-                      " must be finite and > 0 (alpha = (1 - tension)/2; alpha <= 0 collapses or reverses the tangents)");
+  std::size_t segments() const { return options_.closed ? points_.size() : points_.size() - 1; }
+
+  /// GIVEN_ALPHA from the options or the expert constructor.
+  void given_alpha(const FT& alpha) {
+    const bool closed = options_.closed;
+    internal::common::check_interpolation_input(points_, 3, closed,
+                                                closed ? "Cardinal_spline_2 (closed)" : "Cardinal_spline_2 (open)");
+    report_.status = Cardinal_spline_status::GIVEN_ALPHA;
+    report_.alpha = alpha;
+    check_alpha();
+    set_auxiliary_points();
+    build();
   }
-  // Finite data with a huge alpha or coordinates near 1e308 can give pieces (or derivatives)
-  // that overflow double: refused (Invalid_input_error) rather than handed out with inf or NaN.
-  void check_pieces() const {
-    internal::classic::classic_check_finite_pieces(pieces(), "Cardinal_spline_2");
-    for (std::size_t i = 0; i < number_of_pieces(); ++i) {
-      const Vector_2 d3 = third_derivative(i);
+  /// Open: the auxiliary points optimal for report_.alpha (eqs. 16-17 as eqs. 19-20); closed: the
+  /// first and the last point (not used).
+  void set_auxiliary_points() {
+    if (options_.closed) {
+      report_.aux_start = points_.front();
+      report_.aux_end = points_.back();
+      return;
+    }
+    const std::pair<Point_2, Point_2> aux = cardinal_auxiliary_points(points_, report_.alpha);
+    report_.aux_start = aux.first;
+    report_.aux_end = aux.second;
+  }
+  /// The pieces and eq. 10, checked for overflow.
+  void build() {
+    const std::size_t S = segments();
+    pieces_.reserve(S);
+    const FT c = report_.alpha / FT(3);
+    internal::cardinal::Cardinal_sums<FT> sums;
+    const Point_2 *q0, *q1, *q2, *q3;
+    for (std::size_t i = 0; i < S; ++i) {
+      segment_points_unchecked(i, q0, q1, q2, q3);
+      pieces_.push_back(Piece(*q1, Point_2(q1->x() + c * (q2->x() - q0->x()), q1->y() + c * (q2->y() - q0->y())),
+                              Point_2(q2->x() - c * (q3->x() - q1->x()), q2->y() - c * (q3->y() - q1->y())), *q2));
+      sums.add(*q0, *q1, *q2, *q3);
+    }
+    // Finite data with a huge alpha or coordinates near 1e308 can give pieces (or derivatives)
+    // that overflow double: refused (Invalid_input_error) rather than handed out with inf or NaN.
+    internal::classic::classic_check_finite_pieces(pieces_, "Cardinal_spline_2");
+    for (std::size_t i = 0; i < S; ++i) {
+      const Vector_2 d3 = third_derivative_unchecked(i);
       const double x = CGAL::to_double(d3.x()), y = CGAL::to_double(d3.y());
       if (!std::isfinite(x) || !std::isfinite(y))
         throw Invalid_input_error(internal::message("Cardinal_spline_2: the third derivative of segment ", i, " is (", x,
                                                     ", ", y, ") in this number type: the coordinates are too large"));
     }
+    report_.energy = internal::cardinal::checked_energy(sums.energy(report_.alpha), "Cardinal_spline_2 (eq. 10)");
+  }
+  void check_alpha() const {
+    internal::require(std::isfinite(CGAL::to_double(report_.alpha)) && CGAL::is_positive(report_.alpha),
+                      "Cardinal_spline_2: alpha = ", CGAL::to_double(report_.alpha),
+                      " must be finite and > 0 (alpha = (1 - tension)/2; alpha <= 0 collapses or reverses the tangents)");
   }
   void check_segment(std::size_t i) const {
     internal::require(i < number_of_pieces(), "Cardinal_spline_2: piece index ", i, " >= number of pieces ",
                       number_of_pieces());
   }
+  /// Open: q0 = p_{i-1} (p_{-1} = aux_start), q3 = p_{i+2} (p_{n+1} = aux_end); closed: mod N.
+  void segment_points_unchecked(std::size_t i, const Point_2*& q0, const Point_2*& q1, const Point_2*& q2,
+                                const Point_2*& q3) const {
+    const std::size_t N = points_.size();
+    if (options_.closed) {
+      q0 = &points_[(i + N - 1) % N]; q1 = &points_[i]; q2 = &points_[(i + 1) % N]; q3 = &points_[(i + 2) % N];
+    } else {
+      q0 = i == 0 ? &report_.aux_start : &points_[i - 1];
+      q1 = &points_[i];
+      q2 = &points_[i + 1];
+      q3 = i + 2 < N ? &points_[i + 2] : &report_.aux_end;
+    }
+  }
+  Vector_2 third_derivative_unchecked(std::size_t i) const {
+    const FT a = report_.alpha;
+    const FT b[4] = {-FT(6) * a, FT(12) - FT(6) * a, FT(6) * a - FT(12), FT(6) * a};
+    const Point_2 *q0, *q1, *q2, *q3;
+    segment_points_unchecked(i, q0, q1, q2, q3);
+    return Vector_2(b[0] * q0->x() + b[1] * q1->x() + b[2] * q2->x() + b[3] * q3->x(),
+                    b[0] * q0->y() + b[1] * q1->y() + b[2] * q2->y() + b[3] * q3->y());
+  }
   void basis(const FT& t, FT* b) const { // eq. 2
-    const FT a = alpha_, t2 = t * t, t3 = t2 * t;
+    const FT a = report_.alpha, t2 = t * t, t3 = t2 * t;
     b[0] = -a * t3 + FT(2) * a * t2 - a * t;
     b[1] = (FT(2) - a) * t3 + (a - FT(3)) * t2 + FT(1);
     b[2] = (a - FT(2)) * t3 + (FT(3) - FT(2) * a) * t2 + a * t;
@@ -327,9 +389,10 @@ private:
                    b[0] * q0->y() + b[1] * q1->y() + b[2] * q2->y() + b[3] * q3->y());
   }
 
-  std::vector<Point_2> p_; // open: p_{-1}, p_0..p_n, p_{n+1}; closed: p_0..p_{N-1}
-  FT alpha_;
-  bool closed_;
+  std::vector<Point_2> points_;
+  Cardinal_spline_options options_;
+  Report report_;
+  std::vector<Piece> pieces_;
 };
 
 } // namespace fair

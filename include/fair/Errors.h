@@ -6,6 +6,7 @@
 #ifndef FAIR_ERRORS_H
 #define FAIR_ERRORS_H
 
+#include <any>
 #include <cstddef>
 #include <sstream>
 #include <stdexcept>
@@ -49,7 +50,28 @@ private:
   std::size_t line_;
 };
 
-/// An iterative method reached its iteration cap before its convergence criterion.
+/// A curve family's solve ended in a failure status (Kappa_curve_status::UNSOLVED,
+/// Optimal_curve_status::DIVERGING or CAPPED, Cardinal_spline_status::NO_OPTIMUM) and its options
+/// asked for an exception (`throw_on_failure`; doc/concepts.md, "One failure policy"). It carries
+/// the family's report, the one the curve would have had: report<Kappa_curve_report>() returns it,
+/// report<T>() of any other type T returns nullptr. Without throw_on_failure no family throws for
+/// a failed solve: its status says it.
+class Solve_error : public Error {
+public:
+  template <class Report>
+  Solve_error(const std::string& what, const Report& report) : Error(what), report_(report) {}
+  /// The carried report if it is a Report, else nullptr. Lives as long as this error.
+  template <class Report>
+  const Report* report() const noexcept {
+    return std::any_cast<Report>(&report_);
+  }
+
+private:
+  std::any report_;
+};
+
+/// A numerical routine that is not a family's solve (Bernstein root isolation, quadrature)
+/// reached its iteration cap before its convergence criterion.
 class Non_convergence_error : public Error {
 public:
   Non_convergence_error(const std::string& what, std::size_t iterations, double residual)

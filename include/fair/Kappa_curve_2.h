@@ -13,7 +13,8 @@
 // Weights: all 1 (the polynomial kappa-curves of Yan et al. 2017), fixed per point, or the
 // clamped minimum-eccentricity weights of eq. 16 (tension mu_i, clamp default 1/2), which
 // reproduce circles (Sec. 4.4, Sec. 8). Options: Kappa_curve_options.h; what a solve reached:
-// Kappa_curve_report.h; the certificates of certify() and certify_pieces(): Kappa_certificate.h.
+// Kappa_curve_report.h; exact certification (certify(), certify_pieces()): include
+// Kappa_certificate.h.
 // Open curves (Sec. 6): the first and last points are the fixed end points; the interior
 // points get one piece each. Closed curves: one piece per point, treated cyclically.
 //
@@ -26,11 +27,9 @@
 #define FAIR_KAPPA_CURVE_2_H
 
 #include <fair/Errors.h>
-#include <fair/Kappa_certificate.h>
 #include <fair/Kappa_curve_options.h>
 #include <fair/Kappa_curve_report.h>
 #include <fair/Rational_quadratic_bezier_2.h>
-#include <fair/internal/kappa/certify.h>
 #include <fair/internal/kappa/input_checks.h>
 #include <fair/internal/kappa/pieces.h>
 #include <fair/internal/kappa/problem_setup.h>
@@ -54,7 +53,8 @@ namespace fair {
 /// Outcome: report().status, INTERIOR (every property of the paper), ON_JOINS (the listed
 /// report().points_on_joins lie on joins, the rest holds) or UNSOLVED (residual above the
 /// tolerance, or report().points_at_minima); see Kappa_curve_status and doc/kappa_curves.md.
-/// certify() and certify_pieces() certify the result, exactly or by certified bounds.
+/// certify() and certify_pieces() (Kappa_certificate.h) certify the result, exactly or by
+/// certified bounds.
 /// Complexity: O(n) per iteration of the solver (a few Newton iterations from a cold start on
 /// typical data); after move_point() first O(1) per iteration on the pieces near the point.
 template <class K>
@@ -70,10 +70,10 @@ public:
   /// \throws Invalid_input_error for too few points, NaN/inf coordinates, coincident
   /// consecutive points, all points collinear, bad weights/tension/clamp, or a solution with a
   /// degenerate (straight) piece; Precondition_error for a negative or non-finite tolerance;
-  /// Non_convergence_error if the outcome is Kappa_curve_status::UNSOLVED and
-  /// options.throw_on_non_convergence is set (never for INTERIOR or ON_JOINS; see report().status).
-  explicit Kappa_curve_2(std::vector<Point_2> points, Kappa_curve_options options = Kappa_curve_options())
-    : q_(std::move(points)), opt_(std::move(options)) {
+  /// Solve_error carrying the Kappa_curve_report if the outcome is Kappa_curve_status::UNSOLVED
+  /// and options.throw_on_failure is set (never for INTERIOR or ON_JOINS; see report().status).
+  explicit Kappa_curve_2(std::vector<Point_2> points, const Kappa_curve_options& options = {})
+    : q_(std::move(points)), opt_(options) {
     solve(false, no_point);
   }
 
@@ -131,6 +131,8 @@ public:
   }
   /// What the last solve did and reached.
   const Kappa_curve_report& report() const { return report_; }
+  /// report().status: INTERIOR, ON_JOINS or UNSOLVED.
+  Kappa_curve_status status() const { return report_.status; }
 
   /// The solver's unknowns at the solution (normalised offsets, lambda, t, w; one entry per
   /// piece): the exact parameters certify() rebuilds the curve from, and the start of the next
@@ -163,14 +165,14 @@ private:
     Kappa_curve_report report =
         kp::solve_with_warm_start(pb, has_previous ? &previous : nullptr, moved, kp::solve_settings(opt_), st);
     std::vector<Piece> pieces = kp::assemble_pieces<K>(pb, st, normalisation, q_);
-    if (report.status == Kappa_curve_status::UNSOLVED && opt_.throw_on_non_convergence)
-      throw Non_convergence_error(
+    if (report.status == Kappa_curve_status::UNSOLVED && opt_.throw_on_failure)
+      throw Solve_error(
           report.residual <= opt_.tolerance
               ? internal::message("Kappa_curve_2: unsolved: residual ", report.residual, " <= tolerance ",
                                   opt_.tolerance, " but points at a curvature minimum (", report, ")")
               : internal::message("Kappa_curve_2: unsolved after ", report.iterations, " iterations, residual ",
                                   report.residual, " > tolerance ", opt_.tolerance, " (", report, ")"),
-          report.iterations, report.residual);
+          report);
     pieces_.swap(pieces);
     st_ = std::move(st);
     normalisation_ = normalisation;
@@ -184,43 +186,6 @@ private:
   internal::kappa::Normalisation normalisation_;
   Kappa_curve_report report_;
 };
-
-/// Certifies `curve` exactly: the exact curve defined by the solver's rational lambda_i, t_i,
-/// w_i (doubles, i.e. exact dyadic rationals; state()) and the exact input points, with eq. 18
-/// solved exactly and fraction-free. Returns the Kappa_certificate: Q_i == c_i(t_i), C0 and G1
-/// exactly; the number and kind of curvature extrema of each piece and the distance of the
-/// nearest one to t_i; the relative |kappa| mismatch at each join by outward-rounded intervals;
-/// the exact pieces in Kappa_certificate::Exact_kernel; the outcome and the points on joins of
-/// report(). Use Kappa_certificate::proves_outcome() (valid() for INTERIOR, valid_on_joins()
-/// for ON_JOINS).
-/// Any kernel (its numbers are converted exactly). Complexity: O(n) products of O(n)-bit
-/// numbers (the exact control points have ~150 n bits), O(n M(n)) bit operations; timings in
-/// doc/benchmarks.md. \throws Internal_error if the exact elimination meets a zero pivot
-/// (impossible for the 0 < lambda_i, t_i < 1, w_i > 0 of a Kappa_curve_2).
-template <class K>
-Kappa_certificate certify(const Kappa_curve_2<K>& curve) {
-  Kappa_certificate c = internal::kappa::certify_curve(curve, internal::kappa::Certify_mode::FILTERED);
-  c.status = curve.report().status;
-  c.points_on_joins = curve.report().points_on_joins;
-  return c;
-}
-
-/// Certifies the pieces that `curve` returns, piece by piece in O(n): their exact control
-/// points (in an exact kernel: P_j the solver's rounded P_{j,1}, E_j = (1 - lambda_j) P_{j-1} +
-/// lambda_j P_j formed exactly, so C0 and G1 hold exactly by construction and are verified),
-/// the parameters t_j, and the exact input points. What is certified, exactly or by outward
-/// rounded intervals: C0 and G1 at every join; |c_j(t_j) - Q_j| <= interpolation_error (not 0:
-/// the P_j carry the rounding of the solve, ~1e-16 relative); the number and kind of curvature
-/// extrema of each piece and the distance of the nearest one to t_j; the relative |kappa|
-/// mismatch at each join. Use Kappa_certificate::valid_within(). With a floating-point kernel
-/// the pieces' E_j are rounded, and G1 generally fails exactly (as it is reported).
-template <class K>
-Kappa_certificate certify_pieces(const Kappa_curve_2<K>& curve) {
-  Kappa_certificate c = internal::kappa::certify_returned_pieces(curve);
-  c.status = curve.report().status;
-  c.points_on_joins = curve.report().points_on_joins;
-  return c;
-}
 
 } // namespace fair
 

@@ -39,9 +39,9 @@ struct Kappa_curve_options {
   std::size_t max_iterations = 200;
   /// Stop when the max-norm residual (dimensionless, see Kappa_curve_report) is at most this.
   double tolerance = 1e-12;
-  /// Throw fair::Non_convergence_error instead of returning an UNSOLVED curve (Kappa_curve_status;
-  /// never for INTERIOR or ON_JOINS).
-  bool throw_on_non_convergence = false;
+  /// Throw fair::Solve_error carrying the Kappa_curve_report instead of returning an UNSOLVED
+  /// curve (Kappa_curve_status; never for INTERIOR or ON_JOINS; doc/concepts.md).
+  bool throw_on_failure = false;
 };
 
 } // namespace fair

@@ -55,8 +55,6 @@ struct Kappa_curve_report {
   /// Most worst_points an UNSOLVED report lists.
   static constexpr std::size_t worst_points_listed = 5;
   Kappa_curve_status status = Kappa_curve_status::UNSOLVED;  ///< the outcome (see Kappa_curve_status)
-  /// Deprecated (kept one release): status == Kappa_curve_status::INTERIOR.
-  bool converged = false;
   bool warm_started = false;           ///< the solution came from the previous one (not a cold start)
   std::size_t refinement_passes = 0;   ///< alternating passes of Sec. 5.1
   std::size_t iterations = 0;          ///< Jacobians evaluated (Newton and Levenberg-Marquardt)
@@ -74,8 +72,6 @@ struct Kappa_curve_report {
   /// The input points whose t_i or lambda_i is there (indices into points(), increasing): each
   /// lies on a join, not at a curvature maximum (see doc/kappa_existence.md). Empty when INTERIOR.
   std::vector<std::size_t> points_on_joins;
-  /// Deprecated (kept one release): the same as points_on_joins.
-  std::vector<std::size_t> boundary_points;
   /// The input points (increasing) that are not at the maximum of |kappa| of their piece: t_i
   /// inside (0, 1) at a curvature MINIMUM (the sign of the derivative of eq. 4's numerator at
   /// t_i, in double; fair::certify() decides it exactly; possible with weights < 1), or t_i on a
@@ -96,6 +92,19 @@ struct Kappa_curve_report {
   /// (kappa-curves are a tool for sparse design points) or a spline. Empty otherwise.
   std::vector<std::size_t> points_beyond_density_limit;
   double energy() const { return energy_interpolation + energy_curvature + energy_g2 + energy_weight; }
+
+  /// Member by member (the report a Solve_error carries equals the curve's report()).
+  friend bool operator==(const Kappa_curve_report& a, const Kappa_curve_report& b) {
+    return a.status == b.status && a.warm_started == b.warm_started && a.refinement_passes == b.refinement_passes &&
+           a.iterations == b.iterations && a.residual == b.residual &&
+           a.interpolation_residual == b.interpolation_residual && a.curvature_residual == b.curvature_residual &&
+           a.g2_residual == b.g2_residual && a.weight_residual == b.weight_residual &&
+           a.energy_interpolation == b.energy_interpolation && a.energy_curvature == b.energy_curvature &&
+           a.energy_g2 == b.energy_g2 && a.energy_weight == b.energy_weight && a.bounds_active == b.bounds_active &&
+           a.points_on_joins == b.points_on_joins && a.points_at_minima == b.points_at_minima &&
+           a.worst_points == b.worst_points && a.points_beyond_density_limit == b.points_beyond_density_limit;
+  }
+  friend bool operator!=(const Kappa_curve_report& a, const Kappa_curve_report& b) { return !(a == b); }
 
   friend std::ostream& operator<<(std::ostream& out, const Kappa_curve_report& r) {
     out << "Kappa_curve_report{" << r.status << ", warm " << r.warm_started << ", passes "

@@ -5,60 +5,85 @@
 //   F(c) = int beta + beta_0 |kappa L0|^alpha_0 + sum_k beta_k |kappa^(k) L0^(k+1)|^alpha_k ds,
 // with TRUE curvature (the paper's eq. 9 is half of it, doc/optimal_curves.md), computed by a
 // hierarchical, adaptive Newton method on the normal offsets of the free vertices
-// (doc/optimal_curves.md). Points -> solver on doubles -> polygon in the user's kernel.
+// (doc/optimal_curves.md). Points -> solver on doubles -> polygon in the user's kernel -> the C2
+// cubic spline through the polygon's vertices (fair::fit_cubic_spline_runs: C2 between CORNER
+// constraints, G0 at them), whose cubic Bezier pieces are the curve's pieces().
 
 #ifndef FAIR_OPTIMAL_CURVE_2_H
 #define FAIR_OPTIMAL_CURVE_2_H
 
+#include <fair/Bezier_2.h>
+#include <fair/Errors.h>
 #include <fair/Optimal_curve_options.h>
 #include <fair/Optimal_curve_report.h>
+#include <fair/Polygon_spline_fit.h>
 #include <fair/internal/optimal/hierarchy.h>
 
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace fair {
 
-/// The optimal curve through `points` (closed: no repeated last point).
+/// The optimal curve through `points` (closed: no repeated last point): the optimal polygon and
+/// the C2 cubic spline through its vertices (pieces(), spline()).
 /// Errors: Invalid_input_error for too few points (< 2 open, < 3 closed), non-finite or
 /// coincident consecutive points, constraints out of range / with a zero direction / that cannot
 /// be met; Precondition_error for options outside their domain (negative or non-finite weights,
 /// all of beta, beta_0, beta_k zero, lambda outside [0, 1], exponents < 1, resolution <= 0).
-/// A solve that diverges or hits a cap does not throw: report().status says so.
-/// Complexity: O(n w^2) per Newton step (banded Hessian, w = max k + 2), n = finest vertices.
+/// A solve that diverges or hits a cap does not throw unless options.throw_on_failure is set
+/// (then Solve_error carrying the report): report().status says so.
+/// Complexity: O(n w^2) per Newton step (banded Hessian, w = max k + 2), n = finest vertices;
+/// the spline O(n).
 template <class K>
 class Optimal_curve_2 {
 public:
   typedef K Kernel;
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
+  /// The cubic Bezier pieces of spline(), one per polygon edge.
+  typedef Bezier_2<K> Piece;
+  /// The C2 cubic spline runs through the polygon (one run without CORNER constraints).
+  typedef Polygon_spline_runs<K> Spline;
 
-  Optimal_curve_2(const std::vector<Point_2>& points, const Optimal_curve_options& options = Optimal_curve_options())
-    : options_(options) {
+  /// Solves for the optimal polygon through `points`, then fits spline() through it.
+  /// \throws as the class comment says.
+  explicit Optimal_curve_2(const std::vector<Point_2>& points, const Optimal_curve_options& options = {})
+    : points_(points), options_(options) {
     std::vector<internal::optimal::Vec2> p;
     p.reserve(points.size());
     for (const Point_2& q : points) p.push_back({{CGAL::to_double(q.x()), CGAL::to_double(q.y())}});
     internal::optimal::Solve_result r = internal::optimal::solve_optimal_curve(p, options);
+    if (options.throw_on_failure && r.report.status != Optimal_curve_status::CONVERGED)
+      throw Solve_error(internal::message("Optimal_curve_2: the solve is ", r.report.status, " (", r.report, ")"),
+                        r.report);
     polygon_.reserve(r.polygon.size());
     for (const internal::optimal::Vec2& v : r.polygon) polygon_.push_back(Point_2(FT(v[0]), FT(v[1])));
     interpolation_indices_ = r.interpolation_indices;
     // The interpolation points are the user's points exactly (also in an exact kernel, where the
     // round trip through double would change them).
     for (std::size_t i = 0; i < points.size(); ++i) polygon_[interpolation_indices_[i]] = points[i];
-    curvatures_ = r.curvatures;
-    report_ = r.report;
+    curvatures_ = std::move(r.curvatures);
+    report_ = std::move(r.report);
+    spline_ = fit_cubic_spline_runs<K>(polygon_, options_.closed, corner_vertices());
+    for (const Cubic_spline_2<K>& run : spline_.splines) {
+      std::vector<Piece> q = run.polynomial_pieces();
+      pieces_.insert(pieces_.end(), q.begin(), q.end());
+    }
   }
 
+  /// The input points, as given.
+  const std::vector<Point_2>& points() const { return points_; }
   /// The optimal polygon (closed: no repeated vertex); its vertices at interpolation_indices()
   /// are the input points themselves (exactly, in every kernel).
   const std::vector<Point_2>& polygon() const { return polygon_; }
   /// The polygon index of each input point.
   const std::vector<std::size_t>& interpolation_indices() const { return interpolation_indices_; }
   /// The polygon vertices of the CORNER constraints (ascending): where the curve is only G0, so
-  /// that its spline is fit_cubic_spline_runs(polygon(), closed, corner_vertices()).
+  /// that spline() is fit_cubic_spline_runs(polygon(), is_closed(), corner_vertices()).
   std::vector<std::size_t> corner_vertices() const {
     std::vector<std::size_t> v;
     for (const Point_constraint& c : options_.constraints)
@@ -67,19 +92,31 @@ public:
     v.erase(std::unique(v.begin(), v.end()), v.end());
     return v;
   }
+  /// The C2 cubic spline through every polygon vertex (chordal breakpoints; C2 runs between the
+  /// corners, G0 at them; spline().max_distance: its distance to the polygon).
+  const Spline& spline() const { return spline_; }
+  /// The cubic pieces of spline(), run after run: one per polygon edge.
+  const std::vector<Piece>& pieces() const { return pieces_; }
+  std::size_t number_of_pieces() const { return pieces_.size(); }
+  bool is_closed() const { return options_.closed; }
+  const Optimal_curve_options& options() const { return options_; }
   const Optimal_curve_report& report() const { return report_; }
+  /// report().status: CONVERGED, DIVERGING or CAPPED.
+  Optimal_curve_status status() const { return report_.status; }
   /// The discrete true curvature per polygon vertex (the functional's discretisation; 0 at open ends).
-  std::vector<double> curvatures() const { return curvatures_; }
+  const std::vector<double>& curvatures() const { return curvatures_; }
   /// F of eq. 5 (discrete, Sec. 2.2.3) at the final polygon.
   double energy() const { return report_.energy; }
-  const Optimal_curve_options& options() const { return options_; }
 
 private:
+  std::vector<Point_2> points_;
   Optimal_curve_options options_;
   std::vector<Point_2> polygon_;
   std::vector<std::size_t> interpolation_indices_;
   std::vector<double> curvatures_;
   Optimal_curve_report report_;
+  Spline spline_{{}, {}, 0.0};
+  std::vector<Piece> pieces_;
 };
 
 } // namespace fair

@@ -60,6 +60,9 @@ struct Optimal_curve_options {
   /// Newton stops when half the Newton decrement g^T H^-1 g (the predicted decrease) is below
   /// tolerance * |F|; CG when the relative decrease of F per step is below it.
   double tolerance = 1e-10;
+  /// Throw fair::Solve_error carrying the Optimal_curve_report when the solve ends DIVERGING or
+  /// CAPPED (doc/concepts.md); otherwise such a curve is returned and report().status says it.
+  bool throw_on_failure = false;
 };
 
 } // namespace fair

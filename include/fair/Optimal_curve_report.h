@@ -25,6 +25,11 @@ struct Optimal_curve_level {
   std::size_t vertices = 0, iterations = 0;
   double energy = 0, gradient_norm = 0;
   Optimal_curve_status status = Optimal_curve_status::CAPPED;
+  friend bool operator==(const Optimal_curve_level& a, const Optimal_curve_level& b) {
+    return a.vertices == b.vertices && a.iterations == b.iterations && a.energy == b.energy &&
+           a.gradient_norm == b.gradient_norm && a.status == b.status;
+  }
+  friend bool operator!=(const Optimal_curve_level& a, const Optimal_curve_level& b) { return !(a == b); }
 };
 /// The whole solve: outcome (the worst of the levels, or CAPPED if a level/vertex cap stopped the
 /// hierarchy before the target resolution), final energy, total iterations, the reduced gradient
@@ -35,6 +40,12 @@ struct Optimal_curve_report {
   std::size_t iterations = 0;
   double gradient_norm = 0;
   std::vector<Optimal_curve_level> levels;
+  /// Member by member (the report a Solve_error carries equals the curve's report()).
+  friend bool operator==(const Optimal_curve_report& a, const Optimal_curve_report& b) {
+    return a.status == b.status && a.energy == b.energy && a.iterations == b.iterations &&
+           a.gradient_norm == b.gradient_norm && a.levels == b.levels;
+  }
+  friend bool operator!=(const Optimal_curve_report& a, const Optimal_curve_report& b) { return !(a == b); }
 };
 
 /// "converged", "diverging" or "capped".
@@ -47,6 +58,21 @@ inline const char* to_string(Optimal_curve_status s) {
   return "capped";
 }
 inline std::ostream& operator<<(std::ostream& out, Optimal_curve_status s) { return out << to_string(s); }
+
+/// "level{vertices 96, iterations 4, energy 12.5, gradient 1e-09, converged}".
+inline std::ostream& operator<<(std::ostream& out, const Optimal_curve_level& l) {
+  return out << "level{vertices " << l.vertices << ", iterations " << l.iterations << ", energy " << l.energy
+             << ", gradient " << l.gradient_norm << ", " << l.status << "}";
+}
+
+/// One line: "Optimal_curve_report{converged, energy 12.5, iterations 31, gradient 1e-09,
+/// 6 levels, last level{...}}".
+inline std::ostream& operator<<(std::ostream& out, const Optimal_curve_report& r) {
+  out << "Optimal_curve_report{" << r.status << ", energy " << r.energy << ", iterations " << r.iterations
+      << ", gradient " << r.gradient_norm << ", " << r.levels.size() << (r.levels.size() == 1 ? " level" : " levels");
+  if (!r.levels.empty()) out << ", last " << r.levels.back();
+  return out << "}";
+}
 
 } // namespace fair
 

@@ -5,6 +5,7 @@
 // scaling, reversal, symmetry), constraints (normal held exactly at every level, corners), the
 // lambda design, divergence, the derivative energies, CG against Newton, and typed errors.
 
+#include <fair/Kappa_curve_report.h>
 #include <fair/Optimal_curve_2.h>
 
 #include "test_support.h"
@@ -19,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -87,6 +89,25 @@ TYPED_TEST(OptimiserKernels, InterpolationPointsAreTheInputPoints) {
   for (std::size_t i = 0; i < p.size(); ++i) EXPECT_TRUE(fair_test::same<TypeParam>(c.polygon()[c.interpolation_indices()[i]], p[i]));
   EXPECT_EQ(c.report().status, Optimal_curve_status::CONVERGED);
   EXPECT_EQ(c.curvatures().size(), c.polygon().size());
+  // The contract's accessors (doc/concepts.md): points() the input, the pieces those of spline(),
+  // one cubic per polygon edge, from the first input point to the last.
+  EXPECT_EQ(c.points(), p);
+  EXPECT_FALSE(c.is_closed());
+  EXPECT_EQ(c.status(), c.report().status);
+  ASSERT_EQ(c.number_of_pieces(), c.polygon().size() - 1);
+  ASSERT_EQ(c.pieces().size(), c.number_of_pieces());
+  EXPECT_EQ(c.spline().splines.size(), 1u);
+  EXPECT_EQ(c.spline().splines[0].number_of_pieces(), c.number_of_pieces());
+  // Through the vertices to rounding (the fit runs in double, Polygon_spline_fit.h), in every kernel.
+  const auto near = [](const Point& a, const Point& b) {
+    return std::hypot(CGAL::to_double(a.x()) - CGAL::to_double(b.x()), CGAL::to_double(a.y()) - CGAL::to_double(b.y())) <
+           1e-13;
+  };
+  for (std::size_t j = 0; j < c.number_of_pieces(); ++j) {
+    EXPECT_EQ(c.pieces()[j].degree(), 3u);
+    EXPECT_TRUE(near(c.pieces()[j].source(), c.polygon()[j])) << j;
+    EXPECT_TRUE(near(c.pieces()[j].target(), c.polygon()[j + 1])) << j;
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -458,8 +479,81 @@ TEST(OptimiserConstraints, PureBendingThroughCollinearPointsDiverges) {
   o.length_weight = 0;
   const Optimal_curve_2<K> c({P(0, 0), P(1, 0), P(2, 0)}, o);
   EXPECT_EQ(c.report().status, Optimal_curve_status::DIVERGING);
+  EXPECT_EQ(c.status(), Optimal_curve_status::DIVERGING);
   EXPECT_EQ(c.report().levels.back().status, Optimal_curve_status::DIVERGING);
   for (const P& q : c.polygon()) EXPECT_TRUE(std::isfinite(q.x()) && std::isfinite(q.y()));
+  // The failure policy (doc/concepts.md): the same solve with throw_on_failure throws Solve_error
+  // carrying the report the curve has without it.
+  o.throw_on_failure = true;
+  try {
+    const Optimal_curve_2<K> thrown({P(0, 0), P(1, 0), P(2, 0)}, o);
+    FAIL() << "a DIVERGING solve with throw_on_failure did not throw";
+  } catch (const fair::Solve_error& e) {
+    ASSERT_NE(e.report<fair::Optimal_curve_report>(), nullptr);
+    EXPECT_EQ(*e.report<fair::Optimal_curve_report>(), c.report()) << *e.report<fair::Optimal_curve_report>();
+    EXPECT_NE(std::string(e.what()).find("diverging"), std::string::npos) << e.what();
+  }
+}
+
+// A level cap ends CAPPED: reported, or with throw_on_failure thrown with the same report; a
+// CONVERGED solve never throws.
+TEST(OptimiserConstraints, CappedSolveIsReportedOrThrown) {
+  Optimal_curve_options o;
+  o.max_levels = 1;
+  const Optimal_curve_2<K> c(wave, o);
+  ASSERT_EQ(c.status(), Optimal_curve_status::CAPPED);
+  ASSERT_EQ(c.report().levels.size(), 1u);
+  EXPECT_EQ(c.number_of_pieces(), c.polygon().size() - 1);  // a capped curve still has its spline
+  std::ostringstream text;
+  text << c.report();
+  EXPECT_EQ(text.str().rfind("Optimal_curve_report{capped, energy ", 0), 0u) << text.str();
+  EXPECT_NE(text.str().find("1 level, last level{vertices " + std::to_string(c.report().levels[0].vertices)),
+            std::string::npos)
+      << text.str();
+  o.throw_on_failure = true;
+  try {
+    const Optimal_curve_2<K> thrown(wave, o);
+    FAIL() << "a CAPPED solve with throw_on_failure did not throw";
+  } catch (const fair::Solve_error& e) {
+    ASSERT_NE(e.report<fair::Optimal_curve_report>(), nullptr);
+    EXPECT_EQ(*e.report<fair::Optimal_curve_report>(), c.report());
+    EXPECT_EQ(e.report<fair::Kappa_curve_report>(), nullptr);
+  }
+  o.max_levels = 30;
+  const Optimal_curve_2<K> converged(wave, o);  // throw_on_failure set: no throw when CONVERGED
+  EXPECT_EQ(converged.status(), Optimal_curve_status::CONVERGED);
+  EXPECT_NE(converged.report(), c.report());
+}
+
+// spline() is the program's spline: fit_cubic_spline_runs(polygon(), closed, corner_vertices()),
+// one C2 run between corners; pieces() its cubic pieces, run after run.
+TEST(OptimiserConstraints, SplineIsTheFitOfThePolygonBetweenCorners) {
+  for (const bool closed : {false, true}) {
+    Optimal_curve_options o;
+    o.closed = closed;
+    o.resolution = 100;
+    Point_constraint corner = tangent(2, 1, 0, Point_constraint_kind::CORNER);
+    corner.outgoing = {{0, -1}};
+    o.constraints = {corner};
+    const Optimal_curve_2<K> c(wave, o);
+    ASSERT_EQ(c.status(), Optimal_curve_status::CONVERGED) << closed;
+    EXPECT_EQ(c.is_closed(), closed);
+    const fair::Polygon_spline_runs<K> fit = fair::fit_cubic_spline_runs<K>(c.polygon(), closed, c.corner_vertices());
+    ASSERT_EQ(c.spline().splines.size(), fit.splines.size());
+    EXPECT_EQ(c.spline().splines.size(), closed ? 1u : 2u);  // closed: one run from the corner around
+    EXPECT_EQ(c.spline().first_vertex, fit.first_vertex);
+    EXPECT_EQ(c.spline().max_distance, fit.max_distance);
+    const std::size_t edges = closed ? c.polygon().size() : c.polygon().size() - 1;
+    ASSERT_EQ(c.number_of_pieces(), edges);
+    std::size_t j = 0;
+    for (const fair::Cubic_spline_2<K>& run : fit.splines)
+      for (const fair::Bezier_2<K>& piece : run.polynomial_pieces()) {
+        ASSERT_LT(j, c.pieces().size());
+        EXPECT_EQ(c.pieces()[j].control_points(), piece.control_points()) << j;
+        ++j;
+      }
+    EXPECT_EQ(j, edges);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -183,6 +183,25 @@ Cardinal_sums<FT> cardinal_interior_sums(const std::vector<Point_2>& p, bool clo
   return s;
 }
 
+/// alpha* of eq. 18 from the sums, or why there is none: D = sum |d_i|^2 = 0 (eq. 10 does not
+/// depend on alpha) or alpha* = -2 M / D <= 0 (no minimiser with alpha > 0). Never divides by 0.
+template <class FT>
+struct Alpha_optimum {
+  enum Outcome { FOUND, ZERO_DENOMINATOR, NOT_POSITIVE } outcome = ZERO_DENOMINATOR;
+  FT alpha = FT(0);  ///< alpha* (FOUND and NOT_POSITIVE), 0 for ZERO_DENOMINATOR
+  FT D = FT(0), M = FT(0);
+};
+template <class FT>
+Alpha_optimum<FT> optimal_alpha(const Cardinal_sums<FT>& s) {
+  Alpha_optimum<FT> o;
+  o.D = s.D();
+  o.M = s.M();
+  if (CGAL::is_zero(o.D)) return o;
+  o.alpha = -FT(2) * o.M / o.D;  // eq. 18 (closed: the same formula over all N segments)
+  o.outcome = CGAL::is_positive(o.alpha) ? Alpha_optimum<FT>::FOUND : Alpha_optimum<FT>::NOT_POSITIVE;
+  return o;
+}
+
 /// The optimal auxiliary points of eqs. 19-20 for alpha != 0, without input checks (the public
 /// fair::cardinal_auxiliary_points checks and calls this).
 template <class Point_2, class FT>

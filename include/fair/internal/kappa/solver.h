@@ -819,8 +819,7 @@ inline bool not_at_piece_maximum(const Problem& pb, const Kappa_solver_state& st
 
 /// The outcome of a solve whose per-block residuals are F (4 per block, as evaluate()) and, with
 /// automatic weights, weight_error (|w_i - eq. 16|, per block; empty otherwise): status, points
-/// at minima, worst points, the points beyond the density limit, and the deprecated aliases
-/// converged and boundary_points.
+/// at minima, worst points, the points beyond the density limit.
 inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solve_settings& settings,
                      const std::vector<double>& F, const std::vector<double>& weight_error, Kappa_curve_report& res) {
   res.bounds_active = bounds_active(pb, st, &res.points_on_joins);
@@ -834,8 +833,6 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
   res.status = !solved || !res.points_at_minima.empty() ? Kappa_curve_status::UNSOLVED
                : res.bounds_active > 0                  ? Kappa_curve_status::ON_JOINS
                                                         : Kappa_curve_status::INTERIOR;
-  res.converged = res.status == Kappa_curve_status::INTERIOR;
-  res.boundary_points = res.points_on_joins;
   res.worst_points.clear();
   res.points_beyond_density_limit.clear();
   if (res.status != Kappa_curve_status::UNSOLVED) return;
