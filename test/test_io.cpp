@@ -4,6 +4,7 @@
 // spellings.
 
 #include <fair/Bezier_2.h>
+#include <fair/Cubic_spline_2.h>
 #include <fair/Rational_bezier_2.h>
 #include <fair/io/enum_names.h>
 #include <fair/io/parsing.h>
@@ -564,6 +565,55 @@ TEST(IoCurveJson, EveryMalformedCurveGivesParseErrorAtItsLine) {
                 .find("expected a curve JSON"),
             std::string::npos);
   expect_parse_error([] { fair::io::read_curve_json<K>(data_dir + "no-such-curve.json"); }, data_dir + "no-such-curve.json", 0);
+}
+
+// family_to_json writes what each family has, through the one writer of pieces: a curve with a
+// report and a B-spline (as optimal curves and csr-splines have) gets "status", "report" and
+// "bspline" beside "method", "closed", "points" and "pieces".
+struct Reporting_spline_curve {
+  typedef SC_double K;
+  fair::Cubic_spline_2<K> s;
+  std::vector<K::Point_2> input;
+  fair::Optimal_curve_report r;
+  const std::vector<K::Point_2>& points() const { return input; }
+  std::vector<fair::Bezier_2<K>> pieces() const { return s.polynomial_pieces(); }
+  bool is_closed() const { return s.is_closed(); }
+  const fair::Cubic_spline_2<K>& spline() const { return s; }
+  const fair::Optimal_curve_report& report() const { return r; }
+};
+struct Plain_curve {
+  typedef SC_double K;
+  std::vector<K::Point_2> input;
+  std::vector<fair::Bezier_2<K>> p;
+  const std::vector<K::Point_2>& points() const { return input; }
+  const std::vector<fair::Bezier_2<K>>& pieces() const { return p; }
+  bool is_closed() const { return false; }
+};
+
+TEST(IoCurveJson, FamilyToJsonWritesWhatTheFamilyHas) {
+  typedef SC_double K;
+  typedef K::Point_2 P;
+  const std::vector<double> t = {0, 1, 3};
+  const std::vector<P> d = {P(0, 0), P(1, 2), P(2, 2), P(3, 0), P(5, 1)};  // open: m + 3 control points
+  Reporting_spline_curve c{fair::Cubic_spline_2<K>(t, d, false), {P(0, 0), P(5, 1)}, fair::Optimal_curve_report()};
+  c.r.status = fair::Optimal_curve_status::CONVERGED;
+  const nlohmann::json j = fair::io::family_to_json(c, "mock", {{"extra", 1}});
+  EXPECT_EQ(j["method"], "mock");
+  EXPECT_EQ(j["closed"], false);
+  EXPECT_EQ(j["points"][1], nlohmann::json::array({5.0, 1.0}));
+  EXPECT_EQ(j["status"], "converged");
+  EXPECT_EQ(j["report"], fair::io::to_json(c.r));
+  EXPECT_EQ(j["bspline"], fair::io::spline_to_json(c.s));
+  EXPECT_EQ(j["extra"], 1);
+  ASSERT_EQ(j["pieces"].size(), 2u);
+  EXPECT_EQ(j["pieces"], fair::io::curve_to_json(c.pieces())["pieces"]);
+  EXPECT_THROW(fair::io::family_to_json(c, "mock", {{"report", 1}}), fair::Precondition_error);
+  const Plain_curve plain{{P(0, 0), P(1, 1)}, {fair::Bezier_2<K>(std::vector<P>{P(0, 0), P(1, 1)})}};
+  const nlohmann::json k = fair::io::family_to_json(plain, "plain");
+  EXPECT_FALSE(k.contains("status"));
+  EXPECT_FALSE(k.contains("report"));
+  EXPECT_FALSE(k.contains("bspline"));
+  EXPECT_EQ(k["pieces"][0]["degree"], 1);
 }
 
 // ------------------------------------------------------------------ reports and spellings

@@ -80,14 +80,11 @@ std::string curve_json(const Kappa_command_options& o, const fair::Kappa_curve_2
   std::vector<nlohmann::json> per_piece;
   for (std::size_t j = 0; j < curve.number_of_pieces(); ++j)
     per_piece.push_back({{"point", curve.point_index(j)}, {"t", curve.t(j)}});
-  nlohmann::json extra{{"weights", fair::io::spelling(options.weights)},
-                       {"status", fair::io::spelling(curve.report().status)},
-                       {"report", fair::io::to_json(curve.report())}};
+  nlohmann::json extra{{"weights", fair::io::spelling(options.weights)}};
   if (options.weights == fair::Kappa_weights::FIXED) extra["fixed_weight"] = fair_curves::option_number(o.weights, "--weights");
   if (options.weights == fair::Kappa_weights::AUTOMATIC) extra["weight_clamp"] = options.weight_clamp;
   std::ostringstream out;
-  fair::io::write_json(out, fair::io::curve_to_json("kappa", options.closed, curve.points(), curve.pieces(), extra,
-                                                    per_piece));
+  fair::io::write_json(out, fair::io::family_to_json(curve, "kappa", extra, per_piece));
   return out.str();
 }
 

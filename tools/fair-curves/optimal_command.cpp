@@ -96,26 +96,22 @@ bool has_derivative_term(const fair::Optimal_curve_options& o) {
 
 /// The curve JSON of -o (fair::io::curve_to_json): the pieces of the spline through the optimal
 /// polygon with its "bspline", the status and the solve report, the polygon and its data.
-std::string curve_json(const fair::Optimal_curve_2<fair_curves::Kernel>& curve, const std::vector<fair_curves::Point_2>& points,
-                       const fair::Polygon_spline_runs<fair_curves::Kernel>& fit,
+std::string curve_json(const fair::Optimal_curve_2<fair_curves::Kernel>& curve,
                        const fair::Polygon_quintic_fit<fair_curves::Kernel>* quintic) {
   nlohmann::json polygon = nlohmann::json::array();
   for (const fair_curves::Point_2& p : curve.polygon()) polygon.push_back(fair::io::point_to_json(p, "polygon vertex"));
-  nlohmann::json extra{{"status", fair::io::spelling(curve.report().status)},
-                       {"report", fair::io::to_json(curve.report())},
-                       {"polygon", polygon},
+  nlohmann::json extra{{"polygon", polygon},
                        {"interpolation_indices", curve.interpolation_indices()},
                        {"curvatures", curve.curvatures()},
-                       {"fit_max_distance", fit.max_distance},
-                       // The C2 runs between corners as one NURBS with triple knots at the corners.
-                       {"bspline", fair::io::spline_runs_to_json(fit.splines, curve.options().closed)}};
+                       {"fit_max_distance", curve.spline().max_distance}};
   if (quintic) {
     nlohmann::json pieces = nlohmann::json::array();
     for (std::size_t i = 0; i < quintic->pieces.size(); ++i) pieces.push_back(fair::io::piece_to_json(quintic->pieces[i], i));
     extra["quintic"] = {{"pieces", pieces}, {"max_distance", quintic->max_distance}};
   }
   std::ostringstream out;
-  fair::io::write_json(out, fair::io::curve_to_json("optimal", curve.options().closed, points, fit.pieces(), extra));
+  // "bspline": the C2 runs between corners as one NURBS with triple knots at the corners.
+  fair::io::write_json(out, fair::io::family_to_json(curve, "optimal", extra));
   return out.str();
 }
 
@@ -146,12 +142,10 @@ void run_optimal(const Optimal_command_options& o) {
   options.constraints = fair::io::merge_constraint_files(constraints);
 
   const fair::Optimal_curve_2<Kernel> curve(data.points, options);
-  const fair::Polygon_spline_runs<Kernel> fit =
-      fair::fit_cubic_spline_runs<Kernel>(curve.polygon(), options.closed, curve.corner_vertices());
   std::unique_ptr<fair::Polygon_quintic_fit<Kernel>> quintic;
   if (has_derivative_term(options))
     quintic.reset(new fair::Polygon_quintic_fit<Kernel>(fair::fit_quintic_spline<Kernel>(curve.polygon(), options.closed)));
-  const std::string json_text = o.json_out.empty() ? std::string() : curve_json(curve, data.points, fit, quintic.get());
+  const std::string json_text = o.json_out.empty() ? std::string() : curve_json(curve, quintic.get());
   std::string svg_text;
   if (!o.svg_out.empty()) {
     Curve_case c;
@@ -159,9 +153,9 @@ void run_optimal(const Optimal_command_options& o) {
     c.title_in_figure = true;
     c.input_points = fair::io::to_xy(data.points);
     c.control_polygons = false;
-    svg_text = make_curve_figures(fit.pieces(), c).curve_svg;
+    svg_text = make_curve_figures(curve.pieces(), c).curve_svg;
   }
-  write_outputs(summary(o, curve, n, fit.max_distance), o.json_out, json_text, {{o.svg_out, svg_text}});
+  write_outputs(summary(o, curve, n, curve.spline().max_distance), o.json_out, json_text, {{o.svg_out, svg_text}});
   if (curve.report().status != fair::Optimal_curve_status::CONVERGED) {
     std::cerr << "fair-curves optimal: " << o.input << ": the solve is " << curve.report().status
               << " (outputs written; exit code " << not_converged_exit_code << ")\n";

@@ -13,10 +13,12 @@
 //   Curvature_discretisation regularised, circumcircle, turning_angle
 //   Point_constraint_kind   tangent, normal, corner
 //   Optimal_curve_status    converged, diverging, capped
+//   Cardinal_spline_status  optimal, given_alpha, no_optimum
 
 #ifndef FAIR_IO_ENUM_NAMES_H
 #define FAIR_IO_ENUM_NAMES_H
 
+#include <fair/Cardinal_spline_report.h>
 #include <fair/Errors.h>
 #include <fair/Kappa_curve_options.h>
 #include <fair/Kappa_curve_report.h>
@@ -65,6 +67,10 @@ FAIR_IO_SPELLINGS(Optimal_curve_status,
                   {Optimal_curve_status::CONVERGED, fair::to_string(Optimal_curve_status::CONVERGED)},
                   {Optimal_curve_status::DIVERGING, fair::to_string(Optimal_curve_status::DIVERGING)},
                   {Optimal_curve_status::CAPPED, fair::to_string(Optimal_curve_status::CAPPED)})
+FAIR_IO_SPELLINGS(Cardinal_spline_status,
+                  {Cardinal_spline_status::OPTIMAL, fair::to_string(Cardinal_spline_status::OPTIMAL)},
+                  {Cardinal_spline_status::GIVEN_ALPHA, fair::to_string(Cardinal_spline_status::GIVEN_ALPHA)},
+                  {Cardinal_spline_status::NO_OPTIMUM, fair::to_string(Cardinal_spline_status::NO_OPTIMUM)})
 
 /// The spelling of `value`. Throws Precondition_error for a value outside the table (a cast).
 template <class Enum>

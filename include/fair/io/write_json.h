@@ -17,6 +17,7 @@
 
 #include <fair/Cubic_spline_2.h>
 #include <fair/Curve_traits.h>
+#include <fair/Cardinal_spline_report.h>
 #include <fair/Errors.h>
 #include <fair/Kappa_curve_report.h>
 #include <fair/Optimal_curve_report.h>
@@ -259,6 +260,20 @@ inline nlohmann::json to_json(const Optimal_curve_report& r) {
                         {"levels", std::move(levels)}};
 }
 
+/// A Cardinal spline's report: {"status": "optimal" | "given_alpha" | "no_optimum", "alpha" (the
+/// alpha used), "aux_start", "aux_end" ([x, y]: the auxiliary points of an open curve; of a closed
+/// one its first and last point, as the report holds them), "energy" (eq. 10 at alpha)}. In an
+/// exact kernel the numbers that are not doubles are "p/q" strings (alpha* of data set 1 of [Li]:
+/// "9192/12241").
+template <class K>
+nlohmann::json to_json(const Cardinal_spline_report<K>& r) {
+  return nlohmann::json{{"status", spelling(r.status)},
+                        {"alpha", number_to_json(r.alpha, "alpha")},
+                        {"aux_start", point_to_json(r.aux_start, "aux_start")},
+                        {"aux_end", point_to_json(r.aux_end, "aux_end")},
+                        {"energy", number_to_json(r.energy, "energy")}};
+}
+
 /// The "bspline" member of the curve format: {"degree": 3, "closed": ..., "knots": [...],
 /// "control_points": [[x, y], ...], "weights": [...]} — the NURBS form of the spline
 /// (Cubic_spline_2::knot_vector() and its control points: clamped when open, the unclamped
@@ -339,6 +354,55 @@ nlohmann::json spline_curve_to_json(const Cubic_spline_2<K>& spline,
                           "overwrite the spline");
   out["bspline"] = spline_to_json(spline);
   return out;
+}
+
+namespace internal {
+
+template <class C, class = void>
+struct Has_report : std::false_type {};
+template <class C>
+struct Has_report<C, std::void_t<decltype(std::declval<const C&>().report())>> : std::true_type {};
+template <class C, class = void>
+struct Has_spline : std::false_type {};
+template <class C>
+struct Has_spline<C, std::void_t<decltype(std::declval<const C&>().spline())>> : std::true_type {};
+/// Splines joined at corners (fair::Polygon_spline_runs: the member `splines`).
+template <class S, class = void>
+struct Is_spline_runs : std::false_type {};
+template <class S>
+struct Is_spline_runs<S, std::void_t<decltype(std::declval<const S&>().splines)>> : std::true_type {};
+
+} // namespace internal
+
+/// The curve JSON of a curve of any family (doc/concepts.md): curve_to_json(method,
+/// curve.is_closed(), curve.points(), curve.pieces(), extra, piece_extra) plus, where the family
+/// has them, "bspline" (of curve.spline(): spline_to_json, or spline_runs_to_json for splines
+/// joined at corners) and "status" and "report" (to_json(curve.report())). The one writer of
+/// every family's pieces and B-spline, so that the program cannot disagree with itself.
+template <class Curve>
+nlohmann::json family_to_json(const Curve& curve, const std::string& method,
+                              const nlohmann::json& extra = nlohmann::json::object(),
+                              const std::vector<nlohmann::json>& piece_extra = {}) {
+  fair::internal::require(extra.is_object(), "fair::io::family_to_json: extra must be a JSON object, got ",
+                          extra.type_name());
+  nlohmann::json members = nlohmann::json::object();
+  if constexpr (internal::Has_report<Curve>::value) {
+    members["status"] = spelling(curve.report().status);
+    members["report"] = to_json(curve.report());
+  }
+  if constexpr (internal::Has_spline<Curve>::value) {
+    typedef std::decay_t<decltype(curve.spline())> Spline;
+    if constexpr (internal::Is_spline_runs<Spline>::value)
+      members["bspline"] = spline_runs_to_json(curve.spline().splines, curve.is_closed());
+    else
+      members["bspline"] = spline_to_json(curve.spline());
+  }
+  for (auto it = extra.begin(); it != extra.end(); ++it) {
+    fair::internal::require(!members.contains(it.key()), "fair::io::family_to_json: extra member \"", it.key(),
+                            "\" would overwrite a member of the curve");
+    members[it.key()] = it.value();
+  }
+  return curve_to_json(method, curve.is_closed(), curve.points(), curve.pieces(), members, piece_extra);
 }
 
 /// Throws Precondition_error if `j` holds a non-finite number anywhere (`path` names it).
