@@ -52,7 +52,7 @@ void construct(benchmark::State& state, fair::Knot_spacing spacing) {
   fair::Csr_spline_options o;
   o.knot_spacing = spacing;
   for (auto _ : state) {
-    const fair::Csr_spline_2<K> s(q, false, o);
+    const fair::Csr_spline_2<K> s(q, o);
     benchmark::DoNotOptimize(s.spline().control_points().data());
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));

@@ -54,7 +54,7 @@ std::vector<double> random_parameters(double t0, double t1, unsigned seed) {
 
 void BM_spline_point(benchmark::State& state) {
   const fair::Cubic_interpolating_spline_2<Kd> c(walk<Kd>(static_cast<std::size_t>(state.range(0)), 1),
-                                                 fair::Spline_end_condition::NATURAL, fair::Knot_spacing::CHORDAL);
+                                                 fair::Cubic_interpolating_spline_options{false, fair::Spline_end_condition::NATURAL, fair::Knot_spacing::CHORDAL});
   const fair::Cubic_spline_2<Kd>& s = c.spline();
   const std::vector<double> t = random_parameters(s.domain().first, s.domain().second, 2);
   for (auto _ : state)
@@ -66,7 +66,7 @@ BENCHMARK(BM_spline_point)->Arg(1000)->Arg(100000);
 // The classic interpolant's stored pieces: the same binary search, then Bezier_2::point.
 void BM_classic_pieces_point(benchmark::State& state) {
   const fair::Cubic_interpolating_spline_2<Kd> c(walk<Kd>(static_cast<std::size_t>(state.range(0)), 1),
-                                                 fair::Spline_end_condition::NATURAL, fair::Knot_spacing::CHORDAL);
+                                                 fair::Cubic_interpolating_spline_options{false, fair::Spline_end_condition::NATURAL, fair::Knot_spacing::CHORDAL});
   const std::vector<double>& u = c.knots();
   const std::vector<double> t = random_parameters(u.front(), u.back(), 2);
   for (auto _ : state)
@@ -81,8 +81,7 @@ BENCHMARK(BM_classic_pieces_point)->Arg(1000)->Arg(100000);
 
 void BM_spline_pieces(benchmark::State& state) {
   const std::size_t n = 100000;
-  const fair::Cubic_interpolating_spline_2<Kd> c(walk<Kd>(n, 3), fair::Spline_end_condition::NATURAL,
-                                                 fair::Knot_spacing::CHORDAL);
+  const fair::Cubic_interpolating_spline_2<Kd> c(walk<Kd>(n, 3), fair::Cubic_interpolating_spline_options{false, fair::Spline_end_condition::NATURAL, fair::Knot_spacing::CHORDAL});
   const fair::Cubic_spline_2<Kd>& s = c.spline();
   const bool rational = state.range(0) == 1;
   std::vector<double> w(s.number_of_control_points());
@@ -97,16 +96,14 @@ void BM_spline_pieces(benchmark::State& state) {
 BENCHMARK(BM_spline_pieces)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_spline_knot_insertion(benchmark::State& state) {
-  const fair::Cubic_interpolating_spline_2<Kd> c(walk<Kd>(100000, 4), fair::Spline_end_condition::NATURAL,
-                                                 fair::Knot_spacing::UNIFORM);
+  const fair::Cubic_interpolating_spline_2<Kd> c(walk<Kd>(100000, 4), fair::Cubic_interpolating_spline_options{false, fair::Spline_end_condition::NATURAL, fair::Knot_spacing::UNIFORM});
   const fair::Cubic_spline_2<Kd>& s = c.spline();
   for (auto _ : state) benchmark::DoNotOptimize(s.with_knot_inserted(50000.5));
 }
 BENCHMARK(BM_spline_knot_insertion)->Unit(benchmark::kMillisecond);
 
 void BM_spline_point_epeck(benchmark::State& state) {
-  const fair::Cubic_interpolating_spline_2<Epeck> c(walk<Epeck>(1000, 5), fair::Spline_end_condition::NATURAL,
-                                                    fair::Knot_spacing::UNIFORM);
+  const fair::Cubic_interpolating_spline_2<Epeck> c(walk<Epeck>(1000, 5), fair::Cubic_interpolating_spline_options{false, fair::Spline_end_condition::NATURAL, fair::Knot_spacing::UNIFORM});
   const fair::Cubic_spline_2<Epeck>& s = c.spline();
   std::vector<Epeck::FT> t;
   for (int k = 0; k < 1000; ++k) t.push_back(Epeck::FT(k * 999) / Epeck::FT(1000));

@@ -58,15 +58,17 @@ extern "C" int FAIR_FUZZ_ENTRY(classic)(const std::uint8_t* data, std::size_t si
       case 0: {
         const std::size_t end = (variant >> 2) % 4;  // natural, clamped, periodic, not-a-knot
         if (end == 1) {
-          const fair::Cubic_interpolating_spline_2<K> s(p, Vector_2(a, b), Vector_2(c, d), spacing);
+          const fair::Cubic_interpolating_spline_2<K> s(
+              p, Vector_2(a, b), Vector_2(c, d), fair::Cubic_interpolating_spline_options{false, fair::Spline_end_condition::CLAMPED, spacing});
           fair_fuzz::check_pieces(s.pieces());
           check_knots_and_derivatives(s);
           check_spline(s.spline());
         } else {
-          const fair::Cubic_interpolating_spline_2<K> s(
-              p, end == 0 ? fair::Spline_end_condition::NATURAL
-                        : end == 2 ? fair::Spline_end_condition::PERIODIC : fair::Spline_end_condition::NOT_A_KNOT,
-              spacing);
+          fair::Cubic_interpolating_spline_options o;  // periodic: closed
+          o.closed = end == 2;
+          o.end_condition = end == 3 ? fair::Spline_end_condition::NOT_A_KNOT : fair::Spline_end_condition::NATURAL;
+          o.knot_spacing = spacing;
+          const fair::Cubic_interpolating_spline_2<K> s(p, o);
           fair_fuzz::check_pieces(s.pieces());
           check_knots_and_derivatives(s);
           check_spline(s.spline());
@@ -75,41 +77,45 @@ extern "C" int FAIR_FUZZ_ENTRY(classic)(const std::uint8_t* data, std::size_t si
       }
       case 1: {
         if (variant & 4) {
-          const fair::Catmull_rom_2<K> s(p, Point_2(a, b), Point_2(c, d), spacing);
+          const fair::Catmull_rom_2<K> s(p, Point_2(a, b), Point_2(c, d), fair::Catmull_rom_options{false, spacing});
           fair_fuzz::check_pieces(s.pieces());
           check_knots_and_derivatives(s);
         } else {
-          const fair::Catmull_rom_2<K> s(p, closed, spacing);
+          const fair::Catmull_rom_2<K> s(p, fair::Catmull_rom_options{closed, spacing});
           fair_fuzz::check_pieces(s.pieces());
           check_knots_and_derivatives(s);
         }
         break;
       }
       case 2: {
-        const fair::Cubic_bspline_2<K> s(p, closed,
-                                         (variant & 4) ? fair::Cubic_bspline_ends::TRIMMED
-                                                       : fair::Cubic_bspline_ends::INTERPOLATE_END_POINTS);
+        const fair::Cubic_bspline_2<K> s(
+            p, fair::Cubic_bspline_options{closed, (variant & 4) ? fair::Cubic_bspline_ends::TRIMMED
+                                                                 : fair::Cubic_bspline_ends::INTERPOLATE_END_POINTS});
         fair_fuzz::check_pieces(s.pieces());
         check_spline(s.spline());
         for (const Point_2& q : s.control_polygon()) fair_fuzz::require_finite_point(q, "control polygon");
         break;
       }
       case 3: {
-        const fair::Cubic_quasi_interpolant_2<K> s(p, closed);
+        const fair::Cubic_quasi_interpolant_2<K> s(p, fair::Cubic_quasi_interpolant_options{closed});
         fair_fuzz::check_pieces(s.pieces());
         check_spline(s.spline());
         for (const Point_2& q : s.control_polygon()) fair_fuzz::require_finite_point(q, "control polygon");
         break;
       }
       default: {
+        fair::Four_point_subdivision_options o;
+        o.closed = closed;
+        o.rounds = rounds;  // the pieces are the polyline after these rounds
         if (variant & 4) {
-          const fair::Four_point_subdivision_2<K> s(p, closed, fair::Four_point_variant::RELAXED,
-                                                    (variant & 8) ? a : -3.0 / 128.0);
-          for (const Point_2& q : s.refine(rounds)) fair_fuzz::require_finite_point(q, "refined point");
+          o.variant = fair::Four_point_variant::RELAXED;
+          o.relaxation = (variant & 8) ? a : -3.0 / 128.0;
         } else {
-          const fair::Four_point_subdivision_2<K> s(p, closed, (variant & 8) ? a : 1.0 / 16.0);
-          for (const Point_2& q : s.refine(rounds)) fair_fuzz::require_finite_point(q, "refined point");
+          o.tension = (variant & 8) ? a : 1.0 / 16.0;
         }
+        const fair::Four_point_subdivision_2<K> s(p, o);
+        for (const Point_2& q : s.polyline()) fair_fuzz::require_finite_point(q, "refined point");
+        fair_fuzz::check_pieces(s.pieces());
         break;
       }
     }

@@ -49,10 +49,11 @@ extern "C" int FAIR_FUZZ_ENTRY(csr)(const std::uint8_t* data, std::size_t size) 
       u = b < 200 ? u + (1 + b) * std::ldexp(1.0, static_cast<int>(b % 7) * 10 - 30) : in.number();
     }
   }
+  opt.closed = closed;
   return fair_fuzz::run_guarded([&] {
     if (given)
-      check_csr(fair::Csr_spline_2<K>(p, t, closed, opt));
+      check_csr(fair::Csr_spline_2<K>(p, t, opt));
     else
-      check_csr(fair::Csr_spline_2<K>(p, closed, opt));
+      check_csr(fair::Csr_spline_2<K>(p, opt));
   });
 }

@@ -26,6 +26,27 @@ namespace {
 
 using namespace fair_test;
 
+// The options the tests build most often (doc/concepts.md: closed is an option of every family).
+fair::Cubic_bspline_options bspline_options(bool closed,
+                                            fair::Cubic_bspline_ends ends = fair::Cubic_bspline_ends::INTERPOLATE_END_POINTS) {
+  fair::Cubic_bspline_options o;
+  o.closed = closed;
+  o.ends = ends;
+  return o;
+}
+fair::Cubic_quasi_interpolant_options quasi_options(bool closed) {
+  fair::Cubic_quasi_interpolant_options o;
+  o.closed = closed;
+  return o;
+}
+fair::Four_point_subdivision_options four_point_options(
+    bool closed, fair::Four_point_variant variant = fair::Four_point_variant::INTERPOLATORY) {
+  fair::Four_point_subdivision_options o;
+  o.closed = closed;
+  o.variant = variant;
+  return o;
+}
+
 // C2 at every join of a sequence of pieces on uniform knots (all pieces have h = 1).
 template <class K, class Piece>
 void check_c2_joins(const std::vector<Piece>& pieces, bool closed) {
@@ -70,7 +91,8 @@ TYPED_TEST(Classic_approximants, BsplineKnotValuesContinuityAndEnds) {
     const std::size_t n = 4 + static_cast<std::size_t>(trial % 7);
     const auto p = random_points<K>(rng, n);
     // Closed: n pieces, piece i starts at the knot value (p_{i-1} + 4 p_i + p_{i+1})/6.
-    fair::Cubic_bspline_2<K> closed(p, true);
+    fair::Cubic_bspline_2<K> closed(p, bspline_options(true));
+    EXPECT_TRUE(closed.is_closed());
     ASSERT_EQ(closed.pieces().size(), n);
     for (std::size_t i = 0; i < n; ++i) {
       const P& a = p[(i + n - 1) % n];
@@ -88,7 +110,7 @@ TYPED_TEST(Classic_approximants, BsplineKnotValuesContinuityAndEnds) {
     EXPECT_TRUE(same<K>(open.pieces().back().second_derivative(FT(1)), typename K::Vector_2(0, 0), 1e-11)) << "end c''";
     check_c2_joins<K>(open.pieces(), false);
     // Trimmed: n - 3 pieces, from (p0 + 4 p1 + p2)/6.
-    fair::Cubic_bspline_2<K> trimmed(p, false, fair::Cubic_bspline_ends::TRIMMED);
+    fair::Cubic_bspline_2<K> trimmed(p, bspline_options(false, fair::Cubic_bspline_ends::TRIMMED));
     ASSERT_EQ(trimmed.pieces().size(), n - 3);
     EXPECT_TRUE(same<K>(trimmed.pieces()[0].point(FT(0)), P((p[0].x() + 4 * p[1].x() + p[2].x()) / 6, (p[0].y() + 4 * p[1].y() + p[2].y()) / 6), 1e-11)) << "trimmed start";
     check_c2_joins<K>(trimmed.pieces(), false);
@@ -111,7 +133,7 @@ TYPED_TEST(Classic_approximants, BsplineReproducesLinesAndShiftsQuadratics) {
     const FT u = FT(static_cast<int>(i)) + FT(1) / 3;
     EXPECT_TRUE(same<K>(bl.pieces()[i].point(FT(1) / 3), P(3 * u - 2, FT(1) - u / 4), 1e-11)) << "line";
   }
-  fair::Cubic_bspline_2<K> bq(quad, false, fair::Cubic_bspline_ends::TRIMMED);
+  fair::Cubic_bspline_2<K> bq(quad, bspline_options(false, fair::Cubic_bspline_ends::TRIMMED));
   for (std::size_t i = 0; i < bq.pieces().size(); ++i) {
     const FT u = FT(static_cast<int>(i) + 1) + FT(2) / 5;  // trimmed piece i spans [i+1, i+2]
     EXPECT_TRUE(same<K>(bq.pieces()[i].point(FT(2) / 5), q(u) + typename K::Vector_2(FT(1) / 6, 1), 1e-11)) << "quadratic";
@@ -167,7 +189,8 @@ TYPED_TEST(Classic_approximants, QuasiInterpolantKnotValuesOnRandomClosedData) {
   for (int trial = 0; trial < trials; ++trial) {
     const std::size_t n = 3 + static_cast<std::size_t>(trial % 8);
     const auto p = random_points<K>(rng, n);
-    fair::Cubic_quasi_interpolant_2<K> c(p, true);
+    fair::Cubic_quasi_interpolant_2<K> c(p, quasi_options(true));
+    EXPECT_TRUE(c.is_closed() && c.options().closed);
     ASSERT_EQ(c.pieces().size(), n);
     for (std::size_t i = 0; i < n; ++i)
       EXPECT_TRUE(same<K>(c.pieces()[i].point(FT(0)), p[i] - fourth_difference<K>(p, i) / FT(36), 1e-11)) << "p_i - D4/36";
@@ -187,11 +210,11 @@ TYPED_TEST(Classic_approximants, BsplineAndQuasiInterpolantRejectBadInput) {
   typedef fair::Cubic_bspline_2<K> B;
   typedef fair::Cubic_quasi_interpolant_2<K> Q;
   EXPECT_THROW(B({P(0, 0)}), fair::Invalid_input_error);
-  EXPECT_THROW(B({P(0, 0), P(1, 0), P(2, 2)}, false, fair::Cubic_bspline_ends::TRIMMED), fair::Invalid_input_error);
-  EXPECT_THROW(B({P(0, 0), P(1, 0)}, true), fair::Invalid_input_error);
+  EXPECT_THROW(B({P(0, 0), P(1, 0), P(2, 2)}, bspline_options(false, fair::Cubic_bspline_ends::TRIMMED)), fair::Invalid_input_error);
+  EXPECT_THROW(B({P(0, 0), P(1, 0)}, bspline_options(true)), fair::Invalid_input_error);
   EXPECT_THROW(B({P(0, 0), P(1, 0), P(1, 0)}), fair::Invalid_input_error);
   EXPECT_THROW(Q({P(0, 0), P(1, 0), P(2, 2)}), fair::Invalid_input_error);
-  EXPECT_THROW(Q({P(0, 0), P(1, 0), P(2, 2), P(0, 0)}, true), fair::Invalid_input_error);
+  EXPECT_THROW(Q({P(0, 0), P(1, 0), P(2, 2), P(0, 0)}, quasi_options(true)), fair::Invalid_input_error);
   EXPECT_THROW(Q({P(0, 0), P(1, 0), P(2, 2), P(2, 2), P(3, 3)}), fair::Invalid_input_error);
   if (!is_exact<K>()) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -221,7 +244,7 @@ TYPED_TEST(Classic_approximants, FourPointByHand) {
   ASSERT_EQ(r.size(), 9u);
   EXPECT_TRUE(same<K>(r[3], P(FT(3) / 2, FT(9) / 16), 1e-11)) << "DLG edge point";
   EXPECT_TRUE(same<K>(r[4], p[2], 1e-11)) << "DLG keeps p2";
-  fair::Four_point_subdivision_2<K> rel(p, false, fair::Four_point_variant::RELAXED);
+  fair::Four_point_subdivision_2<K> rel(p, four_point_options(false, fair::Four_point_variant::RELAXED));
   const auto s = rel.refine(1);
   ASSERT_EQ(s.size(), 9u);
   EXPECT_TRUE(same<K>(s[3], P(FT(3) / 2, FT(9) / 16), 1e-11)) << "relaxed edge point";
@@ -243,7 +266,7 @@ TYPED_TEST(Classic_approximants, FourPointReproducesCubics) {
   const std::size_t rounds = is_exact<K>() ? 3 : 5;
   const FT step = FT(1) / FT(1 << rounds);
   for (auto v : {fair::Four_point_variant::INTERPOLATORY, fair::Four_point_variant::RELAXED}) {
-    fair::Four_point_subdivision_2<K> s(p, false, v);
+    fair::Four_point_subdivision_2<K> s(p, four_point_options(false, v));
     const auto r = s.refine(rounds);
     ASSERT_EQ(r.size(), s.size_after(rounds));
     ASSERT_EQ(r.size(), 5u * (1u << rounds) + 1);
@@ -261,10 +284,20 @@ TYPED_TEST(Classic_approximants, FourPointInterpolatesRandomData) {
     const std::size_t n = 4 + static_cast<std::size_t>(trial % 6);
     const auto p = random_points<K>(rng, n);
     for (bool closed : {false, true}) {
-      fair::Four_point_subdivision_2<K> s(p, closed, typename K::FT(1) / 10);
+      fair::Four_point_subdivision_options o = four_point_options(closed);
+      o.tension = 0.1;
+      o.rounds = rounds;
+      fair::Four_point_subdivision_2<K> s(p, o);
       const auto r = s.refine(rounds);
       ASSERT_EQ(r.size(), closed ? n << rounds : ((n - 1) << rounds) + 1);
       for (std::size_t i = 0; i < n; ++i) EXPECT_TRUE(r[i << rounds] == p[i]) << "interpolates p_" << i;
+      // The contract's pieces: the segments of refine(options().rounds), closing when closed.
+      EXPECT_TRUE(s.polyline() == r);
+      ASSERT_EQ(s.number_of_pieces(), closed ? r.size() : r.size() - 1);
+      for (std::size_t j = 0; j < s.number_of_pieces(); ++j) {
+        ASSERT_EQ(s.pieces()[j].degree(), 1u);
+        EXPECT_TRUE(s.pieces()[j].source() == r[j] && s.pieces()[j].target() == r[(j + 1) % r.size()]) << j;
+      }
     }
   }
 }
@@ -276,12 +309,25 @@ TYPED_TEST(Classic_approximants, FourPointRejectsBadInput) {
   typedef fair::Four_point_subdivision_2<K> S;
   const std::vector<P> ok = {P(0, 0), P(1, 0), P(2, 1), P(3, 0)};
   EXPECT_THROW(S({P(0, 0), P(1, 0), P(2, 1)}), fair::Invalid_input_error);
-  EXPECT_THROW(S({P(0, 0), P(1, 0)}, true), fair::Invalid_input_error);
+  EXPECT_THROW(S({P(0, 0), P(1, 0)}, four_point_options(true)), fair::Invalid_input_error);
   EXPECT_THROW(S({P(0, 0), P(1, 0), P(1, 0), P(3, 0)}), fair::Invalid_input_error);
-  EXPECT_THROW(S(ok, false, FT(0)), fair::Precondition_error);
-  EXPECT_THROW(S(ok, false, FT(1) / 5), fair::Precondition_error);
-  EXPECT_THROW(S(ok, false, fair::Four_point_variant::RELAXED, FT(1) / 10), fair::Precondition_error);
-  EXPECT_THROW(S(ok, false, fair::Four_point_variant::RELAXED, FT(-1) / 8), fair::Precondition_error);
+  fair::Four_point_subdivision_options o = four_point_options(false);
+  o.tension = 0;
+  EXPECT_THROW(S(ok, o), fair::Precondition_error);
+  o.tension = 0.2;
+  EXPECT_THROW(S(ok, o), fair::Precondition_error);
+  o = four_point_options(false, fair::Four_point_variant::RELAXED);
+  o.relaxation = 0.1;
+  EXPECT_THROW(S(ok, o), fair::Precondition_error);
+  o.relaxation = -0.125;
+  EXPECT_THROW(S(ok, o), fair::Precondition_error);
+  o.relaxation = -3.0 / 128;
+  o.tension = 0.1;  // the relaxed scheme is derived for w = 1/16 only
+  EXPECT_THROW(S(ok, o), fair::Precondition_error);
+  o = four_point_options(false);
+  o.rounds = S::max_rounds + 1;
+  EXPECT_THROW(S(ok, o), fair::Precondition_error);
+  EXPECT_TRUE(S(ok, four_point_options(false, fair::Four_point_variant::RELAXED)).relaxation() == FT(-3) / FT(128));
   const S s(ok);
   EXPECT_THROW(s.refine(S::max_rounds + 1), fair::Precondition_error);
   EXPECT_THROW(s.round({P(0, 0), P(1, 0), P(2, 1)}), fair::Precondition_error);
@@ -334,9 +380,9 @@ TEST(Classic_four_point, SuccessiveRoundsConvergeC1AndRelaxedC2) {
   std::mt19937 rng(2026);
   for (int trial = 0; trial < 20; ++trial) {
     const auto p = random_points<SC_double>(rng, 6 + static_cast<std::size_t>(trial % 10));
-    const auto dlg = round_statistics(fair::Four_point_subdivision_2<SC_double>(p, true), 12);
+    const auto dlg = round_statistics(fair::Four_point_subdivision_2<SC_double>(p, four_point_options(true)), 12);
     const auto rel = round_statistics(
-        fair::Four_point_subdivision_2<SC_double>(p, true, fair::Four_point_variant::RELAXED), 12);
+        fair::Four_point_subdivision_2<SC_double>(p, four_point_options(true, fair::Four_point_variant::RELAXED)), 12);
     for (std::size_t k = 3; k + 1 < dlg.size(); ++k) {
       // C1: the tangent estimates move less and less (geometric, ratio about 1/2).
       EXPECT_LT(dlg[k + 1].first, 0.75 * dlg[k].first) << "DLG round " << k << " trial " << trial;

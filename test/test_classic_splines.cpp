@@ -24,6 +24,27 @@ namespace {
 
 using namespace fair_test;
 
+// The options the tests build most often (doc/concepts.md: closed is an option of every family).
+fair::Cubic_interpolating_spline_options spline_options(fair::Spline_end_condition end,
+                                                        fair::Knot_spacing spacing = fair::Knot_spacing::UNIFORM) {
+  fair::Cubic_interpolating_spline_options o;
+  o.end_condition = end;
+  o.knot_spacing = spacing;
+  return o;
+}
+fair::Cubic_interpolating_spline_options periodic_options(fair::Knot_spacing spacing = fair::Knot_spacing::UNIFORM) {
+  fair::Cubic_interpolating_spline_options o;
+  o.closed = true;
+  o.knot_spacing = spacing;
+  return o;
+}
+fair::Catmull_rom_options cr_options(bool closed, fair::Knot_spacing spacing = fair::Knot_spacing::UNIFORM) {
+  fair::Catmull_rom_options o;
+  o.closed = closed;
+  o.knot_spacing = spacing;
+  return o;
+}
+
 const fair::Knot_spacing all_spacings[] = {fair::Knot_spacing::UNIFORM, fair::Knot_spacing::CENTRIPETAL,
                                            fair::Knot_spacing::CHORDAL};
 
@@ -98,8 +119,7 @@ TYPED_TEST(Classic_splines, PeriodicSplineThroughSquareByHand) {
   typedef TypeParam K;
   typedef typename K::FT FT;
   typedef typename K::Point_2 P;
-  fair::Cubic_interpolating_spline_2<K> s({P(1, 0), P(0, 1), P(-1, 0), P(0, -1)},
-                                          fair::Spline_end_condition::PERIODIC);
+  fair::Cubic_interpolating_spline_2<K> s({P(1, 0), P(0, 1), P(-1, 0), P(0, -1)}, periodic_options());
   ASSERT_EQ(s.pieces().size(), 4u);
   EXPECT_TRUE(s.is_closed());
   EXPECT_TRUE(same<K>(s.derivatives()[0], typename K::Vector_2(0, FT(3) / 2), 1e-11)) << "m0";
@@ -119,14 +139,15 @@ TYPED_TEST(Classic_splines, NaturalClampedPeriodicOnRandomData) {
     const std::size_t n = 2 + static_cast<std::size_t>(trial % 9);
     const auto p = random_points<K>(rng, n);
     for (fair::Knot_spacing sp : all_spacings) {
-      fair::Cubic_interpolating_spline_2<K> nat(p, fair::Spline_end_condition::NATURAL, sp);
+      fair::Cubic_interpolating_spline_2<K> nat(p, spline_options(fair::Spline_end_condition::NATURAL, sp));
       check_interpolation_and_continuity<K>(nat, 2);
       // Natural ends: zero second derivative.
       EXPECT_TRUE(same<K>(nat.pieces().front().second_derivative(FT(0)), V(0, 0), 1e-11)) << "natural start";
       EXPECT_TRUE(same<K>(nat.pieces().back().second_derivative(FT(1)), V(0, 0), 1e-11)) << "natural end";
 
       const V t0(FT(3) / 2, FT(-1) / 4), t1(FT(-2), FT(5) / 8);
-      fair::Cubic_interpolating_spline_2<K> cl(p, t0, t1, sp);
+      fair::Cubic_interpolating_spline_2<K> cl(p, t0, t1, spline_options(fair::Spline_end_condition::NATURAL, sp));
+      EXPECT_EQ(cl.options().end_condition, fair::Spline_end_condition::CLAMPED);
       check_interpolation_and_continuity<K>(cl, 2);
       const auto& u = cl.knots();
       const FT h0 = u[1] - u[0], hn = u.back() - u[u.size() - 2];
@@ -135,7 +156,7 @@ TYPED_TEST(Classic_splines, NaturalClampedPeriodicOnRandomData) {
       EXPECT_TRUE(same<K>(cl.pieces().back().derivative(FT(1)), t1 * hn, 1e-11)) << "clamped end";
 
       if (n >= 3) {
-        fair::Cubic_interpolating_spline_2<K> per(p, fair::Spline_end_condition::PERIODIC, sp);
+        fair::Cubic_interpolating_spline_2<K> per(p, periodic_options(sp));
         check_interpolation_and_continuity<K>(per, 2);
         EXPECT_TRUE(per.pieces().back().point(FT(1)) == p.front()) << "periodic closure";
       }
@@ -180,7 +201,7 @@ TYPED_TEST(Classic_splines, NotAKnotSplineReproducesCubicsAndParabolas) {
   for (int last = 3; last <= 7; ++last) {  // 4 .. 8 points
     std::vector<P> p;
     for (int i = 0; i <= last; ++i) p.push_back(q(FT(i)));
-    fair::Cubic_interpolating_spline_2<K> s(p, nak);
+    fair::Cubic_interpolating_spline_2<K> s(p, spline_options(nak));
     check_interpolation_and_continuity<K>(s, 2);
     for (std::size_t i = 0; i < s.pieces().size(); ++i)
       for (int k = 0; k <= 4; ++k)
@@ -188,12 +209,12 @@ TYPED_TEST(Classic_splines, NotAKnotSplineReproducesCubicsAndParabolas) {
             << "cubic, " << last + 1 << " points, piece " << i;
   }
   auto parabola = [](const FT& u) { return P(3 * u * u - u + 2, -u * u + 4); };
-  fair::Cubic_interpolating_spline_2<K> s3({parabola(FT(0)), parabola(FT(1)), parabola(FT(2))}, nak);
+  fair::Cubic_interpolating_spline_2<K> s3({parabola(FT(0)), parabola(FT(1)), parabola(FT(2))}, spline_options(nak));
   for (std::size_t i = 0; i < 2; ++i)
     for (int k = 0; k <= 4; ++k)
       EXPECT_TRUE(same<K>(s3.pieces()[i].point(FT(k) / 4), parabola(FT(static_cast<int>(i)) + FT(k) / 4), 1e-11))
           << "parabola";
-  fair::Cubic_interpolating_spline_2<K> s2({P(1, 2), P(4, -2)}, nak);
+  fair::Cubic_interpolating_spline_2<K> s2({P(1, 2), P(4, -2)}, spline_options(nak));
   EXPECT_TRUE(same<K>(s2.pieces()[0].point(FT(1) / 4), P(FT(7) / 4, 1), 1e-11)) << "segment";
   EXPECT_TRUE(same<K>(s2.pieces()[0].point(FT(1) / 2), P(FT(5) / 2, 0), 1e-11)) << "segment";
 
@@ -205,7 +226,7 @@ TYPED_TEST(Classic_splines, NotAKnotSplineReproducesCubicsAndParabolas) {
     for (int round = 0; round < 4; ++round) {
       std::vector<P> p;
       for (int i = 0; i < 5 + round; ++i) p.push_back(P(FT(coordinate(rng)), FT(coordinate(rng))));
-      fair::Cubic_interpolating_spline_2<K> s(p, nak, sp);
+      fair::Cubic_interpolating_spline_2<K> s(p, spline_options(nak, sp));
       check_interpolation_and_continuity<K>(s, 2);
       const auto& b = s.pieces();
       const auto& u = s.knots();
@@ -230,7 +251,7 @@ TYPED_TEST(Classic_splines, LongNaturalAndPeriodicSplinesStayExact) {
   const auto p = random_points<K>(rng, 520);
   fair::Cubic_interpolating_spline_2<K> nat(p);
   check_interpolation_and_continuity<K>(nat, 2);
-  fair::Cubic_interpolating_spline_2<K> per(p, fair::Spline_end_condition::PERIODIC);
+  fair::Cubic_interpolating_spline_2<K> per(p, periodic_options());
   check_interpolation_and_continuity<K>(per, 2);
 }
 
@@ -243,9 +264,9 @@ TYPED_TEST(Classic_splines, CollinearDataStayOnTheLine) {
   std::vector<P> p;
   for (int x : {0, 1, 3, 4, 9, 10, 14}) p.push_back(P(FT(x), FT(2 * x + 1)));
   const P a(0, 1), b(1, 3);
-  for (fair::Spline_end_condition e : {fair::Spline_end_condition::NATURAL, fair::Spline_end_condition::PERIODIC}) {
-    fair::Cubic_interpolating_spline_2<K> s(p, e);
-    fair::Catmull_rom_2<K> c(p, e == fair::Spline_end_condition::PERIODIC);
+  for (const bool closed : {false, true}) {
+    fair::Cubic_interpolating_spline_2<K> s(p, closed ? periodic_options() : spline_options(fair::Spline_end_condition::NATURAL));
+    fair::Catmull_rom_2<K> c(p, cr_options(closed));
     for (const auto* pieces : {&s.pieces(), &c.pieces()})
       for (const auto& piece : *pieces)
         for (const P& q : piece.control_points()) {
@@ -270,9 +291,9 @@ TYPED_TEST(Classic_splines, TinyAndHugeCoordinates) {
     std::vector<P> p;
     for (const P& q : base) p.push_back(P(q.x() * scale, q.y() * scale));
     for (fair::Knot_spacing sp : all_spacings) {
-      fair::Cubic_interpolating_spline_2<K> s0(base, fair::Spline_end_condition::NATURAL, sp);
-      fair::Cubic_interpolating_spline_2<K> s1(p, fair::Spline_end_condition::NATURAL, sp);
-      fair::Catmull_rom_2<K> c0(base, true, sp), c1(p, true, sp);
+      fair::Cubic_interpolating_spline_2<K> s0(base, spline_options(fair::Spline_end_condition::NATURAL, sp));
+      fair::Cubic_interpolating_spline_2<K> s1(p, spline_options(fair::Spline_end_condition::NATURAL, sp));
+      fair::Catmull_rom_2<K> c0(base, cr_options(true, sp)), c1(p, cr_options(true, sp));
       for (std::size_t i = 0; i < s0.pieces().size(); ++i) {
         const P a = s0.pieces()[i].point(FT(0.3)), b = s1.pieces()[i].point(FT(0.3));
         EXPECT_NEAR(CGAL::to_double(b.x()) / scale, CGAL::to_double(a.x()), 1e-9 * (1 + std::fabs(CGAL::to_double(a.x()))));
@@ -292,18 +313,22 @@ TYPED_TEST(Classic_splines, SplineRejectsBadInput) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   EXPECT_THROW(S({P(0, 0)}), fair::Invalid_input_error);
-  EXPECT_THROW(S({P(0, 0), P(1, 0)}, fair::Spline_end_condition::PERIODIC), fair::Invalid_input_error);
+  EXPECT_THROW(S({P(0, 0), P(1, 0)}, periodic_options()), fair::Invalid_input_error);
   EXPECT_THROW(S({P(0, 0), P(1, 0), P(1, 0), P(2, 1)}), fair::Invalid_input_error);
-  EXPECT_THROW(S({P(0, 0), P(1, 0), P(1, 1), P(0, 0)}, fair::Spline_end_condition::PERIODIC),
+  EXPECT_THROW(S({P(0, 0), P(1, 0), P(1, 1), P(0, 0)}, periodic_options()),
                fair::Invalid_input_error);
-  EXPECT_THROW(S({P(0, 0), P(1, 0)}, fair::Spline_end_condition::CLAMPED), fair::Precondition_error);
+  EXPECT_THROW(S({P(0, 0), P(1, 0)}, spline_options(fair::Spline_end_condition::CLAMPED)), fair::Precondition_error);
+  // The one rule for closed curves: periodic, the end condition ignored; no end derivatives.
+  fair::Cubic_interpolating_spline_options closed_clamped = periodic_options();
+  closed_clamped.end_condition = fair::Spline_end_condition::CLAMPED;
+  EXPECT_TRUE(S({P(0, 0), P(1, 0), P(1, 1)}, closed_clamped).is_closed());
+  EXPECT_THROW(S({P(0, 0), P(1, 0), P(1, 1)}, V(1, 0), V(0, 1), periodic_options()), fair::Precondition_error);
   if (!is_exact<K>()) {  // NaN and infinity exist only in the double kernels
     EXPECT_THROW(S({P(0, 0), P(nan, 1), P(2, 0)}), fair::Invalid_input_error);
     EXPECT_THROW(S({P(0, 0), P(1, inf), P(2, 0)}), fair::Invalid_input_error);
     EXPECT_THROW(S({P(0, 0), P(1, 1)}, V(nan, 0), V(1, 0)), fair::Invalid_input_error);
     // Finite but too large: the chord length overflows double, and so does 3 (p1 - p0).
-    EXPECT_THROW(S({P(-1e308, 0), P(1e308, 0), P(1e308, 1)}, fair::Spline_end_condition::NATURAL,
-                   fair::Knot_spacing::CHORDAL),
+    EXPECT_THROW(S({P(-1e308, 0), P(1e308, 0), P(1e308, 1)}, spline_options(fair::Spline_end_condition::NATURAL, fair::Knot_spacing::CHORDAL)),
                  fair::Invalid_input_error);
     EXPECT_THROW(S({P(-1e308, 0), P(1e308, 0), P(1e308, 1)}), fair::Invalid_input_error);
   }
@@ -370,7 +395,7 @@ TYPED_TEST(Classic_splines, CatmullRomChordalOnCollinearData) {
   typedef typename K::FT FT;
   typedef typename K::Point_2 P;
   const std::vector<P> p = {P(0, 0), P(3, 4), P(9, 12), P(12, 16)};
-  fair::Catmull_rom_2<K> c(p, false, fair::Knot_spacing::CHORDAL);
+  fair::Catmull_rom_2<K> c(p, cr_options(false, fair::Knot_spacing::CHORDAL));
   EXPECT_TRUE(same<K>(c.knots()[2], FT(15), 1e-11)) << "knot u_2";
   for (std::size_t i = 0; i < 3; ++i) {
     EXPECT_TRUE(same<K>(c.derivatives()[i], typename K::Vector_2(FT(3) / 5, FT(4) / 5), 1e-11)) << "unit tangent";
@@ -378,7 +403,7 @@ TYPED_TEST(Classic_splines, CatmullRomChordalOnCollinearData) {
     EXPECT_TRUE(same<K>(mid, p[i] + (p[i + 1] - p[i]) / 4, 1e-11)) << "unit speed";
   }
   // Centripetal knots are sqrt(5), sqrt(10), sqrt(5): not representable, but C1 in u holds.
-  fair::Catmull_rom_2<K> cc(p, false, fair::Knot_spacing::CENTRIPETAL);
+  fair::Catmull_rom_2<K> cc(p, cr_options(false, fair::Knot_spacing::CENTRIPETAL));
   check_interpolation_and_continuity<K>(cc, 1);
 }
 
@@ -392,8 +417,8 @@ TYPED_TEST(Classic_splines, CatmullRomRandomOpenClosedAndAuxiliaryPoints) {
     const std::size_t n = 3 + static_cast<std::size_t>(trial % 8);
     const auto p = random_points<K>(rng, n);
     for (fair::Knot_spacing sp : all_spacings) {
-      check_interpolation_and_continuity<K>(fair::Catmull_rom_2<K>(p, false, sp), 1);
-      check_interpolation_and_continuity<K>(fair::Catmull_rom_2<K>(p, true, sp), 1);
+      check_interpolation_and_continuity<K>(fair::Catmull_rom_2<K>(p, cr_options(false, sp)), 1);
+      check_interpolation_and_continuity<K>(fair::Catmull_rom_2<K>(p, cr_options(true, sp)), 1);
     }
   }
   // Auxiliary points p_{-1} = p_0, p_{n+1} = p_n (Li et al., Fig. 1) with uniform knots:
@@ -405,7 +430,7 @@ TYPED_TEST(Classic_splines, CatmullRomRandomOpenClosedAndAuxiliaryPoints) {
   EXPECT_TRUE(same<K>(c.derivatives()[2], (p[3] - p[1]) / 2, 1e-11)) << "m2";
   check_interpolation_and_continuity<K>(c, 1);
   // Non-uniform knots need distinct auxiliary points.
-  EXPECT_THROW(fair::Catmull_rom_2<K>(p, p.front(), p.back(), fair::Knot_spacing::CHORDAL),
+  EXPECT_THROW(fair::Catmull_rom_2<K>(p, p.front(), p.back(), cr_options(false, fair::Knot_spacing::CHORDAL)),
                fair::Invalid_input_error);
   // Two points: the straight segment.
   fair::Catmull_rom_2<K> seg({P(1, 2), P(4, 8)});
@@ -426,7 +451,7 @@ TEST(Classic_catmull_rom, NonUniformPiecesMatchTheBarryGoldmanPyramid) {
   for (int trial = 0; trial < 50; ++trial) {
     const auto p = random_points<K>(rng, 7);
     for (fair::Knot_spacing sp : {fair::Knot_spacing::CENTRIPETAL, fair::Knot_spacing::CHORDAL}) {
-      fair::Catmull_rom_2<K> c(p, false, sp);
+      fair::Catmull_rom_2<K> c(p, cr_options(false, sp));
       const auto& u = c.knots();
       for (std::size_t i = 1; i + 2 < p.size(); ++i) {  // interior pieces: p_{i-1}..p_{i+2} exist
         const double t0 = u[i - 1], t1 = u[i], t2 = u[i + 1], t3 = u[i + 2];
@@ -450,8 +475,9 @@ TYPED_TEST(Classic_splines, CatmullRomRejectsBadInput) {
   typedef typename K::Point_2 P;
   typedef fair::Catmull_rom_2<K> C;
   EXPECT_THROW(C({P(0, 0)}), fair::Invalid_input_error);
-  EXPECT_THROW(C({P(0, 0), P(1, 0)}, true), fair::Invalid_input_error);
-  EXPECT_THROW(C({P(0, 0), P(1, 0), P(1, 0)}, false, fair::Knot_spacing::CHORDAL), fair::Invalid_input_error);
+  EXPECT_THROW(C({P(0, 0), P(1, 0)}, cr_options(true)), fair::Invalid_input_error);
+  EXPECT_THROW(C({P(0, 0), P(1, 0), P(2, 1)}, P(-1, 0), P(3, 1), cr_options(true)), fair::Precondition_error);  // no auxiliary points when closed
+  EXPECT_THROW(C({P(0, 0), P(1, 0), P(1, 0)}, cr_options(false, fair::Knot_spacing::CHORDAL)), fair::Invalid_input_error);
   EXPECT_THROW(C({P(0, 0), P(1, 0), P(1, 0)}), fair::Invalid_input_error);
   if (!is_exact<K>()) {
     EXPECT_THROW(C({P(0, 0), P(std::nan(""), 0), P(2, 0)}), fair::Invalid_input_error);

@@ -44,6 +44,14 @@
 
 namespace fair {
 
+/// The options of a Catmull_rom_2 (doc/concepts.md).
+struct Catmull_rom_options {
+  /// Closed: one piece per point, the last from the last point back to the first (>= 3 points).
+  bool closed = false;
+  /// The knots u_i (uniform: the classic Catmull-Rom spline; centripetal, chordal: Knot_spacing.h).
+  Knot_spacing knot_spacing = Knot_spacing::UNIFORM;
+};
+
 template <class K>
 class Catmull_rom_2 {
 public:
@@ -56,10 +64,11 @@ public:
   /// The open (>= 2 points, quadratic end extrapolation) or closed (>= 3 points) Catmull-Rom
   /// spline. Throws Invalid_input_error for too few points, non-finite coordinates or coincident
   /// consecutive points (and, when closed, coincident last and first points).
-  explicit Catmull_rom_2(std::vector<Point_2> points, bool closed = false,
-                         Knot_spacing spacing = Knot_spacing::UNIFORM)
-    : points_(std::move(points)), closed_(closed), spacing_(spacing) {
+  explicit Catmull_rom_2(std::vector<Point_2> points, const Catmull_rom_options& options = {})
+    : points_(std::move(points)), options_(options) {
     const char* method = "Catmull_rom_2";
+    const bool closed = options_.closed;
+    const Knot_spacing spacing = options_.knot_spacing;
     internal::common::check_interpolation_input(points_, closed ? 3 : 2, closed, method);
     const std::vector<FT> h = internal::classic::classic_knot_intervals<K>(points_, closed, spacing, method);
     const std::size_t n = points_.size();
@@ -85,14 +94,17 @@ public:
     assemble(h, m);
   }
 
-  /// The open spline with the caller's auxiliary points p_{-1} = `before` and p_{n+1} = `after`
-  /// (Li et al. eq. (1)); >= 2 points. With uniform knots an auxiliary point may coincide with
-  /// its neighbour (then the end derivative is (p_1 - p_0)/2); with centripetal/chordal knots it
-  /// must differ from it. Throws Invalid_input_error for bad data or auxiliary points.
+  /// Expert: the open spline with the caller's auxiliary points p_{-1} = `before` and p_{n+1} =
+  /// `after` (Li et al. eq. (1)); >= 2 points. With uniform knots an auxiliary point may coincide
+  /// with its neighbour (then the end derivative is (p_1 - p_0)/2); with centripetal/chordal knots
+  /// it must differ from it. Throws Invalid_input_error for bad data or auxiliary points, and
+  /// Precondition_error for options.closed (a closed curve has no auxiliary points).
   Catmull_rom_2(std::vector<Point_2> points, const Point_2& before, const Point_2& after,
-                Knot_spacing spacing = Knot_spacing::UNIFORM)
-    : points_(std::move(points)), closed_(false), spacing_(spacing) {
+                const Catmull_rom_options& options = {})
+    : points_(std::move(points)), options_(options) {
     const char* method = "Catmull_rom_2";
+    internal::require(!options_.closed, "Catmull_rom_2: a closed curve has no auxiliary points");
+    const Knot_spacing spacing = options_.knot_spacing;
     internal::common::check_interpolation_input(points_, 2, false, method);
     std::vector<Point_2> extended;
     extended.reserve(points_.size() + 2);
@@ -116,8 +128,8 @@ public:
   const std::vector<FT>& knots() const { return knots_; }
   /// The derivatives m_i = c'(u_i) with respect to the knot parameter (one per point).
   const std::vector<Vector_2>& derivatives() const { return derivatives_; }
-  bool is_closed() const { return closed_; }
-  Knot_spacing knot_spacing() const { return spacing_; }
+  bool is_closed() const { return options_.closed; }
+  const Catmull_rom_options& options() const { return options_; }
 
 private:
   // Derivative at the middle knot of the parabola through a, b, c with intervals hm, hp.
@@ -134,8 +146,7 @@ private:
   }
 
   std::vector<Point_2> points_;
-  bool closed_;
-  Knot_spacing spacing_;
+  Catmull_rom_options options_;
   std::vector<FT> knots_;
   std::vector<Vector_2> derivatives_;
   std::vector<Piece> pieces_;

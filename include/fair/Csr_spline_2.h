@@ -54,6 +54,8 @@ inline const char* to_string(Csr_epsilon_rule r) {
 
 /// Options of the csr-spline.
 struct Csr_spline_options {
+  /// Closed: one piece per sample, the last closing back to the first (>= 4 samples).
+  bool closed = false;
   /// Knots when no parameters are given; chordal is the paper's default.
   Knot_spacing knot_spacing = Knot_spacing::CHORDAL;
   Csr_epsilon_rule epsilon_rule = Csr_epsilon_rule::CASE_SPLIT;
@@ -74,32 +76,31 @@ public:
   typedef Bezier_2<K> Piece;
   typedef Cubic_spline_2<K> Spline;
 
-  /// The csr-spline of `samples` with knots by options.knot_spacing. Open: >= 3 samples, the
-  /// curve runs from samples.front() to samples.back(). Closed: >= 4 samples, one piece per
-  /// sample, the last piece closing back to the first sample (which must differ from the last).
-  /// Throws Invalid_input_error for too few samples, a non-finite coordinate or two coincident
-  /// consecutive samples (naming the indices), and Precondition_error for a negative or
-  /// non-finite relative_epsilon. O(n).
-  explicit Csr_spline_2(std::vector<Point_2> samples, bool closed = false,
-                        const Csr_spline_options& options = Csr_spline_options())
-    : Csr_spline_2(std::move(samples), nullptr, closed, options) {}
+  /// The csr-spline of the samples `points` with knots by options.knot_spacing. Open: >= 3
+  /// samples, the curve runs from points.front() to points.back(). Closed (options.closed): >= 4
+  /// samples, one piece per sample, the last piece closing back to the first sample (which must
+  /// differ from the last). Throws Invalid_input_error for too few samples, a non-finite
+  /// coordinate or two coincident consecutive samples (naming the indices), and
+  /// Precondition_error for a negative or non-finite relative_epsilon. O(n).
+  explicit Csr_spline_2(std::vector<Point_2> points, const Csr_spline_options& options = {})
+    : Csr_spline_2(std::move(points), nullptr, options) {}
 
-  /// The csr-spline with given parameters t_i of the samples (options.knot_spacing is ignored):
-  /// one per sample for an open curve, one more for a closed one (the parameter at which the curve
-  /// returns to samples[0]). Throws Invalid_input_error also for a wrong count or parameters
-  /// that are not finite and strictly increasing.
-  Csr_spline_2(std::vector<Point_2> samples, std::vector<FT> parameters, bool closed = false,
-               const Csr_spline_options& options = Csr_spline_options())
-    : Csr_spline_2(std::move(samples), &parameters, closed, options) {}
+  /// Expert: the csr-spline with given parameters t_i of the samples (options.knot_spacing is
+  /// ignored): one per sample for an open curve, one more for a closed one (the parameter at
+  /// which the curve returns to points[0]). Throws Invalid_input_error also for a wrong count or
+  /// parameters that are not finite and strictly increasing.
+  Csr_spline_2(std::vector<Point_2> points, std::vector<FT> parameters, const Csr_spline_options& options = {})
+    : Csr_spline_2(std::move(points), &parameters, options) {}
 
   /// The cubic C2 B-spline: breakpoints = parameters(); open: m + 3 control points
   /// q_0, b_1^0, c_1..c_{m-1}, b_2^{m-1}, q_m; closed: c_0..c_{m-1}.
   const Spline& spline() const { return spline_; }
-  /// Its cubic Bezier pieces (computed on call, O(m)); piece i spans [t_i, t_{i+1}].
-  std::vector<Piece> pieces() const { return spline_.polynomial_pieces(); }
-  std::size_t number_of_pieces() const { return spline_.number_of_pieces(); }
-  bool is_closed() const { return closed_; }
-  const std::vector<Point_2>& samples() const { return samples_; }
+  /// Its cubic Bezier pieces (built once by the constructor); piece i spans [t_i, t_{i+1}].
+  const std::vector<Piece>& pieces() const { return pieces_; }
+  std::size_t number_of_pieces() const { return pieces_.size(); }
+  bool is_closed() const { return options_.closed; }
+  /// The samples q_i, as given (the spline approximates them: distances_to_samples()).
+  const std::vector<Point_2>& points() const { return samples_; }
   /// The breakpoints t_0 < ... < t_m: t_i belongs to sample i; closed curves have one more,
   /// t_m, where the curve is back at sample 0.
   const std::vector<FT>& parameters() const { return spline_.breakpoints(); }
@@ -117,8 +118,8 @@ public:
   Point_2 point_at_sample(std::size_t i) const {
     internal::require(i < samples_.size(), "Csr_spline_2::point_at_sample: index ", i, " out of range (",
                       samples_.size(), " samples)");
-    if (!closed_ && i + 1 == samples_.size()) return samples_.back();  // the clamped end
-    return spline_.polynomial_piece(i).control_points().front();
+    if (!options_.closed && i + 1 == samples_.size()) return samples_.back();  // the clamped end
+    return pieces_[i].control_points().front();
   }
   /// |s(t_i) - q_i|^2, exact in an exact kernel.
   FT squared_distance_to_sample(std::size_t i) const {
@@ -144,31 +145,31 @@ public:
   }
 
 private:
-  Csr_spline_2(std::vector<Point_2> samples, const std::vector<FT>* parameters, bool closed,
-               const Csr_spline_options& options)
-    : samples_(std::move(samples)), closed_(closed), given_parameters_(parameters != nullptr), options_(options),
-      data_(construct(samples_, parameters, closed, options)),
-      spline_(std::move(data_.breakpoints), std::move(data_.control_points), closed) {
+  Csr_spline_2(std::vector<Point_2> samples, const std::vector<FT>* parameters, const Csr_spline_options& options)
+    : samples_(std::move(samples)), given_parameters_(parameters != nullptr), options_(options),
+      data_(construct(samples_, parameters, options)),
+      spline_(std::move(data_.breakpoints), std::move(data_.control_points), options.closed),
+      pieces_(spline_.polynomial_pieces()) {
     // Finite control points can still give Bezier pieces (or their derivatives) that overflow,
     // e.g. coordinates near 1e308 or extreme knot ratios: refuse them rather than hand out NaN.
-    internal::classic::classic_check_finite_pieces(spline_.polynomial_pieces(), "Csr_spline_2");
+    internal::classic::classic_check_finite_pieces(pieces_, "Csr_spline_2");
   }
 
   static internal::csr::Construction<K> construct(const std::vector<Point_2>& samples, const std::vector<FT>* parameters,
-                                                  bool closed, const Csr_spline_options& options) {
+                                                  const Csr_spline_options& options) {
     internal::require(options.relative_epsilon >= 0 && std::isfinite(options.relative_epsilon),
                       "Csr_spline_2: relative_epsilon = ", options.relative_epsilon, " must be finite and >= 0");
-    return internal::csr::construct<K>(samples, parameters, closed, options.knot_spacing,
+    return internal::csr::construct<K>(samples, parameters, options.closed, options.knot_spacing,
                                        options.epsilon_rule == Csr_epsilon_rule::ADD_TO_CURVATURES,
                                        options.relative_epsilon, "Csr_spline_2");
   }
 
   std::vector<Point_2> samples_;
-  bool closed_;
   bool given_parameters_;
   Csr_spline_options options_;
   internal::csr::Construction<K> data_;  // curvatures and epsilon (its knots and points moved into spline_)
   Spline spline_;
+  std::vector<Piece> pieces_;
 };
 
 } // namespace fair

@@ -45,6 +45,14 @@ namespace fair {
 /// End handling of an open Cubic_bspline_2.
 enum class Cubic_bspline_ends { INTERPOLATE_END_POINTS, TRIMMED };
 
+/// The options of a Cubic_bspline_2 (doc/concepts.md).
+struct Cubic_bspline_options {
+  /// Closed: the periodic B-spline of the control polygon (>= 3 points).
+  bool closed = false;
+  /// Open curves: through the end points (phantom points 2 p_0 - p_1, ...) or trimmed.
+  Cubic_bspline_ends ends = Cubic_bspline_ends::INTERPOLATE_END_POINTS;
+};
+
 template <class K>
 class Cubic_bspline_2 {
 public:
@@ -58,10 +66,11 @@ public:
   /// (2 open with end points, 4 trimmed, 3 closed), non-finite coordinates or coincident
   /// consecutive points (rejected for every classic method, so that comparisons use the same
   /// admissible data; a doubled control point would also make the curve singular).
-  explicit Cubic_bspline_2(std::vector<Point_2> points, bool closed = false,
-                           Cubic_bspline_ends ends = Cubic_bspline_ends::INTERPOLATE_END_POINTS)
-    : points_(std::move(points)), closed_(closed), ends_(ends) {
+  explicit Cubic_bspline_2(std::vector<Point_2> points, const Cubic_bspline_options& options = {})
+    : points_(std::move(points)), options_(options) {
     const char* method = "Cubic_bspline_2";
+    const bool closed = options_.closed;
+    const Cubic_bspline_ends ends = options_.ends;
     const std::size_t minimum = closed ? 3 : (ends == Cubic_bspline_ends::TRIMMED ? 4 : 2);
     internal::common::check_interpolation_input(points_, minimum, closed, method);
     if (closed || ends == Cubic_bspline_ends::TRIMMED) {
@@ -91,13 +100,12 @@ public:
   /// The control polygon actually used (the data, plus the two phantom points for
   /// interpolate_end_points).
   const std::vector<Point_2>& control_polygon() const { return control_; }
-  bool is_closed() const { return closed_; }
-  Cubic_bspline_ends ends() const { return ends_; }
+  bool is_closed() const { return options_.closed; }
+  const Cubic_bspline_options& options() const { return options_; }
 
 private:
   std::vector<Point_2> points_;
-  bool closed_;
-  Cubic_bspline_ends ends_;
+  Cubic_bspline_options options_;
   std::vector<Point_2> control_;
   std::optional<Cubic_spline_2<K>> spline_; // set in the constructor's body, after the data checks
   std::vector<Piece> pieces_;

@@ -19,8 +19,8 @@
 //                                        m_{n-1} + 2 m_n = 3 (p_n - p_{n-1}) / h_{n-1};
 //   clamped   m_0 and m_n given (d/du in the chosen spacing: for uniform knots the derivative
 //             with respect to the point index, for chordal knots with respect to chord length);
-//   periodic  the points are a closed polygon, n+1 intervals with h_n from p_n back to p_0, and
-//             (C2) holds at every knot, indices mod n+1;
+//   periodic  (options.closed) the points are a closed polygon, n+1 intervals with h_n from p_n
+//             back to p_0, and (C2) holds at every knot, indices mod n+1;
 //   not-a-knot  c''' continuous at u_1 and u_{n-1} (the first two and the last two pieces are
 //             one cubic each; de Boor ch. IV): eliminating m_2 from (C2) at u_1 and the jump
 //             condition gives, with d_i = (p_{i+1} - p_i) / h_i,
@@ -63,8 +63,22 @@
 
 namespace fair {
 
-/// End conditions of the C2 cubic interpolating spline.
-enum class Spline_end_condition { NATURAL, CLAMPED, PERIODIC, NOT_A_KNOT };
+/// End conditions of an open C2 cubic interpolating spline. A closed spline has no ends: it is
+/// periodic (C2 at every knot, Cubic_interpolating_spline_options::closed).
+enum class Spline_end_condition { NATURAL, CLAMPED, NOT_A_KNOT };
+
+/// The options of a Cubic_interpolating_spline_2 (doc/concepts.md). The one rule for closed
+/// curves: `closed` makes the spline periodic, and `end_condition` applies to open curves only
+/// (a closed spline ignores it).
+struct Cubic_interpolating_spline_options {
+  /// Closed: the periodic spline, one piece per point, the last closing back to the first (>= 3).
+  bool closed = false;
+  /// Open curves: NATURAL or NOT_A_KNOT (CLAMPED needs the two end derivatives: the expert
+  /// constructor). Ignored when closed.
+  Spline_end_condition end_condition = Spline_end_condition::NATURAL;
+  /// The knots u_i (Knot_spacing.h).
+  Knot_spacing knot_spacing = Knot_spacing::UNIFORM;
+};
 
 template <class K>
 class Cubic_interpolating_spline_2 {
@@ -75,24 +89,23 @@ public:
   typedef typename K::Vector_2 Vector_2;
   typedef Bezier_2<K> Piece;
 
-  /// The natural or not-a-knot (end = natural / not_a_knot, needs >= 2 points) or periodic
-  /// (end = periodic, needs >= 3 points; the curve closes from the last point back to the first,
-  /// which must differ) spline.
+  /// The periodic spline (options.closed, needs >= 3 points; the curve closes from the last point
+  /// back to the first, which must differ), or the open natural or not-a-knot spline
+  /// (options.end_condition, needs >= 2 points).
   /// Throws Invalid_input_error for too few points, non-finite coordinates or coincident
-  /// consecutive points, and Precondition_error for end = clamped (use the other constructor).
-  explicit Cubic_interpolating_spline_2(std::vector<Point_2> points,
-                                        Spline_end_condition end = Spline_end_condition::NATURAL,
-                                        Knot_spacing spacing = Knot_spacing::UNIFORM)
-    : points_(std::move(points)), end_(not_clamped(end)), spacing_(spacing),
+  /// consecutive points, and Precondition_error for an open curve with end_condition CLAMPED
+  /// (use the expert constructor).
+  explicit Cubic_interpolating_spline_2(std::vector<Point_2> points, const Cubic_interpolating_spline_options& options = {})
+    : points_(std::move(points)), options_(not_clamped(options)),
       pieces_(build(Vector_2(FT(0), FT(0)), Vector_2(FT(0), FT(0)))), spline_(make_spline()) {}
 
-  /// The clamped spline (>= 2 points) with c'(u_0) = start_derivative and c'(u_n) =
-  /// end_derivative, derivatives with respect to the knot parameter u of `spacing`.
-  /// Throws Invalid_input_error as above, and for a non-finite derivative.
+  /// Expert: the open clamped spline (>= 2 points) with c'(u_0) = start_derivative and c'(u_n) =
+  /// end_derivative, derivatives with respect to the knot parameter u of options.knot_spacing;
+  /// options().end_condition is CLAMPED. Throws Invalid_input_error as above and for a non-finite
+  /// derivative, Precondition_error for options.closed (a closed spline has no ends).
   Cubic_interpolating_spline_2(std::vector<Point_2> points, const Vector_2& start_derivative,
-                               const Vector_2& end_derivative,
-                               Knot_spacing spacing = Knot_spacing::UNIFORM)
-    : points_(std::move(points)), end_(Spline_end_condition::CLAMPED), spacing_(spacing),
+                               const Vector_2& end_derivative, const Cubic_interpolating_spline_options& options = {})
+    : points_(std::move(points)), options_(clamped(options)),
       pieces_(build(checked(start_derivative, "start_derivative"), checked(end_derivative, "end_derivative"))),
       spline_(make_spline()) {}
 
@@ -111,16 +124,20 @@ public:
   const std::vector<FT>& knots() const { return knots_; }
   /// The derivatives m_i = c'(u_i) with respect to u (one per point).
   const std::vector<Vector_2>& derivatives() const { return derivatives_; }
-  Spline_end_condition end_condition() const { return end_; }
-  Knot_spacing knot_spacing() const { return spacing_; }
-  bool is_closed() const { return end_ == Spline_end_condition::PERIODIC; }
+  bool is_closed() const { return options_.closed; }
+  const Cubic_interpolating_spline_options& options() const { return options_; }
 
 private:
-  static Spline_end_condition not_clamped(Spline_end_condition end) {
-    internal::require(end != Spline_end_condition::CLAMPED,
+  static const Cubic_interpolating_spline_options& not_clamped(const Cubic_interpolating_spline_options& o) {
+    internal::require(o.closed || o.end_condition != Spline_end_condition::CLAMPED,
                       "Cubic_interpolating_spline_2: a clamped spline needs its two end derivatives; "
                       "use the constructor taking start_derivative and end_derivative");
-    return end;
+    return o;
+  }
+  static Cubic_interpolating_spline_options clamped(Cubic_interpolating_spline_options o) {
+    internal::require(!o.closed, "Cubic_interpolating_spline_2: a closed (periodic) spline has no end derivatives");
+    o.end_condition = Spline_end_condition::CLAMPED;
+    return o;
   }
 
   static const Vector_2& checked(const Vector_2& v, const char* name) {
@@ -140,7 +157,8 @@ private:
     internal::common::check_interpolation_input(points_, closed ? 3 : 2, closed, method);
     const std::vector<Point_2>& p = points_;
     const std::size_t n = p.size();
-    const std::vector<FT> h = internal::classic::classic_knot_intervals<K>(p, closed, spacing_, method);
+    const std::vector<FT> h = internal::classic::classic_knot_intervals<K>(p, closed, options_.knot_spacing, method);
+    const Spline_end_condition end = options_.end_condition;  // open curves only
     knots_ = internal::classic::classic_cumulative_knots(h);
 
     // Rows of the (cyclic) tridiagonal system, one per point; a = sub, b = diagonal, c = super.
@@ -162,7 +180,7 @@ private:
       }
     } else {
       for (std::size_t i = 1; i + 1 < n; ++i) interior_row(i, i - 1, i + 1, h[i - 1], h[i]);
-      if (end_ == Spline_end_condition::NATURAL) {
+      if (end == Spline_end_condition::NATURAL) {
         b[0] = two;
         c[0] = FT(1);
         dx[0] = three * (p[1].x() - p[0].x()) / h[0];
@@ -171,7 +189,7 @@ private:
         b[n - 1] = two;
         dx[n - 1] = three * (p[n - 1].x() - p[n - 2].x()) / h[n - 2];
         dy[n - 1] = three * (p[n - 1].y() - p[n - 2].y()) / h[n - 2];
-      } else if (end_ == Spline_end_condition::NOT_A_KNOT) {
+      } else if (end == Spline_end_condition::NOT_A_KNOT) {
         not_a_knot_rows(h, b, c, a, dx, dy);
       } else {  // clamped: identity rows
         b[0] = FT(1);
@@ -183,7 +201,7 @@ private:
       }
     }
     std::vector<FT> mx, my;
-    if (end_ == Spline_end_condition::NOT_A_KNOT && n <= 3) {
+    if (!closed && end == Spline_end_condition::NOT_A_KNOT && n <= 3) {
       // the segment (n = 2) or the parabola (n = 3): see the header
       const FT dx0 = (p[1].x() - p[0].x()) / h[0], dy0 = (p[1].y() - p[0].y()) / h[0];
       mx.assign(n, dx0);
@@ -232,8 +250,7 @@ private:
   }
 
   std::vector<Point_2> points_;
-  Spline_end_condition end_;
-  Knot_spacing spacing_;
+  Cubic_interpolating_spline_options options_;
   std::vector<FT> knots_;
   std::vector<Vector_2> derivatives_;
   std::vector<Piece> pieces_;

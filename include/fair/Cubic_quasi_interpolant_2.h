@@ -41,6 +41,12 @@
 
 namespace fair {
 
+/// The options of a Cubic_quasi_interpolant_2 (doc/concepts.md).
+struct Cubic_quasi_interpolant_options {
+  /// Closed: the periodic quasi-interpolant (>= 3 points); open: >= 4 points.
+  bool closed = false;
+};
+
 template <class K>
 class Cubic_quasi_interpolant_2 {
 public:
@@ -52,8 +58,9 @@ public:
 
   /// Throws Invalid_input_error for too few points (4 open, 3 closed), non-finite coordinates or
   /// coincident consecutive points.
-  explicit Cubic_quasi_interpolant_2(std::vector<Point_2> points, bool closed = false)
-    : points_(std::move(points)), closed_(closed) {
+  explicit Cubic_quasi_interpolant_2(std::vector<Point_2> points, const Cubic_quasi_interpolant_options& options = {})
+    : points_(std::move(points)), options_(options) {
+    const bool closed = options_.closed;
     internal::common::check_interpolation_input(points_, closed ? 3 : 4, closed, "Cubic_quasi_interpolant_2");
     const std::size_t n = points_.size();
     std::vector<Point_2> data;  // the data the (-1,8,-1)/6 rule is applied to
@@ -98,11 +105,12 @@ public:
   const std::vector<Point_2>& points() const { return points_; }
   /// The B-spline control points c_i (for an open curve c_{-1}..c_{n+1}, from the extended data).
   const std::vector<Point_2>& control_polygon() const { return control_; }
-  bool is_closed() const { return closed_; }
+  bool is_closed() const { return options_.closed; }
+  const Cubic_quasi_interpolant_options& options() const { return options_; }
 
 private:
   std::vector<Point_2> points_;
-  bool closed_;
+  Cubic_quasi_interpolant_options options_;
   std::vector<Point_2> control_;
   std::optional<Cubic_spline_2<K>> spline_; // set in the constructor's body, after the data checks
   std::vector<Piece> pieces_;

@@ -3,7 +3,9 @@
 // fair::Four_point_subdivision_2<Kernel>: the interpolatory 4-point subdivision scheme of
 // N. Dyn, D. Levin, J. A. Gregory ("A 4-point interpolatory subdivision scheme for curve design",
 // CAGD 4(4), 1987; reference [7] of Yan, Schiller & Schaefer), and a relaxed (approximating)
-// variant, as refined polylines after k rounds.
+// variant, as refined polylines after k rounds. As a curve of the family contract
+// (doc/concepts.md) its pieces() are the segments (degree-1 Bezier_2 pieces) of the polyline
+// after options.rounds rounds; refine(k) gives the polyline after any other number of rounds.
 //
 // Interpolatory scheme (DLG 1987). Each round keeps the old points and inserts on every edge
 //   p'_{2i}   = p_i,
@@ -43,6 +45,7 @@
 #ifndef FAIR_FOUR_POINT_SUBDIVISION_2_H
 #define FAIR_FOUR_POINT_SUBDIVISION_2_H
 
+#include <fair/Bezier_2.h>
 #include <fair/Errors.h>
 #include <fair/internal/classic/common.h>
 #include <fair/internal/common/input_checks.h>
@@ -58,6 +61,21 @@ namespace fair {
 /// Which rule Four_point_subdivision_2 applies.
 enum class Four_point_variant { INTERPOLATORY, RELAXED };
 
+/// The options of a Four_point_subdivision_2 (doc/concepts.md). The numbers are doubles,
+/// converted exactly to the kernel's FT (1/16 and -3/128 are exact).
+struct Four_point_subdivision_options {
+  /// Closed: the polygon p_0..p_{n-1} closes back to p_0 (>= 3 points; open: >= 4).
+  bool closed = false;
+  Four_point_variant variant = Four_point_variant::INTERPOLATORY;
+  /// The tension w of the edge rule, 0 < w < (sqrt(5) - 1)/8 (the C1 range of DLG 1987). The
+  /// relaxed variant is derived for w = 1/16 only (its smoothness below): it requires the default.
+  double tension = 1.0 / 16;
+  /// RELAXED: the vertex relaxation gamma in [-1/16, 0]; ignored by INTERPOLATORY.
+  double relaxation = -3.0 / 128;
+  /// The rounds behind pieces() (at most max_rounds, and the polyline at most max_points).
+  std::size_t rounds = 5;
+};
+
 template <class K>
 class Four_point_subdivision_2 {
 public:
@@ -65,6 +83,7 @@ public:
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
   typedef typename K::Vector_2 Vector_2;
+  typedef Bezier_2<K> Piece;
 
   /// The largest number of rounds refine() accepts.
   static constexpr std::size_t max_rounds = 20;
@@ -73,32 +92,29 @@ public:
   /// (sqrt(5) - 1) / 8, the upper end of the tension range in which the DLG scheme is C1 (DLG 1987).
   static constexpr double max_c1_tension = 0.15450849718747373;
 
-  /// The interpolatory DLG scheme with tension w (default 1/16). Throws Invalid_input_error for
-  /// too few points (4 open, 3 closed), non-finite coordinates or coincident consecutive points,
-  /// and Precondition_error unless 0 < w < (sqrt(5) - 1)/8 (the C1 range of DLG 1987).
-  explicit Four_point_subdivision_2(std::vector<Point_2> points, bool closed = false,
-                                    const FT& w = FT(1) / FT(16))
-    : points_(std::move(points)), closed_(closed), variant_(Four_point_variant::INTERPOLATORY), w_(w),
-      gamma_(0) {
-    check();
-    const double wd = CGAL::to_double(w);
-    internal::require(w > FT(0) && wd < max_c1_tension,
-                      "Four_point_subdivision_2: tension w = ", wd,
+  /// The scheme of options.variant on `points`, refined options.rounds times for pieces().
+  /// Throws Invalid_input_error for too few points (4 open, 3 closed), non-finite coordinates or
+  /// coincident consecutive points; Precondition_error unless 0 < tension < (sqrt(5) - 1)/8, for a
+  /// RELAXED scheme with a tension other than 1/16 or a relaxation outside [-1/16, 0], and for
+  /// rounds above max_rounds or a polyline above max_points.
+  explicit Four_point_subdivision_2(std::vector<Point_2> points, const Four_point_subdivision_options& options = {})
+    : points_(std::move(points)), options_(options), w_(options.tension),
+      gamma_(options.variant == Four_point_variant::RELAXED ? FT(options.relaxation) : FT(0)) {
+    internal::common::check_interpolation_input(points_, options_.closed ? 3 : 4, options_.closed,
+                                                "Four_point_subdivision_2");
+    const double wd = options_.tension;
+    internal::require(wd > 0 && wd < max_c1_tension, "Four_point_subdivision_2: tension w = ", wd,
                       " is outside the C1 range (0, (sqrt(5)-1)/8 = 0.1545...)");
-  }
-
-  /// The scheme of `variant`: interpolatory with w = 1/16, or relaxed with w = 1/16 and vertex
-  /// relaxation gamma (default -3/128). Throws as above, and Precondition_error for a relaxed
-  /// gamma outside [-1/16, 0].
-  Four_point_subdivision_2(std::vector<Point_2> points, bool closed, Four_point_variant variant,
-                           const FT& gamma = FT(-3) / FT(128))
-    : points_(std::move(points)), closed_(closed), variant_(variant), w_(FT(1) / FT(16)),
-      gamma_(variant == Four_point_variant::RELAXED ? gamma : FT(0)) {
-    check();
-    internal::require(variant == Four_point_variant::INTERPOLATORY ||
-                          (FT(-1) / FT(16) <= gamma && gamma <= FT(0)),
-                      "Four_point_subdivision_2: relaxation gamma = ", CGAL::to_double(gamma),
-                      " is outside [-1/16, 0]");
+    if (options_.variant == Four_point_variant::RELAXED) {
+      internal::require(wd == 1.0 / 16, "Four_point_subdivision_2: the relaxed scheme uses tension 1/16, got ", wd);
+      internal::require(options_.relaxation >= -1.0 / 16 && options_.relaxation <= 0,
+                        "Four_point_subdivision_2: relaxation gamma = ", options_.relaxation, " is outside [-1/16, 0]");
+    }
+    polyline_ = refine(options_.rounds);
+    const std::size_t m = polyline_.size(), segments = options_.closed ? m : m - 1;
+    pieces_.reserve(segments);
+    for (std::size_t i = 0; i < segments; ++i)
+      pieces_.push_back(Piece(std::vector<Point_2>{polyline_[i], polyline_[(i + 1) % m]}));
   }
 
   /// The number of points after `rounds` rounds: n 2^k closed, (n - 1) 2^k + 1 open.
@@ -106,7 +122,7 @@ public:
     const std::size_t n = points_.size();
     if (rounds > max_rounds) return max_points + 1;
     const std::size_t f = std::size_t(1) << rounds;
-    return closed_ ? n * f : (n - 1) * f + 1;
+    return options_.closed ? n * f : (n - 1) * f + 1;
   }
 
   /// The polyline after `rounds` rounds (rounds = 0 returns the input). For a closed polygon the
@@ -128,11 +144,11 @@ public:
   /// with this scheme's rule and end handling.
   std::vector<Point_2> round(const std::vector<Point_2>& q) const {
     const std::size_t n = q.size();
-    internal::require(n >= (closed_ ? 3u : 4u), "Four_point_subdivision_2::round: ", n, " points are too few");
+    internal::require(n >= (options_.closed ? 3u : 4u), "Four_point_subdivision_2::round: ", n, " points are too few");
     // Extended polygon e with two leading and two trailing neighbours: e[i + 2] = q[i].
     std::vector<Point_2> e;
     e.reserve(n + 4);
-    if (closed_) {
+    if (options_.closed) {
       e.push_back(q[(n - 2 + n) % n]);
       e.push_back(q[n - 1]);
       e.insert(e.end(), q.begin(), q.end());
@@ -150,9 +166,9 @@ public:
       e.push_back(b2);
     }
     const FT half_w = FT(1) / FT(2) + w_, minus_w = -w_;
-    const bool relaxed = variant_ == Four_point_variant::RELAXED;
+    const bool relaxed = options_.variant == Four_point_variant::RELAXED;
     const FT g = gamma_, g4 = FT(-4) * gamma_, g6 = FT(1) + FT(6) * gamma_;
-    const std::size_t edges = closed_ ? n : n - 1;
+    const std::size_t edges = options_.closed ? n : n - 1;
     std::vector<Point_2> out;
     out.reserve(n + edges);
     for (std::size_t i = 0; i < n; ++i) {
@@ -171,21 +187,26 @@ public:
     return out;
   }
 
+  /// The input points, as given.
   const std::vector<Point_2>& points() const { return points_; }
-  bool is_closed() const { return closed_; }
-  Four_point_variant variant() const { return variant_; }
+  /// The segments of polyline() as degree-1 Bezier pieces (closed: the last one closes it).
+  const std::vector<Piece>& pieces() const { return pieces_; }
+  std::size_t number_of_pieces() const { return pieces_.size(); }
+  /// refine(options().rounds), computed once.
+  const std::vector<Point_2>& polyline() const { return polyline_; }
+  bool is_closed() const { return options_.closed; }
+  const Four_point_subdivision_options& options() const { return options_; }
+  /// The tension w in FT.
   const FT& tension() const { return w_; }
+  /// The relaxation gamma in FT (0 for the interpolatory scheme).
   const FT& relaxation() const { return gamma_; }
 
 private:
-  void check() const {
-    internal::common::check_interpolation_input(points_, closed_ ? 3 : 4, closed_, "Four_point_subdivision_2");
-  }
-
   std::vector<Point_2> points_;
-  bool closed_;
-  Four_point_variant variant_;
+  Four_point_subdivision_options options_;
   FT w_, gamma_;
+  std::vector<Point_2> polyline_;
+  std::vector<Piece> pieces_;
 };
 
 } // namespace fair

@@ -98,8 +98,11 @@ Polygon_spline_fit<K> fit_cubic_spline(const std::vector<typename K::Point_2>& p
   std::vector<Kd::Point_2> q;  // a chord that vanishes in double: the spline's Invalid_input_error
   q.reserve(p.size());
   for (const Vec2& v : p) q.emplace_back(v[0], v[1]);
-  const Cubic_interpolating_spline_2<Kd> c(
-      std::move(q), closed ? Spline_end_condition::PERIODIC : Spline_end_condition::NOT_A_KNOT, Knot_spacing::CHORDAL);
+  Cubic_interpolating_spline_options options;  // closed: periodic; open: not-a-knot ends
+  options.closed = closed;
+  options.end_condition = Spline_end_condition::NOT_A_KNOT;
+  options.knot_spacing = Knot_spacing::CHORDAL;
+  const Cubic_interpolating_spline_2<Kd> c(std::move(q), options);
   std::vector<std::array<Vec2, 4>> b;
   b.reserve(c.number_of_pieces());
   for (const Bezier_2<Kd>& piece : c.pieces()) {

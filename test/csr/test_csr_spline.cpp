@@ -21,6 +21,12 @@
 
 namespace {
 
+// doc/concepts.md: closed is an option of every family.
+fair::Csr_spline_options closed_if(bool closed, fair::Csr_spline_options o = {}) {
+  o.closed = closed;
+  return o;
+}
+
 using namespace fair_test;
 
 template <class K>
@@ -83,7 +89,7 @@ TYPED_TEST(Csr, ReproducesQuadraticsOnNonUniformKnots) {
     for (fair::Csr_epsilon_rule rule : {fair::Csr_epsilon_rule::CASE_SPLIT, fair::Csr_epsilon_rule::ADD_TO_CURVATURES}) {
       fair::Csr_spline_options o;
       o.epsilon_rule = rule;
-      const fair::Csr_spline_2<K> s(q, t, false, o);
+      const fair::Csr_spline_2<K> s(q, t, o);
       ASSERT_EQ(s.number_of_pieces(), t.size() - 1);
       const std::vector<P>& d = s.spline().control_points();
       ASSERT_EQ(d.size(), t.size() + 2);
@@ -166,7 +172,7 @@ TYPED_TEST(Csr, UniformKnotsGiveTheQuasiInterpolationRule) {
   fair::Csr_spline_options o;
   o.knot_spacing = fair::Knot_spacing::UNIFORM;
   o.relative_epsilon = 1e30;
-  const fair::Csr_spline_2<K> s(h, true, o);
+  const fair::Csr_spline_2<K> s(h, closed_if(true, o));
   const std::size_t n = h.size();
   for (std::size_t i = 0; i < n; ++i) {
     auto Q = [&](int k) { return h[(i + n + k) % n]; };
@@ -229,7 +235,7 @@ TYPED_TEST(Csr, ThreeSamplesGiveTheInterpolatingQuadratic) {
   const Quadratic<K> f{a.x(), a.y(), b.x() - a.x() - dx / 2, b.y() - a.y() - dy / 2, dx / 2, dy / 2};
   fair::Csr_spline_options o;
   o.knot_spacing = fair::Knot_spacing::UNIFORM;
-  const fair::Csr_spline_2<K> s({a, b, c}, false, o);
+  const fair::Csr_spline_2<K> s({a, b, c}, o);
   const auto pieces = s.pieces();
   ASSERT_EQ(pieces.size(), 2u);
   for (std::size_t i = 0; i < 2; ++i) {
@@ -238,7 +244,7 @@ TYPED_TEST(Csr, ThreeSamplesGiveTheInterpolatingQuadratic) {
   }
   EXPECT_EQ(s.max_distance_to_samples(), 0.0);
   // Reversal at q_1: the data go out and come back.
-  const fair::Csr_spline_2<K> r({P(0, 0), P(1, 0), P(0, 0), P(0, 1), P(1, 1)}, false, o);
+  const fair::Csr_spline_2<K> r({P(0, 0), P(1, 0), P(0, 0), P(0, 1), P(1, 1)}, o);
   EXPECT_EQ(r.discrete_curvatures()[1], fair::internal::csr::infinite_curvature);
   for (const P& d : r.spline().control_points()) {
     EXPECT_TRUE(std::isfinite(CGAL::to_double(d.x())));
@@ -258,7 +264,7 @@ TYPED_TEST(Csr, GivenParametersAreTheKnots) {
     for (fair::Knot_spacing k : {fair::Knot_spacing::UNIFORM, fair::Knot_spacing::CHORDAL}) {
       fair::Csr_spline_options o;
       o.knot_spacing = k;
-      const fair::Csr_spline_2<K> a(q, closed, o), b(q, a.parameters(), closed);
+      const fair::Csr_spline_2<K> a(q, closed_if(closed, o)), b(q, a.parameters(), closed_if(closed));
       EXPECT_FALSE(a.has_given_parameters());
       EXPECT_TRUE(b.has_given_parameters());
       ASSERT_EQ(a.parameters().size(), q.size() + (closed ? 1 : 0));
@@ -278,7 +284,7 @@ TYPED_TEST(Csr, OpenCurveIsClampedToTheEndSamples) {
   for (fair::Knot_spacing k : {fair::Knot_spacing::UNIFORM, fair::Knot_spacing::CENTRIPETAL, fair::Knot_spacing::CHORDAL}) {
     fair::Csr_spline_options o;
     o.knot_spacing = k;
-    const fair::Csr_spline_2<K> s(q, false, o);
+    const fair::Csr_spline_2<K> s(q, o);
     const auto pieces = s.pieces();
     EXPECT_TRUE(same<K>(pieces.front().control_points().front(), q.front()));
     EXPECT_TRUE(same<K>(pieces.back().control_points().back(), q.back()));
@@ -298,11 +304,11 @@ TYPED_TEST(Csr, InvariantUnderTranslationAndScaling) {
   std::mt19937 rng(13);
   const std::vector<P> samples = random_points<K>(rng, 12);
   for (bool closed : {false, true}) {
-    const fair::Csr_spline_2<K> s(samples, closed);
+    const fair::Csr_spline_2<K> s(samples, closed_if(closed));
     std::vector<P> moved, scaled;
     for (const P& p : samples) moved.push_back(P(p.x() + q<K>(17, 4), p.y() - q<K>(3, 8)));
     for (const P& p : samples) scaled.push_back(P(2 * p.x(), 2 * p.y()));
-    const fair::Csr_spline_2<K> sm(moved, closed), ss(scaled, closed);
+    const fair::Csr_spline_2<K> sm(moved, closed_if(closed)), ss(scaled, closed_if(closed));
     const auto& d = s.spline().control_points();
     for (std::size_t i = 0; i < d.size(); ++i) {
       EXPECT_TRUE(same<K>(sm.spline().control_points()[i], P(d[i].x() + q<K>(17, 4), d[i].y() - q<K>(3, 8)), 1e-12));
@@ -321,7 +327,7 @@ TYPED_TEST(Csr_floating, InvariantUnderSimilarities) {
   std::vector<P> r;
   for (const P& p : samples) r.push_back(P(c * p.x() - s * p.y() + 5, s * p.x() + c * p.y() - 2));
   for (bool closed : {false, true}) {
-    const fair::Csr_spline_2<K> a(samples, closed), b(r, closed);
+    const fair::Csr_spline_2<K> a(samples, closed_if(closed)), b(r, closed_if(closed));
     const auto& d = a.spline().control_points();
     for (std::size_t i = 0; i < d.size(); ++i)
       EXPECT_TRUE(same<K>(b.spline().control_points()[i],
@@ -357,7 +363,7 @@ TYPED_TEST(Csr_floating, ClosedCircleSamplesGiveAConvexCloseCurve) {
   std::mt19937 rng(15);
   for (std::size_t n : {12u, 24u, 48u}) {
     const std::vector<P> q = circle_samples<K>(rng, n, 0.3);
-    const fair::Csr_spline_2<K> s(q, true);
+    const fair::Csr_spline_2<K> s(q, closed_if(true));
     ASSERT_EQ(s.number_of_pieces(), n);
     const auto pieces = s.pieces();
     EXPECT_EQ(fair::inflections(pieces).count(), 0u) << n;
@@ -377,7 +383,7 @@ TYPED_TEST(Csr, ClosedSquareIsSymmetric) {
   const std::vector<P> sq = {P(1, 0), P(0, 1), P(-1, 0), P(0, -1)};
   fair::Csr_spline_options o;
   o.knot_spacing = fair::Knot_spacing::UNIFORM;
-  const fair::Csr_spline_2<K> s(sq, true, o);
+  const fair::Csr_spline_2<K> s(sq, closed_if(true, o));
   const auto& d = s.spline().control_points();
   ASSERT_EQ(d.size(), 4u);
   for (std::size_t i = 0; i < 4; ++i) EXPECT_TRUE(same<K>(d[(i + 1) % 4], P(-d[i].y(), d[i].x()))) << i;
@@ -399,9 +405,9 @@ TYPED_TEST(Csr, TypedErrorsNameTheProblem) {
   typedef fair::Csr_spline_2<K> S;
   const std::vector<P> four = {P(0, 0), P(1, 0), P(1, 1), P(0, 1)};
   EXPECT_INVALID(S({P(0, 0), P(1, 0)}), "at least 3");
-  EXPECT_INVALID(S({P(0, 0), P(1, 0), P(1, 1)}, true), "at least 4");
+  EXPECT_INVALID(S({P(0, 0), P(1, 0), P(1, 1)}, closed_if(true)), "at least 4");
   EXPECT_INVALID(S({P(0, 0), P(1, 0), P(1, 0), P(2, 2)}), "1 and 2");
-  EXPECT_INVALID(S({P(0, 0), P(1, 0), P(1, 1), P(0, 0)}, true), "3 and 0");
+  EXPECT_INVALID(S({P(0, 0), P(1, 0), P(1, 1), P(0, 0)}, closed_if(true)), "3 and 0");
   if (!is_exact<K>()) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     EXPECT_INVALID(S({P(0, 0), P(nan, 0), P(1, 1)}), "point 1");
@@ -409,14 +415,14 @@ TYPED_TEST(Csr, TypedErrorsNameTheProblem) {
     // Finite data whose combinations overflow double.
     fair::Csr_spline_options u;
     u.knot_spacing = fair::Knot_spacing::UNIFORM;
-    EXPECT_INVALID(S({P(0, 0), P(1e308, 0), P(-1e308, 1e308), P(1e308, -1e308)}, false, u), "not finite");
+    EXPECT_INVALID(S({P(0, 0), P(1e308, 0), P(-1e308, 1e308), P(1e308, -1e308)}, u), "not finite");
   }
   EXPECT_INVALID(S(four, {FT(0), FT(1), FT(1), FT(3)}), "1 and 2");
   EXPECT_INVALID(S(four, {FT(0), FT(1), FT(2)}), "needs 4");
-  EXPECT_INVALID(S(four, {FT(0), FT(1), FT(2), FT(3)}, true), "needs 5");
+  EXPECT_INVALID(S(four, {FT(0), FT(1), FT(2), FT(3)}, closed_if(true)), "needs 5");
   fair::Csr_spline_options o;
   o.relative_epsilon = -1;
-  EXPECT_THROW(S(four, false, o), fair::Precondition_error);
+  EXPECT_THROW(S(four, o), fair::Precondition_error);
   EXPECT_THROW(S(four).point_at_sample(4), fair::Precondition_error);
 }
 
@@ -432,7 +438,7 @@ TYPED_TEST(Csr_floating, EpsilonRules) {
   const std::vector<P> q = random_points<K>(rng, 10);
   fair::Csr_spline_options a, b;
   b.epsilon_rule = fair::Csr_epsilon_rule::ADD_TO_CURVATURES;
-  const fair::Csr_spline_2<K> sa(q, false, a), sb(q, false, b);
+  const fair::Csr_spline_2<K> sa(q, a), sb(q, b);
   for (std::size_t i = 0; i < sa.spline().control_points().size(); ++i)
     EXPECT_TRUE(same<K>(sa.spline().control_points()[i], sb.spline().control_points()[i], 1e-6));
   double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
@@ -562,7 +568,7 @@ TYPED_TEST(Csr_floating, ControlPointsMatchAnIndependentConstructionOfEq6) {
     oracle.uniform_weights = true;
     const std::vector<std::array<double, 2>> averaged = oracle.control_points();
     oracle.uniform_weights = false;
-    const fair::Csr_spline_2<K> csr(q, closed);
+    const fair::Csr_spline_2<K> csr(q, closed_if(closed));
     const std::vector<P>& got = csr.spline().control_points();
     ASSERT_EQ(got.size(), expected.size()) << (closed ? "closed" : "open");
     double worst = 0, spread = 0, to_averaged = 0;
@@ -596,7 +602,7 @@ TYPED_TEST(Csr_floating, Fig2FewerCurvatureExtremaThanTheClassicInterpolant) {
   typedef typename K::Point_2 P;
   const std::vector<P> q = fig2_samples<K>();
   const fair::Csr_spline_2<K> csr(q);
-  const fair::Cubic_interpolating_spline_2<K> classic(q, fair::Spline_end_condition::NATURAL, fair::Knot_spacing::CHORDAL);
+  const fair::Cubic_interpolating_spline_2<K> classic(q, fair::Cubic_interpolating_spline_options{false, fair::Spline_end_condition::NATURAL, fair::Knot_spacing::CHORDAL});
   const fair::Feature_report ec = fair::curvature_extrema(pieces_between(csr.pieces(), 8, 14));
   const fair::Feature_report ei = fair::curvature_extrema(pieces_between(classic.pieces(), 8, 14));
   ASSERT_TRUE(ec.certified);

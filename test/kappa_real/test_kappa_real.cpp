@@ -461,16 +461,21 @@ void expect_interpolant(const char* method, Make make, std::size_t min_open = 3,
 }
 
 TEST(KappaRealInterpolants, CardinalSplineWithOptimalParameters) {
-  expect_interpolant("Cardinal_spline_2::optimal", [](const std::vector<Point>& q, bool closed, bool&) {
-    return fair::Cardinal_spline_2<K>::optimal(q, closed).pieces();
-  }, 4);  // optimal_cardinal_parameters: an open curve needs 4 points
+  // Without options.alpha: alpha* of eq. 18, Catmull-Rom where it has no positive optimum.
+  expect_interpolant("Cardinal_spline_2", [](const std::vector<Point>& q, bool closed, bool&) {
+    fair::Cardinal_spline_options o;
+    o.closed = closed;
+    return fair::Cardinal_spline_2<K>(q, o).pieces();
+  }, 4);  // eq. 18: an open curve needs 4 points
 }
 
 TEST(KappaRealInterpolants, CsrSpline) {
   // An approximant: only the ends of an open curve are at the data (Csr_spline_2.h).
   expect_interpolant("Csr_spline_2", [](const std::vector<Point>& q, bool closed, bool& interpolates) {
     interpolates = false;
-    const fair::Csr_spline_2<K> s(q, closed);
+    fair::Csr_spline_options o;
+    o.closed = closed;
+    const fair::Csr_spline_2<K> s(q, o);
     EXPECT_TRUE(std::isfinite(s.max_distance_to_samples()));
     return s.pieces();
   }, 3, 4);
@@ -478,15 +483,16 @@ TEST(KappaRealInterpolants, CsrSpline) {
 
 TEST(KappaRealInterpolants, CatmullRomCentripetal) {
   expect_interpolant("Catmull_rom_2 (centripetal)", [](const std::vector<Point>& q, bool closed, bool&) {
-    return fair::Catmull_rom_2<K>(q, closed, fair::Knot_spacing::CENTRIPETAL).pieces();
+    return fair::Catmull_rom_2<K>(q, fair::Catmull_rom_options{closed, fair::Knot_spacing::CENTRIPETAL}).pieces();
   });
 }
 
 TEST(KappaRealInterpolants, CubicInterpolatingSplineChordal) {
   expect_interpolant("Cubic_interpolating_spline_2 (chordal)", [](const std::vector<Point>& q, bool closed, bool&) {
+    // closed: periodic; open: natural ends
     return fair::Cubic_interpolating_spline_2<K>(
-               q, closed ? fair::Spline_end_condition::PERIODIC : fair::Spline_end_condition::NATURAL,
-               fair::Knot_spacing::CHORDAL).pieces();
+               q, fair::Cubic_interpolating_spline_options{closed, fair::Spline_end_condition::NATURAL,
+                                                           fair::Knot_spacing::CHORDAL}).pieces();
   });
 }
 

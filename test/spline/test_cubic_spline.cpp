@@ -316,8 +316,10 @@ TYPED_TEST(Cubic_spline, ClassicCubicMethodsProduceIt) {
   std::mt19937 rng(37);
   for (int closed = 0; closed < 2; ++closed) {
     const auto p = fair_test::random_points<K>(rng, 9);
-    const auto end = closed ? fair::Spline_end_condition::PERIODIC : fair::Spline_end_condition::NATURAL;
-    const fair::Cubic_interpolating_spline_2<K> interpolant(p, end, fair::Knot_spacing::CHORDAL);
+    fair::Cubic_interpolating_spline_options io;  // closed: periodic; open: natural
+    io.closed = closed == 1;
+    io.knot_spacing = fair::Knot_spacing::CHORDAL;
+    const fair::Cubic_interpolating_spline_2<K> interpolant(p, io);
     expect_spline_is_the_method<K>(interpolant, 1e-12);
     for (std::size_t i = 0; i < p.size(); ++i)
       EXPECT_TRUE(same<K>(interpolant.spline().point(interpolant.knots()[i]), p[i], 1e-12));
@@ -326,9 +328,13 @@ TYPED_TEST(Cubic_spline, ClassicCubicMethodsProduceIt) {
     // B-spline segment formula instead (Bezier points (d0 + 4 d1 + d2)/6, (2 d1 + d2)/3, ...)
     for (int method = 0; method < 3; ++method) {
       if (method == 2 && closed) continue;
-      const fair::Cubic_bspline_2<K> bs(p, closed == 1, method == 2 ? fair::Cubic_bspline_ends::TRIMMED
-                                                                      : fair::Cubic_bspline_ends::INTERPOLATE_END_POINTS);
-      const fair::Cubic_quasi_interpolant_2<K> qi(p, closed == 1);
+      fair::Cubic_bspline_options bo;
+      bo.closed = closed == 1;
+      bo.ends = method == 2 ? fair::Cubic_bspline_ends::TRIMMED : fair::Cubic_bspline_ends::INTERPOLATE_END_POINTS;
+      fair::Cubic_quasi_interpolant_options qo;
+      qo.closed = closed == 1;
+      const fair::Cubic_bspline_2<K> bs(p, bo);
+      const fair::Cubic_quasi_interpolant_2<K> qi(p, qo);
       const auto& d = method == 1 ? qi.control_polygon() : bs.control_polygon();
       const auto& s = method == 1 ? qi.spline() : bs.spline();
       const std::size_t n = d.size(), pieces = closed ? n : n - 3;
@@ -354,7 +360,9 @@ TYPED_TEST(Cubic_spline, ClassicCubicMethodsProduceIt) {
   }
   // closed uniform B-spline: the data are the periodic control points themselves
   const auto p = fair_test::random_points<K>(rng, 5);
-  const fair::Cubic_bspline_2<K> b(p, true);
+  fair::Cubic_bspline_options closed_options;
+  closed_options.closed = true;
+  const fair::Cubic_bspline_2<K> b(p, closed_options);
   for (std::size_t i = 0; i < p.size(); ++i) EXPECT_TRUE(same<K>(b.spline().control_points()[i], p[i]));
 }
 
@@ -378,7 +386,9 @@ TYPED_TEST(Cubic_spline, ClassicInterpolantOnVeryNonUniformKnots) {
   typedef typename K::Point_2 P;
   for (double e : {1e-6, 1e-8, 1e-10}) {
     const std::vector<P> p{P(0, 0), P(1, 0), P(1 + e, e), P(2, 1), P(3, 0), P(4, 1)};
-    const fair::Cubic_interpolating_spline_2<K> c(p, fair::Spline_end_condition::NATURAL, fair::Knot_spacing::CHORDAL);
+    fair::Cubic_interpolating_spline_options chordal;
+    chordal.knot_spacing = fair::Knot_spacing::CHORDAL;
+    const fair::Cubic_interpolating_spline_2<K> c(p, chordal);
     for (std::size_t i = 0; i < p.size(); ++i) EXPECT_TRUE(same<K>(c.spline().point(c.knots()[i]), p[i], 1e-12)) << e;
   }
 }

@@ -233,8 +233,7 @@ TYPED_TEST(SurfaceRender, CurvatureJumpKinksTheStripesAndC2DoesNot) {
   for (int k = 0; k < 4; ++k) samples.push_back(P(1, -1 + 0.25 * k));
   const double half_pi = 2 * std::atan(1.0);
   for (int k = 0; k <= 6; ++k) samples.push_back(P(std::cos(half_pi * k / 6), std::sin(half_pi * k / 6)));
-  const fair::Cubic_interpolating_spline_2<TypeParam> c2(samples, fair::Spline_end_condition::NATURAL,
-                                                         fair::Knot_spacing::CHORDAL);
+  const fair::Cubic_interpolating_spline_2<TypeParam> c2(samples, fair::Cubic_interpolating_spline_options{false, fair::Spline_end_condition::NATURAL, fair::Knot_spacing::CHORDAL});
   const double kink_g1 = stripe_kink(g1, 1.0, o);
   const double kink_c2 = stripe_kink(c2.pieces(), 4.0, o);
   std::printf("stripe kink: G1 %.5f, C2 %.5f\n", kink_g1, kink_c2);
