@@ -653,6 +653,21 @@ TEST(IoReports, KappaAndOptimalReportsSerialiseEveryMember) {
   fair::io::write_json(out, fair::io::to_json(fair::Optimal_curve_report()));
   EXPECT_NE(out.str().find("\"unsolved\""), std::string::npos);
   EXPECT_NE(out.str().find("\"capped\""), std::string::npos);
+  // Cardinal: exact numbers as "p/q" (alpha* of data set 1 of [Li]), doubles as numbers.
+  fair::Cardinal_spline_report<SC_gmpq> c;
+  c.status = fair::Cardinal_spline_status::OPTIMAL;
+  c.alpha = CGAL::Gmpq(9192, 12241);
+  c.aux_start = SC_gmpq::Point_2(CGAL::Gmpq(1, 3), 2);
+  c.energy = CGAL::Gmpq(5, 2);
+  const nlohmann::json cj = fair::io::to_json(c);
+  EXPECT_EQ(cj["status"], "optimal");
+  EXPECT_EQ(cj["alpha"], "9192/12241");
+  EXPECT_EQ(cj["aux_start"], nlohmann::json::array({"1/3", 2.0}));
+  EXPECT_EQ(cj["aux_end"], nlohmann::json::array({0.0, 0.0}));
+  EXPECT_EQ(cj["energy"], 2.5);
+  fair::Cardinal_spline_report<SC_double> d;
+  EXPECT_EQ(fair::io::to_json(d)["status"], "no_optimum");
+  EXPECT_EQ(fair::io::to_json(d)["alpha"], 0.5);
 }
 
 // Each spelling table reads back what it writes, agrees with the library's to_string where the
@@ -685,6 +700,7 @@ TEST(IoSpellings, EveryTableRoundTrips) {
   expect_spellings_round_trip<fair::Curvature_discretisation>(3);
   expect_spellings_round_trip<fair::Point_constraint_kind>(3);
   expect_spellings_round_trip<fair::Optimal_curve_status>(3);
+  expect_spellings_round_trip<fair::Cardinal_spline_status>(3);
   for (fair::Knot_spacing k : {fair::Knot_spacing::UNIFORM, fair::Knot_spacing::CENTRIPETAL, fair::Knot_spacing::CHORDAL})
     EXPECT_STREQ(fair::io::spelling(k), fair::to_string(k));
   for (fair::Kappa_curve_status k :

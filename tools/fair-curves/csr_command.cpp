@@ -39,9 +39,10 @@ void run_csr(const Csr_command_options& o) {
   const bool closed = o.closed || data.closed;
   fair::io::check_point_file(data, closed ? 4 : 3, closed, "fair-curves csr");
   fair::Csr_spline_options options;
+  options.closed = closed;
   options.knot_spacing = spacing;
-  const fair::Csr_spline_2<K> csr(data.points, closed, options);
-  const auto pieces = csr.pieces();
+  const fair::Csr_spline_2<K> csr(data.points, options);
+  const auto& pieces = csr.pieces();
   const std::vector<double> distances = csr.distances_to_samples();
   const double max_distance = csr.max_distance_to_samples();
 
@@ -57,9 +58,7 @@ void run_csr(const Csr_command_options& o) {
                                {"distances_to_samples", d},
                                {"max_distance_to_samples", max_distance}};
     std::ostringstream s;
-    nlohmann::json j = fair::io::curve_to_json("csr", closed, data.points, pieces, extra);
-    j["bspline"] = fair::io::spline_to_json(csr.spline());
-    fair::io::write_json(s, j);
+    fair::io::write_json(s, fair::io::family_to_json(csr, "csr", extra));
     json_text = s.str();
   }
   if (!o.svg_out.empty() || !o.plot_out.empty()) {

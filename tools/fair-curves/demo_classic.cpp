@@ -110,6 +110,12 @@ void add_classic_cases(fair_curves::Gallery& gallery) {
       "Where the curvature of the data changes abruptly, these constructions overshoot and their curvature "
       "oscillates. See doc/classic_interpolants.md for continuity, reproduction and exactness of each.");
   const std::vector<Point_2> data = semicircle_and_parabola();
+  fair::Cubic_interpolating_spline_options chordal;
+  chordal.knot_spacing = fair::Knot_spacing::CHORDAL;
+  fair::Catmull_rom_options centripetal;
+  centripetal.knot_spacing = fair::Knot_spacing::CENTRIPETAL;
+  fair::Four_point_subdivision_options relaxed;
+  relaxed.variant = fair::Four_point_variant::RELAXED;
 
   add_piece_case(gallery, fair::Cubic_interpolating_spline_2<Kernel>(data).pieces(), data,
                  "C2 cubic interpolating spline, natural, uniform knots",
@@ -117,12 +123,10 @@ void add_classic_cases(fair_curves::Gallery& gallery) {
                  "by the Thomas algorithm; zero curvature at both ends (natural end conditions).",
                  false);
   add_piece_case(gallery,
-                 fair::Cubic_interpolating_spline_2<Kernel>(data, fair::Spline_end_condition::NATURAL,
-                                                            fair::Knot_spacing::CHORDAL)
-                     .pieces(),
+                 fair::Cubic_interpolating_spline_2<Kernel>(data, chordal).pieces(),
                  data, "C2 cubic interpolating spline, natural, chordal knots",
                  "The same spline with knot intervals equal to the chord lengths.", false);
-  add_piece_case(gallery, fair::Catmull_rom_2<Kernel>(data, false, fair::Knot_spacing::CENTRIPETAL).pieces(), data,
+  add_piece_case(gallery, fair::Catmull_rom_2<Kernel>(data, centripetal).pieces(), data,
                  "Catmull-Rom spline, centripetal knots",
                  "Local C1 interpolation: the tangent at each point is that of the parabola through it and its two "
                  "neighbours. Curvature jumps at every data point.",
@@ -142,7 +146,7 @@ void add_classic_cases(fair_curves::Gallery& gallery) {
                     "4-point subdivision (Dyn, Levin, Gregory), w = 1/16, 5 rounds",
                     "The interpolatory 4-point scheme: C1 limit, reproduces cubics.");
   add_polyline_case(gallery,
-                    fair::Four_point_subdivision_2<Kernel>(data, false, fair::Four_point_variant::RELAXED).refine(5),
+                    fair::Four_point_subdivision_2<Kernel>(data, relaxed).refine(5),
                     data, "Relaxed 4-point subdivision, gamma = -3/128, 5 rounds",
                     "Old points move by gamma times their fourth difference: C2 limit, reproduces cubics, does not "
                     "interpolate (compare Fig. 2d of Karciauskas and Peters, which uses the relaxed scheme of "
