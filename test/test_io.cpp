@@ -1,8 +1,16 @@
-// Tests of fair/io: reading point files (CSV, JSON), the exact line of every parse error, and
-// the JSON/CSV writers (round trips, exact rationals, refusal to write non-finite numbers).
+// Tests of fair/io: reading point files (CSV, JSON), number files (tensions, lambdas, constraints)
+// and curve JSON, the exact line of every parse error, the JSON/CSV writers (round trips, exact
+// rationals, refusal to write non-finite numbers, the one curve JSON, the reports) and the enum
+// spellings.
 
 #include <fair/Bezier_2.h>
+#include <fair/Cubic_spline_2.h>
+#include <fair/Rational_bezier_2.h>
+#include <fair/io/enum_names.h>
 #include <fair/io/parsing.h>
+#include <fair/io/read_constraints.h>
+#include <fair/io/read_curve.h>
+#include <fair/io/read_numbers.h>
 #include <fair/io/read_points.h>
 #include <fair/io/write_json.h>
 
@@ -414,6 +422,293 @@ TEST(IoWriters, NumberTextIsExact) {
   EXPECT_EQ(fair::io::number_text(-2.5), "-2.5");
   EXPECT_THROW(fair::io::number_text(std::numeric_limits<double>::quiet_NaN(), "alpha"), fair::Precondition_error);
   EXPECT_THROW(fair::io::number_text(std::numeric_limits<double>::infinity()), fair::Precondition_error);
+}
+
+// ------------------------------------------------------------------ number files
+
+// Every number file reads the numbers of a point file: decimals, exact p/q, '+', ".5", blanks or
+// commas, comments, CRLF; and refuses the same bad numbers at their line.
+TEST(IoNumberFiles, TensionsAcceptTheGrammarOfPointFiles) {
+  const std::vector<double> t =
+      fair::io::parse_tensions("# mu per point\n1\n1/2   # half\r\n\n+.5\n3/4\n2e0\n", "t.txt", 5);
+  EXPECT_EQ(t, (std::vector<double>{1, 0.5, 0.5, 0.75, 2}));
+  EXPECT_EQ(fair::io::parse_tensions("7/3\n", "t.txt", 0), std::vector<double>{7.0 / 3.0});  // correctly rounded
+  // Malformed, wrong count, NaN, inf, <= 0: Parse_error at the line (0: the whole file).
+  const Parse_case bad[] = {{"1\nabc\n1\n", 2},    {"1\n1 2\n1\n", 2},   {"1\nnan\n1\n", 2},
+                            {"1\n1\n-inf\n", 3},   {"1\n0\n1\n", 2},     {"1\n-1/2\n1\n", 2},
+                            {"1\n1/0\n1\n", 2},    {"1\n0x10\n1\n", 2},  {"1\n1e999\n1\n", 2},
+                            {"1\n1\n", 0},          {"1\n1\n1\n1\n", 0}, {"# nothing\n", 0},
+                            {"1\n2,\n1\n", 2},     {"1\n1\x01\n1\n", 2}};
+  for (const Parse_case& c : bad)
+    expect_parse_error([&] { fair::io::parse_tensions(c.text, "t.txt", 3); }, "t.txt", c.line);
+  EXPECT_NE(expect_parse_error([&] { fair::io::parse_tensions("1\nNaN\n1\n", "t.txt", 3); }, "t.txt", 2).find("NaN"),
+            std::string::npos);
+  EXPECT_NE(expect_parse_error([&] { fair::io::parse_tensions("1\n1\n", "t.txt", 3); }, "t.txt", 0)
+                .find("3 lines, got 2"),
+            std::string::npos);
+  expect_parse_error([] { fair::io::read_tensions(data_dir + "no-such-tension-file.txt", 3); },
+                     data_dir + "no-such-tension-file.txt", 0);
+}
+
+TEST(IoNumberFiles, SegmentLambdasInTheUnitIntervalOnePerSegment) {
+  EXPECT_EQ(fair::io::parse_segment_lambdas("0\n 1/4 \n1\n", "l.txt", 3), (std::vector<double>{0, 0.25, 1}));
+  const Parse_case bad[] = {{"0\n5/4\n1\n", 2}, {"0\n-1/4\n1\n", 2}, {"0\ninf\n1\n", 2},
+                            {"0\nnan\n1\n", 2}, {"0\n0.5 0.5\n1\n", 2}, {"0\nhalf\n1\n", 2},
+                            {"0\n1\n", 0},       {"0\n0\n0\n0\n", 0}};
+  for (const Parse_case& c : bad)
+    expect_parse_error([&] { fair::io::parse_segment_lambdas(c.text, "l.txt", 3); }, "l.txt", c.line);
+}
+
+TEST(IoNumberFiles, ConstraintsWithExactNumbersIndicesAndDuplicates) {
+  using fair::Point_constraint_kind;
+  const fair::io::Constraint_file t =
+      fair::io::parse_constraints("# i tx ty\n0 1/2 1\n\n4, -3/4, +2\n", "t.txt", Point_constraint_kind::TANGENT, 5);
+  ASSERT_EQ(t.constraints.size(), 2u);
+  EXPECT_EQ(t.lines, (std::vector<std::size_t>{2, 4}));
+  EXPECT_EQ(t.constraints[0].index, 0u);
+  EXPECT_EQ(t.constraints[0].direction[0], 0.5);
+  EXPECT_EQ(t.constraints[1].index, 4u);
+  EXPECT_EQ(t.constraints[1].direction[0], -0.75);
+  EXPECT_EQ(t.constraints[1].direction[1], 2.0);
+  EXPECT_EQ(t.constraints[1].kind, Point_constraint_kind::TANGENT);
+  const fair::io::Constraint_file c =
+      fair::io::parse_constraints("2 1 0 0 1\n", "c.txt", Point_constraint_kind::CORNER, 5);
+  ASSERT_EQ(c.constraints.size(), 1u);
+  EXPECT_EQ(c.constraints[0].outgoing[1], 1.0);
+  EXPECT_EQ(c.constraints[0].kind, Point_constraint_kind::CORNER);
+  // An integral index may be written any way the number grammar allows ("4/2" is 2).
+  EXPECT_EQ(fair::io::parse_constraints("4/2 1 0\n", "n.txt", Point_constraint_kind::NORMAL, 5).constraints[0].index,
+            2u);
+  const Parse_case bad[] = {{"0 1 0\n1.5 1 0\n", 2}, {"0 1 0\n-1 1 0\n", 2},  {"0 1 0\n5 1 0\n", 2},
+                            {"0 1 0\n1 0 0\n", 2},   {"0 1 0\n0 0 1\n", 2},   {"0 1 0\n1 nan 1\n", 2},
+                            {"0 1 0\n1 1 inf\n", 2}, {"0 1 0\n1 1\n", 2},     {"0 1 0\n1 1 0 0\n", 2},
+                            {"0 1 0\n1/2 1 0\n", 2}, {"0 1 0\n1 x 0\n", 2}};
+  for (const Parse_case& b : bad)
+    expect_parse_error([&] { fair::io::parse_constraints(b.text, "t.txt", Point_constraint_kind::TANGENT, 5); },
+                       "t.txt", b.line);
+  expect_parse_error([] { fair::io::parse_constraints("1 1 0 0 0\n", "c.txt", Point_constraint_kind::CORNER, 5); },
+                     "c.txt", 1);  // zero outgoing tangent
+  // One point constrained in two files: the second names the first.
+  const fair::io::Constraint_file a = fair::io::parse_constraints("1 1 0\n", "a.txt", Point_constraint_kind::TANGENT, 5);
+  const fair::io::Constraint_file b =
+      fair::io::parse_constraints("3 0 1 1 0\n\n1 0 1 1 0\n", "b.txt", Point_constraint_kind::CORNER, 5);
+  const std::string m = expect_parse_error([&] { fair::io::merge_constraint_files({a, b}); }, "b.txt", 3);
+  EXPECT_NE(m.find("point 1 is already constrained (a.txt:1)"), std::string::npos) << m;
+  EXPECT_EQ(fair::io::merge_constraint_files({a, c}).size(), 2u);
+}
+
+// ------------------------------------------------------------------ curve JSON
+
+// curve_to_json writes what read_curve_json reads: exactly, "p/q" included, in an exact kernel.
+TEST(IoCurveJson, RoundTripIsExactAndKeepsWeights) {
+  typedef SC_gmpq K;
+  typedef K::Point_2 P;
+  typedef K::FT FT;
+  const std::vector<P> points = {P(0, 0), P(FT(7, 3), 1)};
+  std::vector<fair::Rational_bezier_2<K>> pieces = {
+      fair::Rational_bezier_2<K>({P(0, 0), P(1, FT(1, 3)), P(FT(7, 3), 1)}, {FT(1), FT(2, 7), FT(1)}),
+      fair::Rational_bezier_2<K>({P(FT(7, 3), 1), P(3, 2), P(4, 2), P(5, FT(-1, 10))}, {FT(1), FT(1), FT(3), FT(1)})};
+  std::vector<nlohmann::json> per_piece = {{{"point", 1}, {"t", 0.25}}, {{"point", 2}, {"t", 0.75}}};
+  const nlohmann::json j = fair::io::curve_to_json("test", true, points, pieces, {{"status", "fine"}}, per_piece);
+  EXPECT_EQ(j["method"], "test");
+  EXPECT_EQ(j["closed"], true);
+  EXPECT_EQ(j["points"][1][0], "7/3");
+  EXPECT_EQ(j["status"], "fine");
+  EXPECT_EQ(j["pieces"][0]["degree"], 2);
+  EXPECT_EQ(j["pieces"][0]["weights"][1], "2/7");
+  EXPECT_EQ(j["pieces"][1]["point"], 2);
+  EXPECT_EQ(j["pieces"][1]["t"], 0.75);
+  const fair::io::Curve_file<K> f = fair::io::parse_curve_json<K>(j.dump(2), "c.json");
+  EXPECT_EQ(f.method, "test");
+  EXPECT_TRUE(f.closed);
+  EXPECT_TRUE(f.rational);
+  ASSERT_EQ(f.pieces.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(f.pieces[i].control_points(), pieces[i].control_points());
+    EXPECT_EQ(f.pieces[i].weights(), pieces[i].weights());
+  }
+  // A polynomial curve (no "weights"): unit weights, not rational.
+  std::vector<fair::Bezier_2<K>> cubic = {fair::Bezier_2<K>(std::vector<P>{P(0, 0), P(FT(1, 3), 1), P(2, 1), P(3, 0)})};
+  const fair::io::Curve_file<K> g = fair::io::parse_curve_json<K>(fair::io::curve_to_json(cubic).dump(), "p.json");
+  EXPECT_FALSE(g.rational);
+  EXPECT_EQ(g.polynomial_pieces()[0].control_points(), cubic[0].control_points());
+  // The writer refuses a piece extra per piece of another count, or one that redefines a member.
+  EXPECT_THROW(fair::io::curve_to_json("test", false, points, pieces, nlohmann::json::object(),
+                                       std::vector<nlohmann::json>{per_piece[0]}),
+               fair::Precondition_error);
+  EXPECT_THROW(fair::io::curve_to_json("test", false, points, pieces, nlohmann::json::object(),
+                                       std::vector<nlohmann::json>{nlohmann::json{{"degree", 1}}, nlohmann::json{{"t", 1}}}),
+               fair::Precondition_error);
+  EXPECT_THROW(fair::io::curve_to_json("test", false, points, pieces, {{"method", "other"}}), fair::Precondition_error);
+}
+
+TEST(IoCurveJson, EveryMalformedCurveGivesParseErrorAtItsLine) {
+  typedef SC_double K;
+  const Parse_case bad[] = {
+      {"x,y\n1,2\n", 1},                                           // a CSV
+      {"[1, 2]", 1},                                                 // not an object
+      {"{\"points\": [[0, 0]]}", 1},                                // no pieces
+      {"{\n\"pieces\": []}", 2},                                    // empty
+      {"{\"pieces\": [\n3]}", 2},                                   // a piece that is not an object
+      {"{\"pieces\": [\n{\"degree\": 1}]}", 2},                     // no control points
+      {"{\"pieces\": [{\"control_points\": [\n[0]]}]}", 2},          // not a pair
+      {"{\"pieces\": [{\"control_points\": [[0, 0], [1,\n\"NaN\"]]}]}", 2},
+      {"{\"pieces\": [{\"control_points\": [[0, 0], [1,\n\"1/0\"]]}]}", 2},
+      {"{\"pieces\": [{\"control_points\": [[0, 0], [1, 1]],\n\"degree\": 2}]}", 2},
+      {"{\"pieces\": [{\"control_points\": [[0, 0], [1, 1]],\n\"weights\": [1]}]}", 2},
+      {"{\"pieces\": [{\"control_points\": [[0, 0], [1, 1]], \"weights\": [1,\n0]}]}", 2},
+      {"{\"pieces\": [{\"control_points\": [[0, 0], [1, 1]], \"weights\": [1,\n\"-1/2\"]}]}", 2},
+      {"{\"closed\":\n1, \"pieces\": [{\"control_points\": [[0, 0], [1, 1]]}]}", 2},
+      {"", 0}};
+  for (const Parse_case& c : bad) expect_parse_error([&] { fair::io::parse_curve_json<K>(c.text, "c.json"); }, "c.json", c.line);
+  EXPECT_NE(expect_parse_error([] { fair::io::parse_curve_json<K>("x,y\n", "c.json"); }, "c.json", 1)
+                .find("expected a curve JSON"),
+            std::string::npos);
+  expect_parse_error([] { fair::io::read_curve_json<K>(data_dir + "no-such-curve.json"); }, data_dir + "no-such-curve.json", 0);
+}
+
+// family_to_json writes what each family has, through the one writer of pieces: a curve with a
+// report and a B-spline (as optimal curves and csr-splines have) gets "status", "report" and
+// "bspline" beside "method", "closed", "points" and "pieces".
+struct Reporting_spline_curve {
+  typedef SC_double K;
+  fair::Cubic_spline_2<K> s;
+  std::vector<K::Point_2> input;
+  fair::Optimal_curve_report r;
+  const std::vector<K::Point_2>& points() const { return input; }
+  std::vector<fair::Bezier_2<K>> pieces() const { return s.polynomial_pieces(); }
+  bool is_closed() const { return s.is_closed(); }
+  const fair::Cubic_spline_2<K>& spline() const { return s; }
+  const fair::Optimal_curve_report& report() const { return r; }
+};
+struct Plain_curve {
+  typedef SC_double K;
+  std::vector<K::Point_2> input;
+  std::vector<fair::Bezier_2<K>> p;
+  const std::vector<K::Point_2>& points() const { return input; }
+  const std::vector<fair::Bezier_2<K>>& pieces() const { return p; }
+  bool is_closed() const { return false; }
+};
+
+TEST(IoCurveJson, FamilyToJsonWritesWhatTheFamilyHas) {
+  typedef SC_double K;
+  typedef K::Point_2 P;
+  const std::vector<double> t = {0, 1, 3};
+  const std::vector<P> d = {P(0, 0), P(1, 2), P(2, 2), P(3, 0), P(5, 1)};  // open: m + 3 control points
+  Reporting_spline_curve c{fair::Cubic_spline_2<K>(t, d, false), {P(0, 0), P(5, 1)}, fair::Optimal_curve_report()};
+  c.r.status = fair::Optimal_curve_status::CONVERGED;
+  const nlohmann::json j = fair::io::family_to_json(c, "mock", {{"extra", 1}});
+  EXPECT_EQ(j["method"], "mock");
+  EXPECT_EQ(j["closed"], false);
+  EXPECT_EQ(j["points"][1], nlohmann::json::array({5.0, 1.0}));
+  EXPECT_EQ(j["status"], "converged");
+  EXPECT_EQ(j["report"], fair::io::to_json(c.r));
+  EXPECT_EQ(j["bspline"], fair::io::spline_to_json(c.s));
+  EXPECT_EQ(j["extra"], 1);
+  ASSERT_EQ(j["pieces"].size(), 2u);
+  EXPECT_EQ(j["pieces"], fair::io::curve_to_json(c.pieces())["pieces"]);
+  EXPECT_THROW(fair::io::family_to_json(c, "mock", {{"report", 1}}), fair::Precondition_error);
+  const Plain_curve plain{{P(0, 0), P(1, 1)}, {fair::Bezier_2<K>(std::vector<P>{P(0, 0), P(1, 1)})}};
+  const nlohmann::json k = fair::io::family_to_json(plain, "plain");
+  EXPECT_FALSE(k.contains("status"));
+  EXPECT_FALSE(k.contains("report"));
+  EXPECT_FALSE(k.contains("bspline"));
+  EXPECT_EQ(k["pieces"][0]["degree"], 1);
+}
+
+// ------------------------------------------------------------------ reports and spellings
+
+TEST(IoReports, KappaAndOptimalReportsSerialiseEveryMember) {
+  fair::Kappa_curve_report k;
+  k.status = fair::Kappa_curve_status::ON_JOINS;
+  k.iterations = 12;
+  k.residual = 1e-13;
+  k.energy_g2 = 0.25;
+  k.energy_weight = 0.5;
+  k.points_on_joins = {0, 7};
+  k.worst_points = {fair::Kappa_point_residual{3, 0.125}};
+  const nlohmann::json kj = fair::io::to_json(k);
+  EXPECT_EQ(kj["status"], "on_joins");
+  EXPECT_EQ(kj["iterations"], 12);
+  EXPECT_EQ(kj["residuals"]["max"], 1e-13);
+  EXPECT_EQ(kj["energy"]["total"], 0.75);
+  EXPECT_EQ(kj["points_on_joins"], nlohmann::json::array({0, 7}));
+  EXPECT_EQ(kj["worst_points"][0]["point"], 3);
+  EXPECT_EQ(kj["worst_points"][0]["residual"], 0.125);
+  EXPECT_TRUE(kj["points_at_minima"].is_array());
+  fair::Optimal_curve_report o;
+  o.status = fair::Optimal_curve_status::DIVERGING;
+  o.energy = 2.5;
+  o.levels = {fair::Optimal_curve_level{5, 3, 3.5, 1e-9, fair::Optimal_curve_status::CONVERGED},
+              fair::Optimal_curve_level{9, 40, 2.5, 1e3, fair::Optimal_curve_status::DIVERGING}};
+  const nlohmann::json oj = fair::io::to_json(o);
+  EXPECT_EQ(oj["status"], "diverging");
+  EXPECT_EQ(oj["energy"], 2.5);
+  ASSERT_EQ(oj["levels"].size(), 2u);
+  EXPECT_EQ(oj["levels"][0]["status"], "converged");
+  EXPECT_EQ(oj["levels"][1]["vertices"], 9);
+  // A default report is written too (every member initialised), and never with a NaN.
+  std::ostringstream out;
+  fair::io::write_json(out, fair::io::to_json(fair::Kappa_curve_report()));
+  fair::io::write_json(out, fair::io::to_json(fair::Optimal_curve_report()));
+  EXPECT_NE(out.str().find("\"unsolved\""), std::string::npos);
+  EXPECT_NE(out.str().find("\"capped\""), std::string::npos);
+  // Cardinal: exact numbers as "p/q" (alpha* of data set 1 of [Li]), doubles as numbers.
+  fair::Cardinal_spline_report<SC_gmpq> c;
+  c.status = fair::Cardinal_spline_status::OPTIMAL;
+  c.alpha = CGAL::Gmpq(9192, 12241);
+  c.aux_start = SC_gmpq::Point_2(CGAL::Gmpq(1, 3), 2);
+  c.energy = CGAL::Gmpq(5, 2);
+  const nlohmann::json cj = fair::io::to_json(c);
+  EXPECT_EQ(cj["status"], "optimal");
+  EXPECT_EQ(cj["alpha"], "9192/12241");
+  EXPECT_EQ(cj["aux_start"], nlohmann::json::array({"1/3", 2.0}));
+  EXPECT_EQ(cj["aux_end"], nlohmann::json::array({0.0, 0.0}));
+  EXPECT_EQ(cj["energy"], 2.5);
+  fair::Cardinal_spline_report<SC_double> d;
+  EXPECT_EQ(fair::io::to_json(d)["status"], "no_optimum");
+  EXPECT_EQ(fair::io::to_json(d)["alpha"], 0.5);
+}
+
+// Each spelling table reads back what it writes, agrees with the library's to_string where the
+// library spells the enum, and refuses anything else with the list of spellings.
+template <class Enum>
+void expect_spellings_round_trip(std::size_t count) {
+  const auto& table = fair::io::Enum_spellings<Enum>::table();
+  EXPECT_EQ(table.size(), count);
+  for (const auto& e : table) {
+    EXPECT_EQ(fair::io::parse_spelling<Enum>(fair::io::spelling(e.first)), e.first);
+    Enum v{};
+    EXPECT_TRUE(fair::io::try_parse_spelling(std::string(e.second), v));
+    EXPECT_EQ(v, e.first);
+  }
+  Enum v{};
+  EXPECT_FALSE(fair::io::try_parse_spelling(std::string("no such spelling"), v));
+  try {
+    fair::io::parse_spelling<Enum>("Chordal ", "option");
+    FAIL() << "accepted a wrong spelling";
+  } catch (const fair::Invalid_input_error& e) {
+    EXPECT_EQ(std::string(e.what()), "option: expected " + fair::io::spellings_list<Enum>() + ", got 'Chordal '");
+  }
+}
+
+TEST(IoSpellings, EveryTableRoundTrips) {
+  expect_spellings_round_trip<fair::Knot_spacing>(3);
+  expect_spellings_round_trip<fair::Kappa_weights>(3);
+  expect_spellings_round_trip<fair::Kappa_curve_status>(3);
+  expect_spellings_round_trip<fair::Optimal_curve_solver>(2);
+  expect_spellings_round_trip<fair::Curvature_discretisation>(3);
+  expect_spellings_round_trip<fair::Point_constraint_kind>(3);
+  expect_spellings_round_trip<fair::Optimal_curve_status>(3);
+  expect_spellings_round_trip<fair::Cardinal_spline_status>(3);
+  for (fair::Knot_spacing k : {fair::Knot_spacing::UNIFORM, fair::Knot_spacing::CENTRIPETAL, fair::Knot_spacing::CHORDAL})
+    EXPECT_STREQ(fair::io::spelling(k), fair::to_string(k));
+  for (fair::Kappa_curve_status k :
+       {fair::Kappa_curve_status::INTERIOR, fair::Kappa_curve_status::ON_JOINS, fair::Kappa_curve_status::UNSOLVED})
+    EXPECT_STREQ(fair::io::spelling(k), fair::to_string(k));
+  EXPECT_EQ(fair::io::spellings_list<fair::Knot_spacing>(), "uniform, centripetal or chordal");
+  EXPECT_EQ(fair::io::spellings_list<fair::Optimal_curve_solver>(), "newton or cg");
+  EXPECT_THROW(fair::io::spelling(static_cast<fair::Knot_spacing>(17)), fair::Precondition_error);
 }
 
 } // namespace

@@ -16,9 +16,9 @@
 #                    (json_stdout MEMBER)
 #   JSON_FILE        a JSON file written by the command, checked with JSON_CHECKS (json_file)
 #   JSON_CHECKS      entries "PATH=TYPE" (TYPE: NUMBER, BOOLEAN, STRING, ARRAY or OBJECT) or
-#                    "PATH==TEXT" (a string member equal to TEXT) (json_checks). PATH is
+#                    "PATH==TEXT" (a string equal to TEXT, a number written TEXT, or true/false) (json_checks). PATH is
 #                    dot-separated member names and array indices; "*" stands for every element
-#                    of a nonempty array, e.g. "pieces.*.P0.0=NUMBER". A NaN or inf is never a
+#                    of a nonempty array, e.g. "pieces.*.control_points.0.0=NUMBER". A NaN or inf is never a
 #                    JSON NUMBER (it is written as null), so =NUMBER also checks that the value is
 #                    finite.
 cmake_minimum_required(VERSION 3.19) # string(JSON ...)
@@ -132,9 +132,21 @@ function(check_json_path json path expect_type expect_text)
     message(FATAL_ERROR "${JSON_FILE}: '${path}' is ${type}, expected ${expect_type}\n${context}")
   endif()
   if(NOT expect_text STREQUAL "")
+    # A string equal to TEXT, a number written as TEXT (as the writer writes it: "7", "0.05"), or
+    # the boolean true / false.
     string(JSON value GET "${json}" ${path})
-    if(NOT type STREQUAL "STRING" OR NOT value STREQUAL expect_text)
-      message(FATAL_ERROR "${JSON_FILE}: '${path}' is ${type} '${value}', expected the string '${expect_text}'\n${context}")
+    set(same FALSE)
+    if(type STREQUAL "STRING" OR type STREQUAL "NUMBER")
+      if(value STREQUAL expect_text)
+        set(same TRUE)
+      endif()
+    elseif(type STREQUAL "BOOLEAN")
+      if((value AND expect_text STREQUAL "true") OR (NOT value AND expect_text STREQUAL "false"))
+        set(same TRUE)
+      endif()
+    endif()
+    if(NOT same)
+      message(FATAL_ERROR "${JSON_FILE}: '${path}' is ${type} '${value}', expected '${expect_text}'\n${context}")
     endif()
   endif()
 endfunction()

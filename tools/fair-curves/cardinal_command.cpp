@@ -9,6 +9,7 @@
 
 #include <fair/Cardinal_spline_2.h>
 #include <fair/Fairness_metrics.h>
+#include <fair/io/enum_names.h>
 #include <fair/io/read_points.h>
 #include <fair/io/svg.h>
 #include <fair/io/write_json.h>
@@ -30,21 +31,22 @@ struct Cardinal_options {
   bool closed = false, exact = false;
 };
 
+/// Exit code of an optimal alpha that eq. 18 does not have (status no_optimum: the curve is
+/// the Catmull-Rom spline; outputs written).
+constexpr int no_optimum_exit_code = 3;
+
 // What `cardinal` computed, for the JSON, the report and the figures.
 template <class K>
 struct Cardinal_result {
-  typedef typename K::FT FT;
   fair::io::Point_file<K> data;
-  bool closed = false, optimal = false, explicit_aux = false;
-  FT alpha;
+  bool closed = false, explicit_aux = false;
   std::optional<fair::Cardinal_spline_2<K>> curve;
-  std::vector<typename fair::Cardinal_spline_2<K>::Piece> pieces;
-  FT energy_approx;
   fair::Quadrature_estimate energy_parameter, energy_arc_length;
 };
 
-// Reads and checks the input, then builds the spline: the optimum of eq. 18 or the given alpha,
-// with the given auxiliary points or those of eqs. 19-20.
+// Reads and checks the input, then builds the spline (fair::Cardinal_spline_2): the optimum of
+// eq. 18 with the auxiliary points of eqs. 19-20, or the given alpha with the given auxiliary
+// points or those optimal for it (eqs. 16-17).
 template <class K>
 Cardinal_result<K> compute_cardinal(const Cardinal_options& o) {
   typedef typename K::FT FT;
@@ -52,78 +54,65 @@ Cardinal_result<K> compute_cardinal(const Cardinal_options& o) {
   Cardinal_result<K> r;
   r.data = fair::io::read_point_file<K>(o.input);
   r.closed = o.closed || r.data.closed;
-  r.optimal = o.alpha == "optimal";
+  const bool optimal = o.alpha == "optimal";
   r.explicit_aux = !o.aux_start.empty() || !o.aux_end.empty();
   if (r.closed && r.explicit_aux)
     throw CLI::ValidationError("--aux-start/--aux-end", "a closed curve has no auxiliary points");
   if (r.explicit_aux && (o.aux_start.empty() || o.aux_end.empty()))
     throw CLI::ValidationError("--aux-start/--aux-end", "give both auxiliary points or neither");
-  const std::size_t minimum = r.optimal ? (r.closed ? 3 : 4) : (r.closed ? 3 : (r.explicit_aux ? 2 : 3));
+  const std::size_t minimum = optimal ? (r.closed ? 3 : 4) : (r.closed ? 3 : (r.explicit_aux ? 2 : 3));
   fair::io::check_point_file(r.data, minimum, r.closed, "fair-curves cardinal");
 
-  if (r.optimal) {
-    r.alpha = fair::optimal_cardinal_parameters(r.data.points, r.closed).alpha;
-  } else {
-    r.alpha = FT(fair_curves::option_number(o.alpha, "--alpha"));
-  }
-  if (r.closed) {
-    r.curve.emplace(r.data.points, r.alpha, true);
-  } else if (r.explicit_aux) {
+  fair::Cardinal_spline_options options;
+  options.closed = r.closed;
+  if (r.explicit_aux) {
     const fair_curves::Point_2 a = fair_curves::option_point(o.aux_start, "--aux-start");
     const fair_curves::Point_2 b = fair_curves::option_point(o.aux_end, "--aux-end");
-    r.curve.emplace(r.data.points, r.alpha, P(a.x(), a.y()), P(b.x(), b.y()));
+    r.curve.emplace(r.data.points, FT(fair_curves::option_number(o.alpha, "--alpha")), P(a.x(), a.y()), P(b.x(), b.y()),
+                    options);
   } else {
-    r.curve.emplace(r.data.points, r.alpha, false); // the auxiliary points of eqs. 19-20 for this alpha
+    if (!optimal) options.alpha = fair_curves::option_number(o.alpha, "--alpha");
+    r.curve.emplace(r.data.points, options);
   }
-  r.pieces = r.curve->pieces();
-  r.energy_approx = r.curve->approximate_energy();
-  r.energy_parameter = r.curve->curvature_variation_energy(fair::Energy_measure::PARAMETER);
-  r.energy_arc_length = r.curve->curvature_variation_energy(fair::Energy_measure::ARC_LENGTH);
+  r.energy_parameter = fair::curvature_variation_energy(r.curve->pieces(), fair::Energy_measure::PARAMETER);
+  r.energy_arc_length = fair::curvature_variation_energy(r.curve->pieces(), fair::Energy_measure::ARC_LENGTH);
   return r;
 }
 
-// The curve JSON: the pieces plus the method's parameters, energies and input.
+// The curve JSON: the pieces, the status and the report (alpha, auxiliary points, eq. 10), and
+// the true curvature variation of eq. 5.
 template <class K>
-nlohmann::json cardinal_json(const Cardinal_result<K>& r, const Cardinal_options& o) {
-  nlohmann::json extra{{"method", "cardinal"},
-                       {"closed", r.closed},
-                       {"alpha", CGAL::to_double(r.alpha)},
-                       {"alpha_choice", r.optimal ? "optimal (Li eq. 18)" : "given"},
-                       {"energy_approx", CGAL::to_double(r.energy_approx)},
-                       {"energy_true", r.energy_parameter.value},
-                       {"energy_true_error", r.energy_parameter.error_bound},
-                       {"energy_true_arc_length", r.energy_arc_length.value},
-                       {"input", fair::io::points_to_json(r.data.points, r.closed)}};
-  if (o.exact) {
-    extra["alpha_exact"] = fair::io::number_text(r.alpha);
-    extra["energy_approx_exact"] = fair::io::number_text(r.energy_approx);
-  }
-  if (!r.closed) {
-    extra["aux_start"] = fair::io::point_to_json(r.curve->aux_start(), "aux_start");
-    extra["aux_end"] = fair::io::point_to_json(r.curve->aux_end(), "aux_end");
-  }
-  return fair::io::curve_to_json(r.pieces, extra);
+nlohmann::json cardinal_json(const Cardinal_result<K>& r) {
+  const nlohmann::json extra{{"energy_true", r.energy_parameter.value},
+                             {"energy_true_error", r.energy_parameter.error_bound},
+                             {"energy_true_arc_length", r.energy_arc_length.value}};
+  return fair::io::family_to_json(*r.curve, "cardinal", extra);
 }
 
 // The text report (stdout unless the JSON goes there).
 template <class K>
 std::string cardinal_report(const Cardinal_result<K>& r, const Cardinal_options& o) {
   using fair_curves::format_number;
+  const fair::Cardinal_spline_2<K>& c = *r.curve;
   std::ostringstream report;
   report << "cardinal: " << r.data.points.size() << " points, " << (r.closed ? "closed" : "open") << ", "
-         << r.pieces.size() << " cubic pieces\n";
-  report << "alpha = " << format_number(CGAL::to_double(r.alpha), 10)
-         << (o.exact ? " = " + fair::io::number_text(r.alpha) : std::string())
-         << (r.optimal ? " (optimal, eq. 18)" : " (given)") << "\n";
+         << c.number_of_pieces() << " cubic pieces, " << c.status() << "\n";
+  const char* why = c.status() == fair::Cardinal_spline_status::OPTIMAL
+                        ? " (optimal, eq. 18)"
+                        : (c.status() == fair::Cardinal_spline_status::GIVEN_ALPHA
+                               ? " (given)"
+                               : " (eq. 18 has no positive optimum: Catmull-Rom)");
+  report << "alpha = " << format_number(CGAL::to_double(c.alpha()), 10)
+         << (o.exact ? " = " + fair::io::number_text(c.alpha()) : std::string()) << why << "\n";
   if (!r.closed) {
-    report << "aux_start = (" << format_number(CGAL::to_double(r.curve->aux_start().x()), 10) << ", "
-           << format_number(CGAL::to_double(r.curve->aux_start().y()), 10) << ")"
+    report << "aux_start = (" << format_number(CGAL::to_double(c.aux_start().x()), 10) << ", "
+           << format_number(CGAL::to_double(c.aux_start().y()), 10) << ")"
            << (r.explicit_aux ? " (given)" : " (eq. 19)") << "\n";
-    report << "aux_end = (" << format_number(CGAL::to_double(r.curve->aux_end().x()), 10) << ", "
-           << format_number(CGAL::to_double(r.curve->aux_end().y()), 10) << ")"
+    report << "aux_end = (" << format_number(CGAL::to_double(c.aux_end().x()), 10) << ", "
+           << format_number(CGAL::to_double(c.aux_end().y()), 10) << ")"
            << (r.explicit_aux ? " (given)" : " (eq. 20)") << "\n";
   }
-  report << "energy_approx (eq. 10) = " << format_number(CGAL::to_double(r.energy_approx), 10) << "\n";
+  report << "energy_approx (eq. 10) = " << format_number(CGAL::to_double(c.approximate_energy()), 10) << "\n";
   report << "energy_true (eq. 5, int (dk/dt)^2 dt) = " << format_number(r.energy_parameter.value, 10)
          << " (error estimate " << format_number(r.energy_parameter.error_bound, 2) << ")\n";
   report << "energy_true_arc_length (int (dk/ds)^2 ds) = " << format_number(r.energy_arc_length.value, 10) << "\n";
@@ -133,7 +122,7 @@ std::string cardinal_report(const Cardinal_result<K>& r, const Cardinal_options&
 template <class K>
 void run_cardinal_in(const Cardinal_options& o) {
   const Cardinal_result<K> r = compute_cardinal<K>(o);
-  const nlohmann::json out = cardinal_json(r, o);
+  const nlohmann::json out = cardinal_json(r);
   std::string json_text, svg_text, plot_text;
   if (!o.json_out.empty()) {
     std::ostringstream s;
@@ -142,14 +131,20 @@ void run_cardinal_in(const Cardinal_options& o) {
   }
   if (!o.svg_out.empty() || !o.plot_out.empty()) {
     fair_curves::Curve_case c;
-    c.title = o.input + ": Cardinal spline, alpha = " + fair_curves::format_number(CGAL::to_double(r.alpha), 6);
+    c.title = o.input + ": Cardinal spline, alpha = " + fair_curves::format_number(CGAL::to_double(r.curve->alpha()), 6);
     c.title_in_figure = true;
     c.input_points = fair::io::to_xy(r.data.points);
-    const fair_curves::Curve_figures f = fair_curves::make_curve_figures(r.pieces, c);
+    const fair_curves::Curve_figures f = fair_curves::make_curve_figures(r.curve->pieces(), c);
     svg_text = f.curve_svg;
     plot_text = f.curvature_svg;
   }
   fair_curves::write_outputs(cardinal_report(r, o), o.json_out, json_text, {{o.svg_out, svg_text}, {o.plot_out, plot_text}});
+  if (r.curve->status() == fair::Cardinal_spline_status::NO_OPTIMUM) {
+    std::cerr << "fair-curves cardinal: " << o.input
+              << ": eq. 18 has no positive optimum, the curve is Catmull-Rom (alpha = 1/2; outputs written; exit code "
+              << no_optimum_exit_code << ")\n";
+    throw fair_curves::Exit_code{no_optimum_exit_code};
+  }
 }
 
 void run_cardinal(const Cardinal_options& o) {
@@ -176,8 +171,8 @@ void register_cardinal_command(CLI::App& app) {
   sub->add_option("--aux-start", options->aux_start, "auxiliary point p_{-1} \"x,y\" (open curves, with --aux-end)");
   sub->add_option("--aux-end", options->aux_end, "auxiliary point p_{n+1} \"x,y\" (open curves, with --aux-start)");
   sub->add_flag("--exact", options->exact,
-                "compute in exact rational arithmetic (the input doubles / p/q values exactly); JSON gains "
-                "\"alpha_exact\" and \"energy_approx_exact\"");
+                "compute in exact rational arithmetic (the input doubles / p/q values exactly); the JSON writes "
+                "the numbers that are not doubles as \"p/q\" strings (report.alpha, report.energy, ...)");
   sub->add_option("-o,--output", options->json_out, "write the curve as JSON ('-' for stdout)");
   sub->add_option("--svg", options->svg_out, "draw the curve with its curvature comb");
   sub->add_option("--plot", options->plot_out, "plot the curvature against arc length");

@@ -36,7 +36,8 @@ void run_conic(const Conic_options& o) {
   // Produce every output in memory before writing any file.
   std::string json_text, svg_text, plot_text;
   if (!o.json_out.empty()) {
-    nlohmann::json j = fair::io::curve_to_json(curve, nlohmann::json{{"method", "conic"}, {"conic", conic_json(report)}});
+    const std::vector<Point_2> points = {p0, p2};  // the arc's end points: what it interpolates
+    nlohmann::json j = fair::io::curve_to_json("conic", false, points, curve, nlohmann::json{{"conic", conic_json(report)}});
     std::ostringstream out;
     fair::io::write_json(out, j);
     json_text = out.str();

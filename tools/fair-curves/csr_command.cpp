@@ -9,6 +9,7 @@
 #include "tool_common.h"
 
 #include <fair/Csr_spline_2.h>
+#include <fair/io/enum_names.h>
 #include <fair/io/read_points.h>
 #include <fair/io/write_json.h>
 
@@ -25,10 +26,10 @@ struct Csr_command_options {
 };
 
 fair::Knot_spacing knot_spacing_of(const std::string& text) {
-  if (text == "chordal") return fair::Knot_spacing::CHORDAL;
-  if (text == "uniform") return fair::Knot_spacing::UNIFORM;
-  if (text == "centripetal") return fair::Knot_spacing::CENTRIPETAL;
-  throw CLI::ValidationError("--knots", "expected chordal, uniform or centripetal, got '" + text + "'");
+  fair::Knot_spacing spacing{};
+  if (!fair::io::try_parse_spelling(text, spacing))
+    throw CLI::ValidationError("--knots", "expected " + fair::io::spellings_list<fair::Knot_spacing>() + ", got '" + text + "'");
+  return spacing;
 }
 
 void run_csr(const Csr_command_options& o) {
@@ -38,9 +39,10 @@ void run_csr(const Csr_command_options& o) {
   const bool closed = o.closed || data.closed;
   fair::io::check_point_file(data, closed ? 4 : 3, closed, "fair-curves csr");
   fair::Csr_spline_options options;
+  options.closed = closed;
   options.knot_spacing = spacing;
-  const fair::Csr_spline_2<K> csr(data.points, closed, options);
-  const auto pieces = csr.pieces();
+  const fair::Csr_spline_2<K> csr(data.points, options);
+  const auto& pieces = csr.pieces();
   const std::vector<double> distances = csr.distances_to_samples();
   const double max_distance = csr.max_distance_to_samples();
 
@@ -49,17 +51,14 @@ void run_csr(const Csr_command_options& o) {
     nlohmann::json d = nlohmann::json::array(), kappa = nlohmann::json::array();
     for (double v : distances) d.push_back(v);
     for (double v : csr.discrete_curvatures()) kappa.push_back(v);
-    const nlohmann::json extra{{"method", "csr"},
-                               {"closed", closed},
-                               {"samples", fair::io::points_to_json(data.points, closed)},
-                               {"knot_spacing", fair::to_string(spacing)},
+    const nlohmann::json extra{{"knot_spacing", fair::io::spelling(spacing)},
                                {"epsilon_rule", fair::to_string(options.epsilon_rule)},
                                {"relative_epsilon", options.relative_epsilon},
                                {"discrete_curvatures", kappa},
                                {"distances_to_samples", d},
                                {"max_distance_to_samples", max_distance}};
     std::ostringstream s;
-    fair::io::write_json(s, fair::io::spline_curve_to_json(csr.spline(), extra));
+    fair::io::write_json(s, fair::io::family_to_json(csr, "csr", extra));
     json_text = s.str();
   }
   if (!o.svg_out.empty() || !o.plot_out.empty()) {

@@ -30,7 +30,7 @@ Curve_figures csr_figures(const fair::Csr_spline_2<K>& csr, const std::string& t
   figure.add_control_polygon(polygon);
   figure.add_curvature_comb(f.sampled);
   figure.add_curve(f.sampled);
-  figure.add_points(fair::io::to_xy(csr.samples()));
+  figure.add_points(fair::io::to_xy(csr.points()));
   f.curve_svg = figure.str();
   return f;
 }

@@ -85,22 +85,20 @@ void add_design_case(fair_curves::Gallery& gallery, const std::string& title, co
   for (const fair::Shape_join& j : design.joins)
     if (!j.inside) joins += std::string(joins.empty() ? "" : ", ") + fair::to_string(j.kind);
   const auto pieces = spline.pieces();
-  double kmin = f.sampled.samples.front().curvature, kmax = kmin;
-  for (const fair::Curve_sample& q : f.sampled.samples) {
-    kmin = std::min(kmin, q.curvature);
-    kmax = std::max(kmax, q.curvature);
-  }
-  const fair::Feature_report inflections = fair::inflections(pieces);
+  // The library's figures: the curvature range over its profile and the certified extrema, and
+  // the certified inflections (fair/Fairness_metrics.h).
+  const fair::Fairness_report fairness = fair::fairness_report(pieces);
   std::size_t exact = 0;
   for (const fair::Shape_span& s : design.spans) exact += s.end_exact - s.first_exact;
   g.measurements = {{"pieces / control points", std::to_string(spline.number_of_pieces()) + " / " +
                                                      std::to_string(spline.number_of_control_points())},
                     {"joins between shapes", joins.empty() ? "none" : joins},
                     {"pieces reproducing a shape exactly", std::to_string(exact)},
-                    {"curvature range (sampled)",
-                     "[" + fair_curves::format_number(kmin) + ", " + fair_curves::format_number(kmax) + "]"},
-                    {std::string("inflections") + (inflections.certified ? " (certified)" : " (sampled)"),
-                     std::to_string(inflections.count())},
+                    {"curvature range (profile and certified extrema)",
+                     "[" + fair_curves::format_number(fairness.min_curvature) + ", " +
+                         fair_curves::format_number(fairness.max_curvature) + "]"},
+                    {std::string("inflections") + (fairness.certified ? " (certified)" : " (sampled)"),
+                     std::to_string(fairness.inflection_count)},
                     {"arc length", fair_curves::format_number(f.sampled.length(), 10)}};
   // Proposition 1, certified for the drawn spline's data (exact copy, basic_shapes_figures.h), or
   // for the design computed in EPECK when given (in double, rounding turns collinear control points

@@ -47,12 +47,12 @@ std::string point_text(const Point_2& p) {
 void add_case(fair_curves::Gallery& gallery, const fair::Cardinal_spline_2<Kernel>& curve, const std::string& title,
               const std::string& caption, std::vector<std::pair<std::string, std::string>> rows,
               const Point_2* circle_centre = nullptr) {
-  const auto pieces = curve.pieces();
+  const auto& pieces = curve.pieces();
   const fair::Feature_report infl = fair::inflections(pieces);
   fair_curves::Curve_case c;
   c.title = title;
   c.caption = caption;
-  c.input_points = fair::io::to_xy(curve.data_points());
+  c.input_points = fair::io::to_xy(curve.points());
   if (!curve.is_closed()) {
     // Show the auxiliary points too (as input points: they shape the end segments).
     c.input_points.push_back(fair::io::Xy{curve.aux_start().x(), curve.aux_start().y()});
@@ -66,7 +66,7 @@ void add_case(fair_curves::Gallery& gallery, const fair::Cardinal_spline_2<Kerne
   }
   rows.emplace_back("curvature variation, eq. 10 (sum int |r'''|^2)", format_number(curve.approximate_energy(), 6));
   rows.emplace_back("curvature variation, eq. 5 (sum int (dk/dt)^2 dt)",
-                    format_number(curve.curvature_variation_energy(fair::Energy_measure::PARAMETER).value, 6));
+                    format_number(fair::curvature_variation_energy(pieces, fair::Energy_measure::PARAMETER).value, 6));
   rows.emplace_back("int (dk/ds)^2 ds", format_number(fair::curvature_variation_energy(pieces).value, 6));
   rows.emplace_back("bending energy int k^2 ds", format_number(fair::bending_energy(pieces).value, 6));
   rows.emplace_back("inflections (certified interval isolation, marked i)", std::to_string(infl.count()));
@@ -100,36 +100,41 @@ void add_cardinal_cases(fair_curves::Gallery& gallery) {
   // Figure 3 and Table 1: the optimum against Catmull-Rom with the same auxiliary points.
   std::vector<Exact::Point_2> pe;
   for (const Point_2& q : p) pe.emplace_back(q.x(), q.y());
-  const fair::Cardinal_parameters<Exact> oe = fair::optimal_cardinal_parameters(pe);
-  const fair::Cardinal_parameters<Kernel> o = fair::optimal_cardinal_parameters(p);
-  add_case(gallery, Spline::optimal(p), "Figure 3 / Table 1: minimum curvature variation",
+  const fair::Cardinal_spline_report<Exact> oe = fair::Cardinal_spline_2<Exact>(pe).report();
+  const Spline optimum(p);
+  const fair::Cardinal_spline_report<Kernel>& o = optimum.report();
+  add_case(gallery, optimum, "Figure 3 / Table 1: minimum curvature variation",
            "alpha* = 9192/12241 (exact) and p_{-1}*, p_9* of eqs. 18-20. Table 1 of the paper: alpha 0.7509, energy "
            "1.9964e5. The two end segments are parabolic (r''' = 0) and add nothing to eq. 10.",
            {{"alpha* (exact rational, eq. 18)", fair::io::number_text(oe.alpha)},
             {"eq. 10 at the optimum (exact)", fair::io::number_text(oe.energy)},
             {"Table 1 (paper)", "0.7509, 1.9964e5"}});
-  add_case(gallery, Spline::catmull_rom(p, o.aux_start, o.aux_end), "Figure 3 / Table 1: Catmull-Rom",
+  add_case(gallery, Spline(p, 0.5, o.aux_start, o.aux_end), "Figure 3 / Table 1: Catmull-Rom",
            "alpha = 0.5 with the same auxiliary points p_{-1}*, p_9* (the paper's comparison). Table 1 of the paper: "
            "energy 2.4081e5.",
            {{"Table 1 (paper)", "0.5, 2.4081e5"}});
   // Figure 4 and Table 2: the half circle.
   const std::vector<Point_2> c = half_circle();
-  const fair::Cardinal_parameters<Kernel> oc = fair::optimal_cardinal_parameters(c);
+  const Spline circle_optimum(c);
+  const fair::Cardinal_spline_report<Kernel>& oc = circle_optimum.report();
   const Point_2 origin(0, 0);
-  add_case(gallery, Spline::optimal(c), "Figure 4 / Table 2: half circle, minimum curvature variation",
+  add_case(gallery, circle_optimum, "Figure 4 / Table 2: half circle, minimum curvature variation",
            "Five points of the unit half circle. alpha* = 2 - sqrt 2 = 1/(1 + cos(pi/4)): every segment has "
            "r''' = 0 and eq. 10 vanishes (the paper prints 1.8087e-7 from 4-digit inputs).",
            {{"Table 2 (paper)", "0.5858, 1.8087e-7"}}, &origin);
-  add_case(gallery, Spline::catmull_rom(c, oc.aux_start, oc.aux_end), "Figure 4 / Table 2: half circle, Catmull-Rom",
+  add_case(gallery, Spline(c, 0.5, oc.aux_start, oc.aux_end), "Figure 4 / Table 2: half circle, Catmull-Rom",
            "alpha = 0.5 with the same auxiliary points: visibly off the circle. Table 2 of the paper: 7.2364.",
            {{"Table 2 (paper)", "0.5, 7.2364"}}, &origin);
   // A closed curve: the closed analogue of eq. 18 (doc/cardinal_splines.md).
   const std::vector<Point_2> loop{Point_2(0, 0), Point_2(4, -1), Point_2(7, 1), Point_2(6, 4), Point_2(3, 3),
                                   Point_2(1, 5), Point_2(-2, 3)};
-  const fair::Cardinal_parameters<Kernel> ol = fair::optimal_cardinal_parameters(loop, true);
-  add_case(gallery, Spline::optimal(loop, true), "Closed curve, minimum curvature variation",
+  fair::Cardinal_spline_options closed;
+  closed.closed = true;
+  const Spline loop_optimum(loop, closed);
+  const fair::Cardinal_spline_report<Kernel>& ol = loop_optimum.report();
+  add_case(gallery, loop_optimum, "Closed curve, minimum curvature variation",
            "Seven points, periodic: alpha* = -2 sum d_i.m_i / sum |d_i|^2 over all segments; no auxiliary points.",
            {{"eq. 10 at alpha*", format_number(ol.energy, 8)},
-            {"eq. 10 at alpha = 0.5", format_number(Spline(loop, 0.5, true).approximate_energy(), 8)}});
+            {"eq. 10 at alpha = 0.5", format_number(Spline(loop, 0.5, closed).approximate_energy(), 8)}});
 }
 FAIR_CURVES_DEMO(40, add_cardinal_cases)

@@ -12,6 +12,7 @@
 #include <fair/Cubic_bspline_2.h>
 #include <fair/Cubic_interpolating_spline_2.h>
 #include <fair/Cubic_quasi_interpolant_2.h>
+#include <fair/Fairness_metrics.h>
 #include <fair/Four_point_subdivision_2.h>
 
 #include <algorithm>
@@ -49,22 +50,14 @@ std::vector<fair::io::Xy> as_xy(const std::vector<Point_2>& p) {
   return out;
 }
 
-// Sign changes of the sampled curvature (ignoring |kappa| < 1e-9) and its maximum magnitude.
+// The library's certified inflections (curvature sign changes, also at joins) and its curvature
+// range (profile samples and certified extrema), fair/Fairness_metrics.h.
 void curvature_figures(const std::vector<Piece>& pieces, fair_curves::Curve_case& c) {
-  const fair::Sampled_curve s = fair::sample_curve(pieces, c.samples_per_piece);
-  int changes = 0, last = 0;
-  double kmax = 0;
-  for (const fair::Curve_sample& q : s.samples) {
-    kmax = std::max(kmax, std::fabs(q.curvature));
-    const int sign = q.curvature > 1e-9 ? 1 : (q.curvature < -1e-9 ? -1 : 0);
-    if (sign != 0) {
-      if (last != 0 && sign != last) ++changes;
-      last = sign;
-    }
-  }
+  const fair::Fairness_report r = fair::fairness_report(pieces);
   c.measurements.emplace_back("pieces", std::to_string(pieces.size()));
-  c.measurements.emplace_back("curvature sign changes (sampled)", std::to_string(changes));
-  c.measurements.emplace_back("max |curvature| (sampled)", fair_curves::format_number(kmax));
+  c.measurements.emplace_back(std::string("inflections") + (r.certified ? " (certified)" : " (sampled)"),
+                              std::to_string(r.inflection_count));
+  c.measurements.emplace_back("max |curvature|", fair_curves::format_number(std::max(-r.min_curvature, r.max_curvature)));
 }
 
 // Largest distance from a data point to the curve point at its knot (approximating methods).
@@ -117,6 +110,12 @@ void add_classic_cases(fair_curves::Gallery& gallery) {
       "Where the curvature of the data changes abruptly, these constructions overshoot and their curvature "
       "oscillates. See doc/classic_interpolants.md for continuity, reproduction and exactness of each.");
   const std::vector<Point_2> data = semicircle_and_parabola();
+  fair::Cubic_interpolating_spline_options chordal;
+  chordal.knot_spacing = fair::Knot_spacing::CHORDAL;
+  fair::Catmull_rom_options centripetal;
+  centripetal.knot_spacing = fair::Knot_spacing::CENTRIPETAL;
+  fair::Four_point_subdivision_options relaxed;
+  relaxed.variant = fair::Four_point_variant::RELAXED;
 
   add_piece_case(gallery, fair::Cubic_interpolating_spline_2<Kernel>(data).pieces(), data,
                  "C2 cubic interpolating spline, natural, uniform knots",
@@ -124,12 +123,10 @@ void add_classic_cases(fair_curves::Gallery& gallery) {
                  "by the Thomas algorithm; zero curvature at both ends (natural end conditions).",
                  false);
   add_piece_case(gallery,
-                 fair::Cubic_interpolating_spline_2<Kernel>(data, fair::Spline_end_condition::NATURAL,
-                                                            fair::Knot_spacing::CHORDAL)
-                     .pieces(),
+                 fair::Cubic_interpolating_spline_2<Kernel>(data, chordal).pieces(),
                  data, "C2 cubic interpolating spline, natural, chordal knots",
                  "The same spline with knot intervals equal to the chord lengths.", false);
-  add_piece_case(gallery, fair::Catmull_rom_2<Kernel>(data, false, fair::Knot_spacing::CENTRIPETAL).pieces(), data,
+  add_piece_case(gallery, fair::Catmull_rom_2<Kernel>(data, centripetal).pieces(), data,
                  "Catmull-Rom spline, centripetal knots",
                  "Local C1 interpolation: the tangent at each point is that of the parabola through it and its two "
                  "neighbours. Curvature jumps at every data point.",
@@ -149,7 +146,7 @@ void add_classic_cases(fair_curves::Gallery& gallery) {
                     "4-point subdivision (Dyn, Levin, Gregory), w = 1/16, 5 rounds",
                     "The interpolatory 4-point scheme: C1 limit, reproduces cubics.");
   add_polyline_case(gallery,
-                    fair::Four_point_subdivision_2<Kernel>(data, false, fair::Four_point_variant::RELAXED).refine(5),
+                    fair::Four_point_subdivision_2<Kernel>(data, relaxed).refine(5),
                     data, "Relaxed 4-point subdivision, gamma = -3/128, 5 rounds",
                     "Old points move by gamma times their fourth difference: C2 limit, reproduces cubics, does not "
                     "interpolate (compare Fig. 2d of Karciauskas and Peters, which uses the relaxed scheme of "

@@ -44,6 +44,22 @@ std::vector<Point_2> fig2_data() {
 }
 constexpr std::size_t transition_first = 8, transition_last = 14;
 
+fair::Csr_spline_options closed_csr() {
+  fair::Csr_spline_options o;
+  o.closed = true;
+  return o;
+}
+fair::Cubic_interpolating_spline_options chordal_spline() {
+  fair::Cubic_interpolating_spline_options o;
+  o.knot_spacing = fair::Knot_spacing::CHORDAL;
+  return o;
+}
+fair::Four_point_subdivision_options relaxed_four_point() {
+  fair::Four_point_subdivision_options o;
+  o.variant = fair::Four_point_variant::RELAXED;
+  return o;
+}
+
 std::string count(std::size_t n) { return std::to_string(n); }
 
 // The certified counts of a curve: curvature extrema in the Fig. 2 transition (pieces
@@ -92,8 +108,10 @@ void add_csr(fair_curves::Gallery& g, const Csr& csr, const std::string& title, 
 
 void add_classic(fair_curves::Gallery& g, const std::vector<Point_2>& data, bool closed, const std::string& title,
                  const std::string& caption) {
-  const fair::Cubic_interpolating_spline_2<Kernel> s(
-      data, closed ? fair::Spline_end_condition::PERIODIC : fair::Spline_end_condition::NATURAL, fair::Knot_spacing::CHORDAL);
+  fair::Cubic_interpolating_spline_options o;  // natural when open, periodic when closed
+  o.closed = closed;
+  o.knot_spacing = fair::Knot_spacing::CHORDAL;
+  const fair::Cubic_interpolating_spline_2<Kernel> s(data, o);
   fair_curves::Curve_case c;
   c.title = title;
   c.caption = caption;
@@ -107,7 +125,7 @@ void add_classic(fair_curves::Gallery& g, const std::vector<Point_2>& data, bool
 // length) of the refined polygon in the transition, ignoring changes below 1e-6.
 void add_four_point(fair_curves::Gallery& g, const std::vector<Point_2>& data) {
   const std::vector<Point_2> poly =
-      fair::Four_point_subdivision_2<Kernel>(data, false, fair::Four_point_variant::RELAXED).refine(5);
+      fair::Four_point_subdivision_2<Kernel>(data, relaxed_four_point()).refine(5);
   std::vector<Piece> pieces;
   for (std::size_t i = 0; i + 1 < poly.size(); ++i) pieces.push_back(Piece(std::vector<Point_2>{poly[i], poly[i + 1]}));
   const std::size_t intervals = data.size() - 1;
@@ -142,9 +160,7 @@ void add_four_point(fair_curves::Gallery& g, const std::vector<Point_2>& data) {
 void add_fig2(fair_curves::Gallery& g) {
   const std::vector<Point_2> data = fig2_data();
   add_baseline(g,
-               fair::Cubic_interpolating_spline_2<Kernel>(data, fair::Spline_end_condition::NATURAL,
-                                                          fair::Knot_spacing::CHORDAL)
-                   .pieces(),
+               fair::Cubic_interpolating_spline_2<Kernel>(data, chordal_spline()).pieces(),
                data, "Fig. 2c: classic C2 cubic interpolation, chordal knots",
                "Interpolates, and oscillates after the junction: its curvature undershoots below 0 (inflections) and "
                "swings from piece to piece on the flat side. The transition is the six pieces after the junction.");
@@ -175,9 +191,9 @@ void add_fig4(fair_curves::Gallery& g) {
               "The classic spline copes well with the input.");
   add_classic(g, moved, true, "Fig. 4b: the same with three samples moved, classic",
               "Moving samples 3, 9 and 12 makes the classic spline oscillate: inflections appear.");
-  add_csr(g, Csr(data, true), "Fig. 4c: half circle + half ellipse, closed csr-spline",
+  add_csr(g, Csr(data, closed_csr()), "Fig. 4c: half circle + half ellipse, closed csr-spline",
           "The csr-spline of the same samples.", false);
-  add_csr(g, Csr(moved, true), "Fig. 4d: the same with three samples moved, csr",
+  add_csr(g, Csr(moved, closed_csr()), "Fig. 4d: the same with three samples moved, csr",
           "The csr-spline keeps its quality under the modification: fewer inflections than the classic spline.", false);
 }
 

@@ -63,21 +63,16 @@ void add_kappa_case(fair_curves::Gallery& gallery, const std::vector<Point_2>& p
                                 std::to_string(on_clamp) + " of " + std::to_string(curve.number_of_pieces()));
   }
   // The fairness measure of Sec. 7, per piece (the jump of the curvature sign at an inflection
-  // join is not counted), and the range of the signed curvature over 64 samples per piece. A
-  // singular piece (a cusp) has no curvature: say so instead of failing the gallery.
+  // join is not counted), and the range of the signed curvature (profile and certified extrema):
+  // the library's figures (fair::fairness_report). A singular piece (a cusp) has no curvature:
+  // say so instead of failing the gallery.
   try {
-    const fair::Quadrature_estimate cv = fair::curvature_variation_energy(curve.pieces());
+    const fair::Fairness_report r = fair::fairness_report(curve.pieces());
     c.measurements.emplace_back("curvature variation int (dk/ds)^2 ds",
-                                fair_curves::format_number(cv.value, 4) + " (error estimate " +
-                                    fair_curves::format_number(cv.error_bound, 2) + ")");
-    const std::vector<fair::Curvature_sample> prof = fair::curvature_profile(curve.pieces(), 64);
-    double kmin = prof.front().curvature, kmax = kmin;
-    for (const fair::Curvature_sample& s : prof) {
-      kmin = std::min(kmin, s.curvature);
-      kmax = std::max(kmax, s.curvature);
-    }
-    c.measurements.emplace_back("curvature range (samples)",
-                                fair_curves::format_number(kmin, 4) + " .. " + fair_curves::format_number(kmax, 4));
+                                fair_curves::format_number(r.curvature_variation.value, 4) + " (error estimate " +
+                                    fair_curves::format_number(r.curvature_variation.error_bound, 2) + ")");
+    c.measurements.emplace_back("curvature range", fair_curves::format_number(r.min_curvature, 4) + " .. " +
+                                                       fair_curves::format_number(r.max_curvature, 4));
   } catch (const fair::Error& e) {
     c.measurements.emplace_back("curvature variation", std::string("not computed: ") + e.what());
   }

@@ -58,24 +58,22 @@ void solve_figures(const fair::Optimal_curve_2<Kernel>& curve, double fit_distan
 void add_solve(fair_curves::Gallery& gallery, const std::vector<Point_2>& points, const fair::Optimal_curve_options& o,
                const std::string& title, const std::string& caption, bool show_vertices = false) {
   const fair::Optimal_curve_2<Kernel> curve(points, o);
-  const fair::Polygon_spline_runs<Kernel> fit =
-      fair::fit_cubic_spline_runs<Kernel>(curve.polygon(), o.closed, curve.corner_vertices());
   fair_curves::Curve_case c;
   c.title = title;
   c.caption = caption;
   c.input_points = fair::io::to_xy(show_vertices ? curve.polygon() : points);
   c.control_polygons = false;
   c.samples_per_piece = 8;
-  solve_figures(curve, fit.max_distance, c);
+  solve_figures(curve, curve.spline().max_distance, c);
   c.measurements.emplace_back("vertices of the optimal polygon", std::to_string(curve.polygon().size()));
-  gallery.add_case(fair_curves::make_gallery_case(fit.pieces(), c));
+  gallery.add_case(fair_curves::make_gallery_case(curve.pieces(), c));
 }
 
 // A family of solves drawn together (their splines one after the other in the curvature plot).
 void add_family(fair_curves::Gallery& gallery, const std::vector<Point_2>& points,
                 const std::vector<std::pair<std::string, fair::Optimal_curve_options>>& family, const std::string& title,
                 const std::string& caption) {
-  std::vector<fair::Rational_bezier_2<Kernel>> pieces;
+  std::vector<fair::Bezier_2<Kernel>> pieces;
   fair_curves::Curve_case c;
   c.title = title;
   c.caption = caption;
@@ -85,10 +83,7 @@ void add_family(fair_curves::Gallery& gallery, const std::vector<Point_2>& point
   c.samples_per_piece = 8;
   for (const auto& member : family) {
     const fair::Optimal_curve_2<Kernel> curve(points, member.second);
-    const fair::Polygon_spline_runs<Kernel> fit =
-        fair::fit_cubic_spline_runs<Kernel>(curve.polygon(), member.second.closed, curve.corner_vertices());
-    const std::vector<fair::Rational_bezier_2<Kernel>> p = fit.pieces();
-    pieces.insert(pieces.end(), p.begin(), p.end());
+    pieces.insert(pieces.end(), curve.pieces().begin(), curve.pieces().end());
     const fair::Optimal_curve_report& r = curve.report();
     c.measurements.emplace_back(member.first, std::string(fair::to_string(r.status)) + ", " +
                                                   std::to_string(curve.polygon().size()) + " vertices, energy " +

@@ -86,8 +86,9 @@ void add_revolution_cases(fair_curves::Gallery& gallery) {
                       "(0,1). Tangent continuous, the curvature jumps from 0 to 1 at (1,0): the reflection lines kink "
                       "along the circle where the cylinder meets the hemisphere.");
   const std::vector<Point_2> data = samples();
-  const fair::Cubic_interpolating_spline_2<Kernel> c2(data, fair::Spline_end_condition::NATURAL,
-                                                      fair::Knot_spacing::CHORDAL);
+  fair::Cubic_interpolating_spline_options chordal;  // natural ends
+  chordal.knot_spacing = fair::Knot_spacing::CHORDAL;
+  const fair::Cubic_interpolating_spline_2<Kernel> c2(data, chordal);
   add_revolution_case(gallery, c2.pieces(), 4, data, "Classic C2 interpolant through samples of it",
                       "The natural C2 cubic spline with chordal knots through 11 samples of the same curve (the join "
                       "is a sample). Curvature continuous: the stripes bend without kinks at the join, at the price "

@@ -12,6 +12,8 @@
 #include "tool_common.h"
 
 #include <fair/Kappa_curve_2.h>
+#include <fair/io/enum_names.h>
+#include <fair/io/read_numbers.h>
 #include <fair/io/read_points.h>
 #include <fair/io/svg.h>
 #include <fair/io/write_json.h>
@@ -19,7 +21,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -41,44 +42,13 @@ struct Kappa_command_options {
   bool clamp_given = false; // --clamp appeared (even with an empty value, which is then rejected)
 };
 
-/// One number per non-empty line ('#' starts a comment); Parse_error names FILE:LINE.
-std::vector<double> read_numbers(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw fair::Parse_error(file, 0, "cannot open the tension file");
-  std::vector<double> out;
-  std::string line;
-  std::size_t number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    const std::size_t hash = line.find('#');
-    if (hash != std::string::npos) line.erase(hash);
-    std::istringstream fields(line);
-    double v;
-    if (!(fields >> v)) {
-      std::string rest;
-      if (std::istringstream(line) >> rest) throw fair::Parse_error(file, number, "expected a number, got '" + rest + "'");
-      continue;
-    }
-    std::string extra;
-    if (fields >> extra) throw fair::Parse_error(file, number, "expected one number per line, got '" + line + "'");
-    if (!std::isfinite(v) || v <= 0) throw fair::Parse_error(file, number, "tension must be finite and > 0");
-    out.push_back(v);
-  }
-  return out;
-}
-
-nlohmann::json xy(const fair_curves::Point_2& p) { return nlohmann::json::array({p.x(), p.y()}); }
-
 /// The curve options that the command-line options ask for, before the point file is read
 /// (CLI::ValidationError for a bad --weights or --clamp, or one that does not apply).
 fair::Kappa_curve_options curve_options(const Kappa_command_options& o) {
   using namespace fair_curves;
   fair::Kappa_curve_options options;
-  if (o.weights == "auto") {
-    options.weights = fair::Kappa_weights::AUTOMATIC;
-  } else if (o.weights == "1") {
-    options.weights = fair::Kappa_weights::UNIT;
-  } else {
+  // "1" and "auto" are the spellings of fair::io (enum_names.h); anything else must be a weight.
+  if (!fair::io::try_parse_spelling(o.weights, options.weights) || options.weights == fair::Kappa_weights::FIXED) {
     const double w = option_number(o.weights, "--weights");
     if (!(w > 0)) throw CLI::ValidationError("--weights", "expected auto, 1 or a weight > 0, got '" + o.weights + "'");
     options.weights = fair::Kappa_weights::FIXED;
@@ -103,49 +73,18 @@ fair::Kappa_curve_options curve_options(const Kappa_command_options& o) {
   return options;
 }
 
-/// The pieces and the solve report as the JSON document of -o.
+/// The curve JSON of -o (fair::io::curve_to_json): the pieces with each piece's input point and
+/// its parameter t beside them, the weights asked for, the status and the solve report.
 std::string curve_json(const Kappa_command_options& o, const fair::Kappa_curve_2<fair_curves::Kernel>& curve) {
   const fair::Kappa_curve_options& options = curve.options();
-  const fair::Kappa_curve_report& r = curve.report();
-  nlohmann::json worst = nlohmann::json::array();
-  for (const fair::Kappa_point_residual& p : r.worst_points) worst.push_back({{"point", p.point}, {"residual", p.residual}});
-  nlohmann::json pieces = nlohmann::json::array();
-  for (std::size_t j = 0; j < curve.number_of_pieces(); ++j) {
-    const auto& pc = curve.piece(j);
-    pieces.push_back({{"P0", xy(pc.control_point(0))}, {"P1", xy(pc.control_point(1))}, {"P2", xy(pc.control_point(2))},
-                      {"w", pc.weight()}, {"t", curve.t(j)}, {"point", curve.point_index(j)}});
-  }
-  const nlohmann::json j{{"method", "kappa"},
-                         {"closed", options.closed},
-                         {"weights", o.weights},
-                         {"weight_clamp", options.weights == fair::Kappa_weights::AUTOMATIC
-                                              ? nlohmann::json(options.weight_clamp)
-                                              : nlohmann::json(nullptr)},
-                         {"status", fair::to_string(r.status)},
-                         {"points_on_joins", r.points_on_joins},
-                         {"points_at_minima", r.points_at_minima},
-                         {"worst_points", worst},
-                         {"points_beyond_density_limit", r.points_beyond_density_limit},
-                         {"converged", r.converged},  // deprecated: "status" == "interior"
-                         {"iterations", r.iterations},
-                         {"refinement_passes", r.refinement_passes},
-                         {"residuals",
-                          {{"max", r.residual},
-                           {"interpolation", r.interpolation_residual},
-                           {"max_curvature_eq7", r.curvature_residual},
-                           {"abs_curvature_continuity", r.g2_residual},
-                           {"weight_eq16", r.weight_residual}}},
-                         {"energy",
-                          {{"total", r.energy()},
-                           {"interpolation", r.energy_interpolation},
-                           {"curvature_eq12", r.energy_curvature},
-                           {"g2_eq11", r.energy_g2},
-                           {"weight_eq13", r.energy_weight}}},
-                         {"bounds_active", r.bounds_active},
-                         {"boundary_points", r.boundary_points},  // deprecated: "points_on_joins"
-                         {"pieces", pieces}};
+  std::vector<nlohmann::json> per_piece;
+  for (std::size_t j = 0; j < curve.number_of_pieces(); ++j)
+    per_piece.push_back({{"point", curve.point_index(j)}, {"t", curve.t(j)}});
+  nlohmann::json extra{{"weights", fair::io::spelling(options.weights)}};
+  if (options.weights == fair::Kappa_weights::FIXED) extra["fixed_weight"] = fair_curves::option_number(o.weights, "--weights");
+  if (options.weights == fair::Kappa_weights::AUTOMATIC) extra["weight_clamp"] = options.weight_clamp;
   std::ostringstream out;
-  fair::io::write_json(out, j);
+  fair::io::write_json(out, fair::io::family_to_json(curve, "kappa", extra, per_piece));
   return out.str();
 }
 
@@ -227,7 +166,7 @@ void run_kappa(const Kappa_command_options& o) {
   fair::io::check_point_file(data, minimum_points, options.closed, "fair-curves kappa");
   if (options.weights == fair::Kappa_weights::FIXED)
     options.fixed_weights.assign(data.points.size(), option_number(o.weights, "--weights"));
-  if (!o.tension_file.empty()) options.tension = read_numbers(o.tension_file);
+  if (!o.tension_file.empty()) options.tension = fair::io::read_tensions(o.tension_file, data.points.size());
 
   const fair::Kappa_curve_2<Kernel> curve(data.points, options);
   const std::string json_text = o.json_out.empty() ? std::string() : curve_json(o, curve);

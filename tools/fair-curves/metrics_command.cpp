@@ -1,18 +1,15 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // fair-curves metrics: the fairness figures (include/fair/Fairness_metrics.h, doc/fairness_metrics.md)
-// of any curve JSON the program writes ({"format": "fair-curve", "pieces": [{"control_points":
-// [[x, y], ...], "weights": [...]?}, ...]}). Coordinates are read exactly (decimal numbers as the
-// nearest double, "p/q" strings as rationals), so the feature counts are certified for exactly
-// the curve in the file.
+// of any curve JSON the program writes, read by fair::io::read_curve_json. Coordinates are read
+// exactly (decimal numbers as the nearest double, "p/q" strings as rationals), so the feature
+// counts are certified for exactly the curve in the file.
 
 #include "registry.h"
 #include "tool_common.h"
 
-#include <fair/Bezier_2.h>
 #include <fair/Fairness_metrics.h>
-#include <fair/io/parsing.h>
-#include <fair/io/read_points.h>
+#include <fair/io/read_curve.h>
 #include <fair/io/svg.h>
 #include <fair/io/write_json.h>
 
@@ -31,99 +28,7 @@ namespace {
 
 typedef CGAL::Simple_cartesian<CGAL::Gmpq> Exact_kernel;
 
-// A rational Bezier piece as read from a file: what the metrics need (control_points() and
-// weights(): the metrics evaluate it through its Bernstein form).
-struct File_rational_piece {
-  typedef Exact_kernel Kernel;
-  typedef Exact_kernel::FT FT;
-  typedef Exact_kernel::Point_2 Point_2;
-  typedef Exact_kernel::Vector_2 Vector_2;
-  std::vector<Point_2> cp;
-  std::vector<FT> w;
-  const std::vector<Point_2>& control_points() const { return cp; }
-  const std::vector<FT>& weights() const { return w; }
-};
-
-struct File_curve {
-  std::vector<File_rational_piece> pieces;
-  bool rational = false;
-  std::vector<fair::Bezier_2<Exact_kernel>> polynomial() const {
-    std::vector<fair::Bezier_2<Exact_kernel>> out;
-    for (const File_rational_piece& p : pieces) out.emplace_back(p.cp);
-    return out;
-  }
-};
-
-// What a file that is not a curve JSON gets told.
-const char* const not_a_curve = "expected a curve JSON written by fair-curves (an object with a \"pieces\" array)";
-
-File_curve read_curve_file(const std::string& file) {
-  using fair::io::Json_value;
-  using fair::Parse_error;
-  const std::string text = fair::io::read_text_file(file);
-  Json_value root;
-  try {
-    root = fair::io::parse_json(text, file);
-  } catch (const Parse_error& e) {
-    // A points CSV, or any other text: say what was expected, then the parser's reason.
-    const std::string what = e.what();
-    const std::string prefix = file + (e.line() ? ":" + std::to_string(e.line()) : std::string()) + ": ";
-    throw Parse_error(file, e.line(),
-                      std::string(not_a_curve) + "; " + (what.compare(0, prefix.size(), prefix) == 0 ? what.substr(prefix.size()) : what));
-  }
-  if (root.kind != Json_value::OBJECT) throw Parse_error(file, root.line, not_a_curve);
-  const Json_value* pieces = root.find("pieces");
-  if (!pieces) throw Parse_error(file, root.line, std::string(not_a_curve) + "; this JSON object has no \"pieces\"");
-  if (pieces->kind != Json_value::ARRAY || pieces->items.empty())
-    throw Parse_error(file, pieces->line, "\"pieces\" must be a nonempty array");
-  auto number = [&](const Json_value& v, const std::string& what) {
-    if (v.kind != Json_value::NUMBER && v.kind != Json_value::STRING)
-      throw Parse_error(file, v.line, what + " must be a number, got " + Json_value::kind_name(v.kind));
-    return fair::io::to_ft<CGAL::Gmpq>(fair::io::parse_number(v.text, file, v.line, what.c_str()));
-  };
-  auto point = [&](const Json_value& xy, const std::string& what) {
-    if (xy.kind != Json_value::ARRAY || xy.items.size() != 2)
-      throw Parse_error(file, xy.line, what + ": expected an [x, y] pair");
-    return Exact_kernel::Point_2(number(xy.items[0], what + " x"), number(xy.items[1], what + " y"));
-  };
-  File_curve curve;
-  for (std::size_t i = 0; i < pieces->items.size(); ++i) {
-    const Json_value& p = pieces->items[i];
-    const std::string name = "piece " + std::to_string(i);
-    if (p.kind != Json_value::OBJECT) throw Parse_error(file, p.line, name + ": expected an object");
-    File_rational_piece piece;
-    const Json_value* cps = p.find("control_points");
-    if (!cps && p.find("P0") && p.find("P1") && p.find("P2")) {
-      // The conic pieces of `fair-curves kappa`: {"P0", "P1", "P2", "w"}, the standard rational
-      // quadratic form with weights (1, w, 1) (w absent: 1).
-      for (const char* key : {"P0", "P1", "P2"}) piece.cp.push_back(point(*p.find(key), name + " " + key));
-      const Json_value* w = p.find("w");
-      const CGAL::Gmpq wm = w ? number(*w, name + " w") : CGAL::Gmpq(1);
-      if (!(wm > 0)) throw Parse_error(file, w->line, name + ": the weight w must be > 0");
-      piece.w = {CGAL::Gmpq(1), wm, CGAL::Gmpq(1)};
-      if (wm != 1) curve.rational = true;
-      curve.pieces.push_back(std::move(piece));
-      continue;
-    }
-    if (!cps || cps->kind != Json_value::ARRAY || cps->items.empty())
-      throw Parse_error(file, p.line, name + ": needs a nonempty \"control_points\" array (or \"P0\", \"P1\", \"P2\", \"w\")");
-    for (std::size_t k = 0; k < cps->items.size(); ++k)
-      piece.cp.push_back(point(cps->items[k], name + " control point " + std::to_string(k)));
-    if (const Json_value* w = p.find("weights")) {
-      if (w->kind != Json_value::ARRAY || w->items.size() != cps->items.size())
-        throw Parse_error(file, w->line, name + ": \"weights\" must be an array with one weight per control point");
-      for (const Json_value& x : w->items) {
-        piece.w.push_back(number(x, name + " weight"));
-        if (!(piece.w.back() > 0)) throw Parse_error(file, x.line, name + ": weights must be > 0");
-      }
-      curve.rational = true;
-    } else {
-      piece.w.assign(piece.cp.size(), CGAL::Gmpq(1));
-    }
-    curve.pieces.push_back(std::move(piece));
-  }
-  return curve;
-}
+typedef fair::io::Curve_file<Exact_kernel> File_curve;
 
 struct Metrics_options {
   std::string input, json_out, circle, hausdorff, profile_out;
@@ -213,7 +118,7 @@ void report(const std::vector<Piece>& curve, const Metrics_options& o, const Fil
       tol = std::max(1e-300, 1e-5 * std::hypot(xmax - xmin, ymax - ymin));
     }
     const double h = other->rational ? fair::hausdorff_distance(curve, other->pieces, tol)
-                                     : fair::hausdorff_distance(curve, other->polynomial(), tol);
+                                     : fair::hausdorff_distance(curve, other->polynomial_pieces(), tol);
     text << "Hausdorff distance to " << o.hausdorff << " = " << format_number(h, 10) << " (sampling tolerance "
               << format_number(tol, 3) << ")\n";
     j["hausdorff_distance"] = h;
@@ -239,12 +144,12 @@ void report(const std::vector<Piece>& curve, const Metrics_options& o, const Fil
 
 void run_metrics(const Metrics_options& o) {
   if (!o.circle.empty()) circle_option(o.circle); // usage error before reading any file
-  const File_curve curve = read_curve_file(o.input);
+  const File_curve curve = fair::io::read_curve_json<Exact_kernel>(o.input);
   File_curve other;
-  if (!o.hausdorff.empty()) other = read_curve_file(o.hausdorff);
+  if (!o.hausdorff.empty()) other = fair::io::read_curve_json<Exact_kernel>(o.hausdorff);
   const File_curve* second = o.hausdorff.empty() ? nullptr : &other;
   if (curve.rational) report(curve.pieces, o, second);
-  else report(curve.polynomial(), o, second);
+  else report(curve.polynomial_pieces(), o, second);
 }
 
 } // namespace

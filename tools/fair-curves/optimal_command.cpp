@@ -16,12 +16,14 @@
 
 #include <fair/Optimal_curve_2.h>
 #include <fair/Polygon_spline_fit.h>
+#include <fair/io/enum_names.h>
+#include <fair/io/read_constraints.h>
+#include <fair/io/read_numbers.h>
 #include <fair/io/read_points.h>
 #include <fair/io/svg.h>
 #include <fair/io/write_json.h>
 
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -39,93 +41,6 @@ struct Optimal_command_options {
   std::vector<std::string> derivative_weights;
   bool closed = false;
 };
-
-/// The whitespace-separated fields of the lines of `file` ('#' starts a comment, blank lines
-/// are skipped), each with its 1-based line number. Parse_error if the file cannot be read.
-std::vector<std::pair<std::size_t, std::vector<std::string>>> read_fields(const std::string& file, const char* what) {
-  std::ifstream in(file);
-  if (!in) throw fair::Parse_error(file, 0, std::string("cannot open the ") + what);
-  std::vector<std::pair<std::size_t, std::vector<std::string>>> out;
-  std::string line;
-  std::size_t number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    const std::size_t hash = line.find('#');
-    if (hash != std::string::npos) line.erase(hash);
-    std::istringstream in_line(line);
-    std::vector<std::string> fields;
-    for (std::string f; in_line >> f;) fields.push_back(f);
-    if (!fields.empty()) out.emplace_back(number, std::move(fields));
-  }
-  return out;
-}
-
-/// A finite number in a data file (Parse_error naming FILE:LINE otherwise).
-double file_number(const std::string& text, const std::string& file, std::size_t line) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || used == 0 || !std::isfinite(v))
-    throw fair::Parse_error(file, line, "expected a finite number, got '" + text + "'");
-  return v;
-}
-
-/// The lambda_i of --lambda-file: one number in [0, 1] per line, one line per input segment
-/// (n - 1 open, n closed).
-std::vector<double> read_lambdas(const std::string& file, std::size_t segments) {
-  std::vector<double> out;
-  for (const auto& l : read_fields(file, "lambda file")) {
-    if (l.second.size() != 1)
-      throw fair::Parse_error(file, l.first, "expected one lambda per line, got " + std::to_string(l.second.size()) +
-                                                 " fields");
-    const double v = file_number(l.second[0], file, l.first);
-    if (!(v >= 0 && v <= 1)) throw fair::Parse_error(file, l.first, "lambda " + l.second[0] + " is not in [0, 1]");
-    out.push_back(v);
-  }
-  if (out.size() != segments)
-    throw fair::Parse_error(file, 0, "expected one lambda per input segment: " + std::to_string(segments) +
-                                         " lines, got " + std::to_string(out.size()));
-  return out;
-}
-
-/// Constraints from a file of lines "i x y" (TANGENT, NORMAL) or "i tx_in ty_in tx_out ty_out"
-/// (CORNER); i a 0-based input index < points.
-void read_constraints(const std::string& file, fair::Point_constraint_kind kind, std::size_t points,
-                      std::vector<fair::Point_constraint>& out, std::vector<std::size_t>& seen_line,
-                      std::vector<std::string>& seen_file) {
-  const bool corner = kind == fair::Point_constraint_kind::CORNER;
-  const std::size_t fields = corner ? 5 : 3;
-  const char* layout = corner ? "i tx_in ty_in tx_out ty_out" : (kind == fair::Point_constraint_kind::TANGENT ? "i tx ty" : "i nx ny");
-  for (const auto& l : read_fields(file, corner ? "corner file" : "constraint file")) {
-    const std::vector<std::string>& f = l.second;
-    if (f.size() != fields)
-      throw fair::Parse_error(file, l.first, std::string("expected '") + layout + "', got " + std::to_string(f.size()) +
-                                                 " fields");
-    const double index = file_number(f[0], file, l.first);
-    if (!(index >= 0) || index != std::floor(index))
-      throw fair::Parse_error(file, l.first, "the point index '" + f[0] + "' is not an integer >= 0");
-    if (index >= static_cast<double>(points))
-      throw fair::Parse_error(file, l.first, "point index " + f[0] + " is out of range (the input has " +
-                                                 std::to_string(points) + " points)");
-    fair::Point_constraint c;
-    c.index = static_cast<std::size_t>(index);
-    c.kind = kind;
-    c.direction = {{file_number(f[1], file, l.first), file_number(f[2], file, l.first)}};
-    if (corner) c.outgoing = {{file_number(f[3], file, l.first), file_number(f[4], file, l.first)}};
-    const bool zero = (c.direction[0] == 0 && c.direction[1] == 0) || (corner && c.outgoing[0] == 0 && c.outgoing[1] == 0);
-    if (zero) throw fair::Parse_error(file, l.first, "a direction is the zero vector");
-    if (seen_line[c.index])
-      throw fair::Parse_error(file, l.first, "point " + f[0] + " is already constrained (" + seen_file[c.index] + ":" +
-                                                 std::to_string(seen_line[c.index]) + ")");
-    seen_line[c.index] = l.first;
-    seen_file[c.index] = file;
-    out.push_back(c);
-  }
-}
 
 /// A number option in [low, high] (usage error otherwise).
 double ranged_option(const std::string& text, const std::string& option, double low, double high, const char* domain) {
@@ -167,8 +82,9 @@ fair::Optimal_curve_options curve_options(const Optimal_command_options& o) {
     throw CLI::ValidationError("--tangents", "--tangents and --normals exclude each other (give a normal as a tangent)");
   if (!o.resolution.empty())
     options.resolution = ranged_option(o.resolution, "--resolution", 1e-300, inf, "a resolution > 0 (pixels)");
-  if (o.solver == "cg") options.solver = fair::Optimal_curve_solver::CONJUGATE_GRADIENT;
-  else if (o.solver != "newton") throw CLI::ValidationError("--solver", "expected newton or cg, got '" + o.solver + "'");
+  if (!fair::io::try_parse_spelling(o.solver, options.solver))
+    throw CLI::ValidationError("--solver", "expected " + fair::io::spellings_list<fair::Optimal_curve_solver>() +
+                                               ", got '" + o.solver + "'");
   return options;
 }
 
@@ -178,43 +94,24 @@ bool has_derivative_term(const fair::Optimal_curve_options& o) {
   return false;
 }
 
-nlohmann::json xy(const fair_curves::Point_2& p) { return nlohmann::json::array({p.x(), p.y()}); }
-
+/// The curve JSON of -o (fair::io::curve_to_json): the pieces of the spline through the optimal
+/// polygon with its "bspline", the status and the solve report, the polygon and its data.
 std::string curve_json(const fair::Optimal_curve_2<fair_curves::Kernel>& curve,
-                       const fair::Polygon_spline_runs<fair_curves::Kernel>& fit,
                        const fair::Polygon_quintic_fit<fair_curves::Kernel>* quintic) {
-  const fair::Optimal_curve_report& r = curve.report();
-  nlohmann::json levels = nlohmann::json::array(), polygon = nlohmann::json::array();
-  for (const fair::Optimal_curve_level& l : r.levels)
-    levels.push_back({{"vertices", l.vertices}, {"iterations", l.iterations}, {"energy", l.energy},
-                      {"gradient_norm", l.gradient_norm}, {"status", fair::to_string(l.status)}});
-  for (const fair_curves::Point_2& p : curve.polygon()) polygon.push_back(xy(p));
-  nlohmann::json extra{{"method", "optimal"},
-                       {"closed", curve.options().closed},
-                       {"status", fair::to_string(r.status)},
-                       {"energy", r.energy},
-                       {"iterations", r.iterations},
-                       {"gradient_norm", r.gradient_norm},
-                       {"levels", levels},
-                       {"polygon", polygon},
+  nlohmann::json polygon = nlohmann::json::array();
+  for (const fair_curves::Point_2& p : curve.polygon()) polygon.push_back(fair::io::point_to_json(p, "polygon vertex"));
+  nlohmann::json extra{{"polygon", polygon},
                        {"interpolation_indices", curve.interpolation_indices()},
                        {"curvatures", curve.curvatures()},
-                       {"fit_max_distance", fit.max_distance}};
+                       {"fit_max_distance", curve.spline().max_distance}};
   if (quintic) {
     nlohmann::json pieces = nlohmann::json::array();
-    for (const auto& piece : quintic->pieces) {
-      nlohmann::json cp = nlohmann::json::array();
-      for (const auto& p : piece.control_points()) cp.push_back(xy(p));
-      pieces.push_back(cp);
-    }
-    extra["quintic"] = {{"degree", 5}, {"pieces", pieces}, {"max_distance", quintic->max_distance}};
+    for (std::size_t i = 0; i < quintic->pieces.size(); ++i) pieces.push_back(fair::io::piece_to_json(quintic->pieces[i], i));
+    extra["quintic"] = {{"pieces", pieces}, {"max_distance", quintic->max_distance}};
   }
   std::ostringstream out;
-  // The curve format of the fit's pieces with its "bspline" member: one spline, or (with corners)
-  // the C2 runs between them as one NURBS with triple knots at the corners.
-  nlohmann::json j = fair::io::curve_to_json(fit.pieces(), extra);
-  j["bspline"] = fair::io::spline_runs_to_json(fit.splines, curve.options().closed);
-  fair::io::write_json(out, j);
+  // "bspline": the C2 runs between corners as one NURBS with triple knots at the corners.
+  fair::io::write_json(out, fair::io::family_to_json(curve, "optimal", extra));
   return out.str();
 }
 
@@ -237,23 +134,18 @@ void run_optimal(const Optimal_command_options& o) {
   options.closed = options.closed || data.closed;
   fair::io::check_point_file(data, options.closed ? 3 : 2, options.closed, "fair-curves optimal");
   const std::size_t n = data.points.size();
-  if (!o.lambda_file.empty()) options.segment_lambda = read_lambdas(o.lambda_file, options.closed ? n : n - 1);
-  std::vector<std::size_t> seen_line(n, 0);
-  std::vector<std::string> seen_file(n);
-  if (!o.tangents.empty())
-    read_constraints(o.tangents, fair::Point_constraint_kind::TANGENT, n, options.constraints, seen_line, seen_file);
-  if (!o.normals.empty())
-    read_constraints(o.normals, fair::Point_constraint_kind::NORMAL, n, options.constraints, seen_line, seen_file);
-  if (!o.corners.empty())
-    read_constraints(o.corners, fair::Point_constraint_kind::CORNER, n, options.constraints, seen_line, seen_file);
+  if (!o.lambda_file.empty()) options.segment_lambda = fair::io::read_segment_lambdas(o.lambda_file, options.closed ? n : n - 1);
+  std::vector<fair::io::Constraint_file> constraints;
+  if (!o.tangents.empty()) constraints.push_back(fair::io::read_constraints(o.tangents, fair::Point_constraint_kind::TANGENT, n));
+  if (!o.normals.empty()) constraints.push_back(fair::io::read_constraints(o.normals, fair::Point_constraint_kind::NORMAL, n));
+  if (!o.corners.empty()) constraints.push_back(fair::io::read_constraints(o.corners, fair::Point_constraint_kind::CORNER, n));
+  options.constraints = fair::io::merge_constraint_files(constraints);
 
   const fair::Optimal_curve_2<Kernel> curve(data.points, options);
-  const fair::Polygon_spline_runs<Kernel> fit =
-      fair::fit_cubic_spline_runs<Kernel>(curve.polygon(), options.closed, curve.corner_vertices());
   std::unique_ptr<fair::Polygon_quintic_fit<Kernel>> quintic;
   if (has_derivative_term(options))
     quintic.reset(new fair::Polygon_quintic_fit<Kernel>(fair::fit_quintic_spline<Kernel>(curve.polygon(), options.closed)));
-  const std::string json_text = o.json_out.empty() ? std::string() : curve_json(curve, fit, quintic.get());
+  const std::string json_text = o.json_out.empty() ? std::string() : curve_json(curve, quintic.get());
   std::string svg_text;
   if (!o.svg_out.empty()) {
     Curve_case c;
@@ -261,9 +153,9 @@ void run_optimal(const Optimal_command_options& o) {
     c.title_in_figure = true;
     c.input_points = fair::io::to_xy(data.points);
     c.control_polygons = false;
-    svg_text = make_curve_figures(fit.pieces(), c).curve_svg;
+    svg_text = make_curve_figures(curve.pieces(), c).curve_svg;
   }
-  write_outputs(summary(o, curve, n, fit.max_distance), o.json_out, json_text, {{o.svg_out, svg_text}});
+  write_outputs(summary(o, curve, n, curve.spline().max_distance), o.json_out, json_text, {{o.svg_out, svg_text}});
   if (curve.report().status != fair::Optimal_curve_status::CONVERGED) {
     std::cerr << "fair-curves optimal: " << o.input << ": the solve is " << curve.report().status
               << " (outputs written; exit code " << not_converged_exit_code << ")\n";

@@ -77,10 +77,8 @@ nlohmann::json report_json(const fair::io::Design_file<K>& f, const fair::Basic_
     for (const auto& p : f.marked_points[s]) marks.push_back(fair::io::point_to_json(p, "marked point"));
     shapes.push_back({{"type", f.types[s]}, {"parts", std::move(parts)}, {"marked_points", std::move(marks)}});
   }
-  return nlohmann::json{{"method", "shapes"},
-                        {"design", f.file},
+  return nlohmann::json{{"design", f.file},
                         {"exact", exact},
-                        {"closed", f.closed},
                         {"merge_tolerance", f.merge_tolerance},
                         {"merge_distance", d.merge_distance},
                         {"joins", std::move(joins)},
@@ -123,7 +121,11 @@ void run(const Shapes_options& o) {
     std::ostringstream out;
     nlohmann::json extra = report_json(f, d, o.exact);
     extra["convexity"] = convexity_json(convexity);
-    fair::io::write_json(out, fair::io::spline_curve_to_json(d.spline, extra));
+    extra["bspline"] = fair::io::spline_to_json(d.spline);
+    // The design's points are its marked points, shape after shape.
+    std::vector<typename K::Point_2> points;
+    for (const auto& shape_marks : f.marked_points) points.insert(points.end(), shape_marks.begin(), shape_marks.end());
+    fair::io::write_json(out, fair::io::curve_to_json("shapes", f.closed, points, d.spline.pieces(), extra));
     json_text = out.str();
   }
   if (!o.svg_out.empty()) {

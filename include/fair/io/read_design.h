@@ -9,8 +9,8 @@
 #define FAIR_IO_READ_DESIGN_H
 
 #include <fair/Basic_shape_design.h>
+#include <fair/Design_marks.h>
 #include <fair/Errors.h>
-#include <fair/internal/basic_shapes/marked_points.h>
 #include <fair/Parametric_curve_2.h>
 #include <fair/io/parsing.h>
 
@@ -140,7 +140,6 @@ public:
   }
 
   Design_file<K> read(const std::string& text) {
-    using namespace fair::internal::basic_shapes;
     Design_file<K> out;
     out.file = file_;
     const Json_value root = parse_json(text, file_);
@@ -182,13 +181,12 @@ public:
   }
 
   void read_shape(const Json_value& s, const std::string& t, const std::string& path, Design_file<K>& out) {
-    using namespace fair::internal::basic_shapes;
     const double tol = out.mark_tolerance;
     std::vector<Point_2> marked;
     if (t == "segment") {
       const Point_2 a = point(member(s, path, "from"), path + ".from"), b = point(member(s, path, "to"), path + ".to");
       if (a == b) out.shapes.push_back(Basic_shape_2<K>::segment(a, b));  // throws: zero-length, before any mark
-      const std::vector<FT> marks = parameter_marks(s, path, [&](const Point_2& q) { return segment_parameter<K>(a, b, q, tol); });
+      const std::vector<FT> marks = parameter_marks(s, path, [&](const Point_2& q) { return segment_mark_parameter<K>(a, b, q, tol); });
       for (const FT& u : marks) marked.push_back(a + (b - a) * u);
       out.shapes.push_back(Basic_shape_2<K>::segment(a, b, marks));
     } else if (t == "arc") {
@@ -209,7 +207,7 @@ public:
       const std::vector<Point_2> p = points(member(s, path, "control_points"), path + ".control_points", 3);
       const FT w = positive(member(s, path, "weight"), path + ".weight", "weight");
       const Rational_quadratic_bezier_2<K> conic(p[0], p[1], p[2], w);
-      const std::vector<FT> marks = parameter_marks(s, path, [&](const Point_2& q) { return conic_parameter<K>(conic, q, tol); });
+      const std::vector<FT> marks = parameter_marks(s, path, [&](const Point_2& q) { return conic_mark_parameter<K>(conic, q, tol); });
       for (const FT& u : marks) marked.push_back(conic.point(u));
       out.shapes.push_back(Basic_shape_2<K>::conic(conic, marks));
     } else if (t == "cubic") {
@@ -220,7 +218,7 @@ public:
         for (std::size_t k = 0; k < 4; ++k) w[k] = positive(wv->items[k], item(path + ".weights", k), "weight");
       }
       const Rational_bezier_2<K> cubic(p, w);
-      const std::vector<FT> marks = parameter_marks(s, path, [&](const Point_2& q) { return cubic_parameter<K>(cubic, q, tol); });
+      const std::vector<FT> marks = parameter_marks(s, path, [&](const Point_2& q) { return cubic_mark_parameter<K>(cubic, q, tol); });
       for (const FT& u : marks) marked.push_back(cubic.point(u));
       out.shapes.push_back(Basic_shape_2<K>::cubic(cubic, marks));
     } else if (t == "spiral") {

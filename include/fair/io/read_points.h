@@ -11,6 +11,7 @@
 
 #include <fair/Errors.h>
 #include <fair/internal/common/input_checks.h>
+#include <fair/io/internal/text_lines.h>
 #include <fair/io/parsing.h>
 
 #include <cctype>
@@ -40,14 +41,6 @@ struct Point_file {
 
 namespace internal {
 
-inline std::string trim(const std::string& s) {
-  const char* space = " \t\r\f\v";
-  const std::size_t b = s.find_first_not_of(space);
-  if (b == std::string::npos) return std::string();
-  const std::size_t e = s.find_last_not_of(space);
-  return s.substr(b, e - b + 1);
-}
-
 /// A field that starts like a word (a header such as "x" or "lon"), but is not one of the
 /// spellings of NaN or infinity, which are bad numbers rather than column names.
 inline bool looks_like_column_name(const std::string& field) {
@@ -59,45 +52,10 @@ inline bool looks_like_column_name(const std::string& field) {
   return lower.rfind("nan", 0) != 0 && lower.rfind("inf", 0) != 0;
 }
 
-inline std::vector<std::string> split_fields(const std::string& line) {
-  std::vector<std::string> fields;
-  if (line.find(',') != std::string::npos) {
-    std::size_t start = 0;
-    for (;;) {
-      const std::size_t comma = line.find(',', start);
-      fields.push_back(trim(line.substr(start, comma == std::string::npos ? std::string::npos
-                                                                           : comma - start)));
-      if (comma == std::string::npos) break;
-      start = comma + 1;
-    }
-  } else {
-    // No comma: whitespace-separated columns ("x y"), as many tools write them.
-    std::istringstream in(line);
-    std::string f;
-    while (in >> f) fields.push_back(f);
-  }
-  return fields;
-}
-
 template <class Kernel>
 typename Kernel::Point_2 make_point(const Parsed_number& x, const Parsed_number& y) {
   typedef typename Kernel::FT FT;
   return typename Kernel::Point_2(to_ft<FT>(x), to_ft<FT>(y));
-}
-
-/// Rejects bytes that cannot appear in a text point file (NUL and other control characters).
-inline void check_text_line(const std::string& line, const std::string& file, std::size_t number) {
-  for (std::size_t k = 0; k < line.size(); ++k) {
-    const unsigned char c = static_cast<unsigned char>(line[k]);
-    if (c < 0x20 && c != '\t' && c != '\r' && c != '\f' && c != '\v')
-    {
-      const char* digits = "0123456789abcdef";
-      const std::string hex = {'0', 'x', digits[c >> 4], digits[c & 15]};
-      throw Parse_error(file, number,
-                        fair::internal::message("unreadable line: control byte ", hex,
-                                                " at column ", k + 1, " (is this a text file?)"));
-    }
-  }
 }
 
 } // namespace internal
@@ -111,19 +69,9 @@ Point_file<Kernel> parse_points_csv(const std::string& text, const std::string& 
   Point_file<Kernel> out;
   out.file = file;
   bool first_data_line = true;
-  std::size_t start = 0, number = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    std::string line = text.substr(start, end - start);
-    start = end + 1;
-    ++number;
-    check_text_line(line, file, number);
-    const std::size_t hash = line.find('#');
-    if (hash != std::string::npos) line.erase(hash);
-    line = trim(line);
-    if (line.empty()) continue;
-    const std::vector<std::string> fields = split_fields(line);
+  for (const Text_line& data : data_lines(text, file)) {
+    const std::size_t number = data.number;
+    const std::vector<std::string>& fields = data.fields;
     if (first_data_line) {
       first_data_line = false;
       bool header = true;
@@ -138,7 +86,7 @@ Point_file<Kernel> parse_points_csv(const std::string& text, const std::string& 
     if (fields.size() != 2)
       throw Parse_error(file, number,
                         fair::internal::message("expected 2 fields \"x,y\", got ", fields.size(), " in ",
-                                quoted(line)));
+                                                        quoted(data.text)));
     const Parsed_number x = parse_number(fields[0], file, number, "x coordinate");
     const Parsed_number y = parse_number(fields[1], file, number, "y coordinate");
     out.points.push_back(make_point<Kernel>(x, y));

@@ -1,6 +1,10 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// Writing points and curves as JSON (nlohmann-json) and points as CSV. See doc/io.md.
+// Writing points, curves and the solvers' reports as JSON (nlohmann-json) and points as CSV.
+// See doc/io.md. The one curve JSON of every method (curve_to_json with the method, the input
+// points and the pieces): {"format": "fair-curve", "version": 1, "method", "closed", "points",
+// "pieces": [{"degree", "control_points", "weights"?}, ...]} plus the method's members
+// ("bspline" where the family has one, "status" and "report" for the solver families).
 //
 // A coordinate is written as the JSON number of its nearest double (shortest text that reads
 // back to the same double). In an exact kernel a coordinate that is not exactly a double is
@@ -13,7 +17,11 @@
 
 #include <fair/Cubic_spline_2.h>
 #include <fair/Curve_traits.h>
+#include <fair/Cardinal_spline_report.h>
 #include <fair/Errors.h>
+#include <fair/Kappa_curve_report.h>
+#include <fair/Optimal_curve_report.h>
+#include <fair/io/enum_names.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/number_utils.h>
@@ -172,6 +180,100 @@ nlohmann::json curve_to_json(const PieceRange& pieces,
   return out;
 }
 
+/// The one curve JSON of every method: curve_to_json(pieces, extra) preceded by "method",
+/// "closed" and the input "points" ([[x, y], ...]). `piece_extra`, when not empty, holds one JSON
+/// object per piece whose members are written beside the piece's own (the kappa-curve's "point"
+/// and "t"). Throws Precondition_error if `piece_extra` has another size, redefines a member of a
+/// piece, or `extra` redefines a member of the curve.
+template <class Point_2, class PieceRange>
+nlohmann::json curve_to_json(const std::string& method, bool closed, const std::vector<Point_2>& points,
+                             const PieceRange& pieces, const nlohmann::json& extra = nlohmann::json::object(),
+                             const std::vector<nlohmann::json>& piece_extra = {}) {
+  fair::internal::require(extra.is_object(), "fair::io::curve_to_json: extra must be a JSON object, got ",
+                          extra.type_name());
+  nlohmann::json head{{"method", method}, {"closed", closed}};
+  nlohmann::json pts = nlohmann::json::array();
+  for (std::size_t i = 0; i < points.size(); ++i)
+    pts.push_back(point_to_json(points[i], fair::internal::message("point ", i)));
+  head["points"] = std::move(pts);
+  for (auto it = extra.begin(); it != extra.end(); ++it) {
+    fair::internal::require(!head.contains(it.key()), "fair::io::curve_to_json: extra member \"", it.key(),
+                            "\" would overwrite a member of the curve");
+    head[it.key()] = it.value();
+  }
+  nlohmann::json out = curve_to_json(pieces, head);
+  if (!piece_extra.empty()) {
+    nlohmann::json& ps = out["pieces"];
+    fair::internal::require(piece_extra.size() == ps.size(), "fair::io::curve_to_json: ", piece_extra.size(),
+                            " piece extras for ", ps.size(), " pieces");
+    for (std::size_t i = 0; i < ps.size(); ++i)
+      for (auto it = piece_extra[i].begin(); it != piece_extra[i].end(); ++it) {
+        fair::internal::require(!ps[i].contains(it.key()), "fair::io::curve_to_json: piece extra member \"", it.key(),
+                                "\" would overwrite a member of piece ", i);
+        ps[i][it.key()] = it.value();
+      }
+  }
+  return out;
+}
+
+/// A kappa-curve's solve report: {"status": "interior" | "on_joins" | "unsolved", the counts,
+/// "residuals" (the dimensionless residuals of the report), "energy" (its terms and total), and
+/// the point lists (0-based input indices)}.
+inline nlohmann::json to_json(const Kappa_curve_report& r) {
+  nlohmann::json worst = nlohmann::json::array();
+  for (const Kappa_point_residual& p : r.worst_points) worst.push_back({{"point", p.point}, {"residual", p.residual}});
+  return nlohmann::json{{"status", spelling(r.status)},
+                        {"warm_started", r.warm_started},
+                        {"refinement_passes", r.refinement_passes},
+                        {"iterations", r.iterations},
+                        {"residuals",
+                         {{"max", r.residual},
+                          {"interpolation", r.interpolation_residual},
+                          {"max_curvature_eq7", r.curvature_residual},
+                          {"abs_curvature_continuity", r.g2_residual},
+                          {"weight_eq16", r.weight_residual}}},
+                        {"energy",
+                         {{"total", r.energy()},
+                          {"interpolation", r.energy_interpolation},
+                          {"curvature_eq12", r.energy_curvature},
+                          {"g2_eq11", r.energy_g2},
+                          {"weight_eq13", r.energy_weight}}},
+                        {"bounds_active", r.bounds_active},
+                        {"points_on_joins", r.points_on_joins},
+                        {"points_at_minima", r.points_at_minima},
+                        {"worst_points", std::move(worst)},
+                        {"points_beyond_density_limit", r.points_beyond_density_limit}};
+}
+
+/// An optimal curve's solve report: {"status": "converged" | "diverging" | "capped", "energy",
+/// "iterations", "gradient_norm", "levels": [{"vertices", "iterations", "energy",
+/// "gradient_norm", "status"}, ...]} (one level per polygon of the hierarchy, coarse to fine).
+inline nlohmann::json to_json(const Optimal_curve_report& r) {
+  nlohmann::json levels = nlohmann::json::array();
+  for (const Optimal_curve_level& l : r.levels)
+    levels.push_back({{"vertices", l.vertices}, {"iterations", l.iterations}, {"energy", l.energy},
+                      {"gradient_norm", l.gradient_norm}, {"status", spelling(l.status)}});
+  return nlohmann::json{{"status", spelling(r.status)},
+                        {"energy", r.energy},
+                        {"iterations", r.iterations},
+                        {"gradient_norm", r.gradient_norm},
+                        {"levels", std::move(levels)}};
+}
+
+/// A Cardinal spline's report: {"status": "optimal" | "given_alpha" | "no_optimum", "alpha" (the
+/// alpha used), "aux_start", "aux_end" ([x, y]: the auxiliary points of an open curve; of a closed
+/// one its first and last point, as the report holds them), "energy" (eq. 10 at alpha)}. In an
+/// exact kernel the numbers that are not doubles are "p/q" strings (alpha* of data set 1 of [Li]:
+/// "9192/12241").
+template <class K>
+nlohmann::json to_json(const Cardinal_spline_report<K>& r) {
+  return nlohmann::json{{"status", spelling(r.status)},
+                        {"alpha", number_to_json(r.alpha, "alpha")},
+                        {"aux_start", point_to_json(r.aux_start, "aux_start")},
+                        {"aux_end", point_to_json(r.aux_end, "aux_end")},
+                        {"energy", number_to_json(r.energy, "energy")}};
+}
+
 /// The "bspline" member of the curve format: {"degree": 3, "closed": ..., "knots": [...],
 /// "control_points": [[x, y], ...], "weights": [...]} — the NURBS form of the spline
 /// (Cubic_spline_2::knot_vector() and its control points: clamped when open, the unclamped
@@ -252,6 +354,55 @@ nlohmann::json spline_curve_to_json(const Cubic_spline_2<K>& spline,
                           "overwrite the spline");
   out["bspline"] = spline_to_json(spline);
   return out;
+}
+
+namespace internal {
+
+template <class C, class = void>
+struct Has_report : std::false_type {};
+template <class C>
+struct Has_report<C, std::void_t<decltype(std::declval<const C&>().report())>> : std::true_type {};
+template <class C, class = void>
+struct Has_spline : std::false_type {};
+template <class C>
+struct Has_spline<C, std::void_t<decltype(std::declval<const C&>().spline())>> : std::true_type {};
+/// Splines joined at corners (fair::Polygon_spline_runs: the member `splines`).
+template <class S, class = void>
+struct Is_spline_runs : std::false_type {};
+template <class S>
+struct Is_spline_runs<S, std::void_t<decltype(std::declval<const S&>().splines)>> : std::true_type {};
+
+} // namespace internal
+
+/// The curve JSON of a curve of any family (doc/concepts.md): curve_to_json(method,
+/// curve.is_closed(), curve.points(), curve.pieces(), extra, piece_extra) plus, where the family
+/// has them, "bspline" (of curve.spline(): spline_to_json, or spline_runs_to_json for splines
+/// joined at corners) and "status" and "report" (to_json(curve.report())). The one writer of
+/// every family's pieces and B-spline, so that the program cannot disagree with itself.
+template <class Curve>
+nlohmann::json family_to_json(const Curve& curve, const std::string& method,
+                              const nlohmann::json& extra = nlohmann::json::object(),
+                              const std::vector<nlohmann::json>& piece_extra = {}) {
+  fair::internal::require(extra.is_object(), "fair::io::family_to_json: extra must be a JSON object, got ",
+                          extra.type_name());
+  nlohmann::json members = nlohmann::json::object();
+  if constexpr (internal::Has_report<Curve>::value) {
+    members["status"] = spelling(curve.report().status);
+    members["report"] = to_json(curve.report());
+  }
+  if constexpr (internal::Has_spline<Curve>::value) {
+    typedef std::decay_t<decltype(curve.spline())> Spline;
+    if constexpr (internal::Is_spline_runs<Spline>::value)
+      members["bspline"] = spline_runs_to_json(curve.spline().splines, curve.is_closed());
+    else
+      members["bspline"] = spline_to_json(curve.spline());
+  }
+  for (auto it = extra.begin(); it != extra.end(); ++it) {
+    fair::internal::require(!members.contains(it.key()), "fair::io::family_to_json: extra member \"", it.key(),
+                            "\" would overwrite a member of the curve");
+    members[it.key()] = it.value();
+  }
+  return curve_to_json(method, curve.is_closed(), curve.points(), curve.pieces(), members, piece_extra);
 }
 
 /// Throws Precondition_error if `j` holds a non-finite number anywhere (`path` names it).
