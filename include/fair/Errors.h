@@ -103,31 +103,10 @@ private:
   int line_;
 };
 
-namespace internal {
-
-/// Concatenates its arguments with operator<< into one message.
-template <class... Args>
-std::string message(const Args&... args) {
-  std::ostringstream out;
-  out.precision(17);
-  (out << ... << args);
-  return out.str();
-}
-
-/// Throws Precondition_error with the concatenated message unless `condition` holds.
-template <class... Args>
-void require(bool condition, const Args&... args) {
-  if (!condition) throw Precondition_error(message(args...));
-}
-
-/// Throws Internal_error recording the condition, file and line unless `condition` holds.
-template <class... Args>
-void check_invariant(bool condition, const char* expression, const char* file, int line, const Args&... args) {
-  if (!condition) throw Internal_error(message(expression, " does not hold", (sizeof...(args) ? ": " : ""), args...), file, line);
-}
-
-} // namespace internal
 } // namespace fair
+
+// The message, precondition and invariant helpers every algorithm uses with these errors.
+#include <fair/internal/common/checks.h>
 
 /// FAIR_ASSERT(condition): an invariant of the library's own algorithms, not a check of user
 /// input. Always on, also in release builds (a CAD kernel must not go on past a broken
