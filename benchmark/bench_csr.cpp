@@ -18,6 +18,8 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <benchmark/benchmark.h>
+
+#include "bench_inputs.h"
 #include <malloc.h>
 
 #include <cmath>
@@ -29,22 +31,8 @@ namespace {
 typedef CGAL::Simple_cartesian<double> Kd;
 typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
 
-// n samples of a curve mixing arcs of different curvature (the csr-spline's use case): the
-// spiral r = 1 + theta / 4 at roughly unit arc-length steps, with a little seeded jitter.
 template <class K>
-std::vector<typename K::Point_2> samples(std::size_t n) {
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> jitter(-0.05, 0.05);
-  std::vector<typename K::Point_2> p;
-  p.reserve(n);
-  double theta = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double r = 1 + theta / 4;
-    p.emplace_back(r * std::cos(theta), r * std::sin(theta));
-    theta += (0.5 + jitter(rng)) / r;
-  }
-  return p;
-}
+std::vector<typename K::Point_2> samples(std::size_t n) { return fair_bench::spiral_samples<K>(n); }
 
 template <class K>
 void construct(benchmark::State& state, fair::Knot_spacing spacing) {

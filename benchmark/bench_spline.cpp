@@ -20,6 +20,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "bench_inputs.h"
+
 #include <cmath>
 #include <random>
 #include <vector>
@@ -30,20 +32,7 @@ typedef CGAL::Simple_cartesian<double> Kd;
 typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
 
 template <class K>
-std::vector<typename K::Point_2> walk(std::size_t n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> turn(-0.8, 0.8), step(0.5, 1.5);
-  std::vector<typename K::Point_2> p;
-  double x = 0, y = 0, h = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    p.push_back(typename K::Point_2(x, y));
-    h += turn(rng);
-    const double s = step(rng);
-    x += s * std::cos(h);
-    y += s * std::sin(h);
-  }
-  return p;
-}
+std::vector<typename K::Point_2> walk(std::size_t n, unsigned seed) { return fair_bench::random_walk<K>(n, seed); }
 
 constexpr std::size_t evaluations = 1 << 16;
 
@@ -120,15 +109,8 @@ void BM_spline_point_epeck(benchmark::State& state) {
 BENCHMARK(BM_spline_point_epeck)->Unit(benchmark::kMillisecond);
 
 void BM_fit_cubic_spline_closed(benchmark::State& state) {
-  // A closed polygon: n points on a wobbly circle (distinct consecutive vertices).
   const std::size_t n = static_cast<std::size_t>(state.range(0));
-  std::vector<Kd::Point_2> p;
-  p.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
-    const double r = 1 + 0.1 * std::sin(7 * a);
-    p.emplace_back(r * std::cos(a), r * std::sin(a));
-  }
+  const std::vector<Kd::Point_2> p = fair_bench::wobbly_circle<Kd>(n);  // closed
   for (auto _ : state) benchmark::DoNotOptimize(fair::fit_cubic_spline<Kd>(p, true).max_distance);
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * n));
 }

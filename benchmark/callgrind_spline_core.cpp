@@ -21,6 +21,8 @@
 
 #include <valgrind/callgrind.h>
 
+#include "bench_inputs.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -31,44 +33,12 @@ namespace {
 
 typedef CGAL::Simple_cartesian<double> Kd;
 
-std::vector<Kd::Point_2> spiral(std::size_t n) {  // bench_csr's samples
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> jitter(-0.05, 0.05);
-  std::vector<Kd::Point_2> p;
-  p.reserve(n);
-  double theta = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double r = 1 + theta / 4;
-    p.emplace_back(r * std::cos(theta), r * std::sin(theta));
-    theta += (0.5 + jitter(rng)) / r;
-  }
-  return p;
-}
+std::vector<Kd::Point_2> spiral(std::size_t n) { return fair_bench::spiral_samples<Kd>(n); }
+std::vector<Kd::Point_2> walk(std::size_t n, unsigned seed) { return fair_bench::random_walk<Kd>(n, seed); }
+std::vector<Kd::Point_2> wobbly_circle(std::size_t n) { return fair_bench::wobbly_circle<Kd>(n); }
 
-std::vector<Kd::Point_2> walk(std::size_t n, unsigned seed) {  // bench_spline's and bench_cardinal's
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> turn(-0.8, 0.8), step(0.5, 1.5);
-  std::vector<Kd::Point_2> p;
-  double x = 0, y = 0, h = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    p.emplace_back(x, y);
-    h += turn(rng);
-    const double s = step(rng);
-    x += s * std::cos(h);
-    y += s * std::sin(h);
-  }
-  return p;
-}
 
-std::vector<Kd::Point_2> wobbly_circle(std::size_t n) {  // bench_spline's fit_cubic_spline input
-  std::vector<Kd::Point_2> p;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
-    const double r = 1 + 0.1 * std::sin(7 * a);
-    p.emplace_back(r * std::cos(a), r * std::sin(a));
-  }
-  return p;
-}
+
 
 double sink = 0;
 
