@@ -28,6 +28,7 @@
 
 #include <fair/Bezier_2.h>
 #include <fair/Cubic_spline_2.h>
+#include <fair/internal/common/lazy_cache.h>
 #include <fair/Errors.h>
 #include <fair/Knot_spacing.h>
 #include <fair/internal/csr/construction.h>
@@ -96,9 +97,13 @@ public:
   /// The cubic C2 B-spline: breakpoints = parameters(); open: m + 3 control points
   /// q_0, b_1^0, c_1..c_{m-1}, b_2^{m-1}, q_m; closed: c_0..c_{m-1}.
   const Spline& spline() const { return spline_; }
-  /// Its cubic Bezier pieces (built once by the constructor); piece i spans [t_i, t_{i+1}].
-  const std::vector<Piece>& pieces() const { return pieces_; }
-  std::size_t number_of_pieces() const { return pieces_.size(); }
+  /// Its cubic Bezier pieces; piece i spans [t_i, t_{i+1}]. Built on the first call and kept
+  /// (thread-safe): the spline is the representation, and building 10^6 pieces would cost more
+  /// than constructing the spline.
+  const std::vector<Piece>& pieces() const {
+    return pieces_.get([this] { return spline_.polynomial_pieces(); });
+  }
+  std::size_t number_of_pieces() const { return spline_.number_of_pieces(); }
   bool is_closed() const { return options_.closed; }
   /// The samples q_i, as given (the spline approximates them: distances_to_samples()).
   const std::vector<Point_2>& points() const { return samples_; }
@@ -120,7 +125,7 @@ public:
     internal::require(i < samples_.size(), "Csr_spline_2::point_at_sample: index ", i, " out of range (",
                       samples_.size(), " samples)");
     if (!options_.closed && i + 1 == samples_.size()) return samples_.back();  // the clamped end
-    return pieces_[i].control_points().front();
+    return spline_.polynomial_piece(i).control_points().front();
   }
   /// |s(t_i) - q_i|^2, exact in an exact kernel.
   FT squared_distance_to_sample(std::size_t i) const {
@@ -149,8 +154,7 @@ private:
   Csr_spline_2(std::vector<Point_2> samples, const std::vector<FT>* parameters, const Csr_spline_options& options)
     : samples_(std::move(samples)), given_parameters_(parameters != nullptr), options_(options),
       data_(construct(samples_, parameters, options)),
-      spline_(std::move(data_.breakpoints), std::move(data_.control_points), options.closed),
-      pieces_(spline_.polynomial_pieces()) {
+      spline_(std::move(data_.breakpoints), std::move(data_.control_points), options.closed) {
     // Finite control points can still give Bezier pieces (or their derivatives) that overflow,
     // e.g. coordinates near 1e308 or extreme knot ratios: refuse them rather than hand out NaN.
     spline_.check_finite_pieces("Csr_spline_2");
@@ -170,7 +174,7 @@ private:
   Csr_spline_options options_;
   internal::csr::Construction<K> data_;  // curvatures and epsilon (its knots and points moved into spline_)
   Spline spline_;
-  std::vector<Piece> pieces_;
+  internal::common::Lazy_cache<std::vector<Piece>> pieces_;
 };
 
 } // namespace fair

@@ -17,6 +17,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -613,3 +614,32 @@ TYPED_TEST(Csr_floating, Fig2FewerCurvatureExtremaThanTheClassicInterpolant) {
 }
 
 } // namespace
+
+// pieces() is built on first use and kept (internal/common/lazy_cache.h): the same pieces as the
+// spline's, one vector however many threads ask at once, and copies that carry equal pieces
+// whether or not the original had built them.
+TYPED_TEST(Csr, PiecesAreTheSplinesBuiltOnceAndCopied) {
+  typedef TypeParam K;
+  typedef typename K::Point_2 P;
+  std::vector<P> q;
+  for (int i = 0; i < 40; ++i) q.push_back(P(typename K::FT(i), typename K::FT((i * i) % 7)));
+  const fair::Csr_spline_2<K> unbuilt(q);
+  const fair::Csr_spline_2<K> copy_before = unbuilt;  // copied before anyone built the pieces
+  const fair::Csr_spline_2<K> c(q);
+  std::vector<const std::vector<typename fair::Csr_spline_2<K>::Piece>*> seen(4, nullptr);
+  std::vector<std::thread> threads;
+  for (std::size_t k = 0; k < seen.size(); ++k) threads.emplace_back([&c, &seen, k] { seen[k] = &c.pieces(); });
+  for (std::thread& t : threads) t.join();
+  for (const auto* v : seen) EXPECT_EQ(v, &c.pieces());
+  const auto expected = c.spline().polynomial_pieces();
+  ASSERT_EQ(c.pieces().size(), expected.size());
+  ASSERT_EQ(c.number_of_pieces(), expected.size());
+  const fair::Csr_spline_2<K> copy_after = c;  // copied after: carries the built pieces
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    for (std::size_t k = 0; k < 4; ++k) {
+      EXPECT_TRUE(same<K>(c.pieces()[i].control_point(k), expected[i].control_point(k), 0)) << i;
+      EXPECT_TRUE(same<K>(copy_after.pieces()[i].control_point(k), expected[i].control_point(k), 0)) << i;
+      EXPECT_TRUE(same<K>(copy_before.pieces()[i].control_point(k), expected[i].control_point(k), 0)) << i;
+    }
+  EXPECT_NE(&copy_after.pieces(), &c.pieces());
+}
