@@ -15,6 +15,8 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <benchmark/benchmark.h>
+
+#include "bench_inputs.h"
 #include <boost/math/interpolators/catmull_rom.hpp>
 
 #include <array>
@@ -27,20 +29,12 @@ namespace {
 typedef CGAL::Simple_cartesian<double> Kd;
 typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
 
-// A random walk with turning steps: distinct consecutive points, a curvy polyline.
+// bench_inputs.h's random walk, as the coordinate pairs Boost's catmull_rom takes.
 std::vector<std::array<double, 2>> walk(std::size_t n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> turn(-0.8, 0.8), step(0.5, 1.5);
-  std::vector<std::array<double, 2>> p;
-  double x = 0, y = 0, h = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    p.push_back({x, y});
-    h += turn(rng);
-    const double s = step(rng);
-    x += s * std::cos(h);
-    y += s * std::sin(h);
-  }
-  return p;
+  std::vector<std::array<double, 2>> w;
+  w.reserve(n);
+  for (const Kd::Point_2& q : fair_bench::random_walk<Kd>(n, seed)) w.push_back({q.x(), q.y()});
+  return w;
 }
 
 template <class K>
