@@ -34,6 +34,7 @@
 
 #include <fair/Bezier_2.h>
 #include <fair/Errors.h>
+#include <fair/Nurbs_curve_2.h>
 #include <fair/Rational_bezier_2.h>
 #include <fair/internal/spline/bspline_form.h>
 #include <fair/internal/spline/checks.h>
@@ -296,6 +297,43 @@ public:
   std::vector<Point_2> knot_vector_control_points() const { return wrapped(d_); }
   /// The weights matching knot_vector_control_points().
   std::vector<FT> knot_vector_weights() const { return wrapped(weights()); }
+
+  /// The spline in the exchange form (fair/Nurbs_curve_2.h): degree 3, knot_vector(),
+  /// knot_vector_control_points() and, when rational, knot_vector_weights(); clamped when open,
+  /// the periodic form when closed. The same curve, exactly in an exact kernel.
+  Nurbs_curve_2<K> nurbs() const {
+    return Nurbs_curve_2<K>(3, knot_vector(), knot_vector_control_points(),
+                            rational() ? knot_vector_weights() : std::vector<FT>{}, closed_);
+  }
+
+  /// The C2 cubic spline a NURBS curve is, when it is one: degree 3, every knot inside the
+  /// domain simple; an open curve clamped (end knots of multiplicity 4), a closed one periodic.
+  /// Inverse of nurbs(). \throws Precondition_error naming the knot or property that does not fit.
+  static Cubic_spline_2 from_nurbs(const Nurbs_curve_2<K>& c) {
+    const char* who = "fair::Cubic_spline_2::from_nurbs";
+    const std::vector<FT>& u = c.knots();
+    const std::vector<Point_2>& P = c.control_points();
+    const std::size_t n = P.size();
+    const bool closed = c.is_closed();
+    internal::require(c.degree() == 3, who, ": degree ", c.degree(), " is not 3");
+    if (!closed) {
+      for (std::size_t k = 0; k <= 3; ++k)
+        internal::require(u[k] == u[0] && u[n + k] == u[n], who, ": the knot vector is not clamped (knot ", k,
+                          " or ", n + k, " differs from the end knots)");
+    }
+    std::vector<FT> t;
+    for (std::size_t k = 3; k <= n; ++k) {
+      if (k > 3)
+        internal::require(u[k - 1] < u[k], who, ": knot ", k, " = ", CGAL::to_double(u[k]),
+                          " is multiple inside the domain (a C2 cubic spline has single breakpoints)");
+      t.push_back(u[k]);
+    }
+    const long skip_front = closed ? 1 : 0, skip_back = closed ? 2 : 0; // the periodic wrap c_{-1}, c_m, c_{m+1}
+    std::vector<Point_2> d(P.begin() + skip_front, P.end() - skip_back);
+    if (!c.is_rational()) return Cubic_spline_2(std::move(t), std::move(d), closed);
+    std::vector<FT> w(c.weights().begin() + skip_front, c.weights().end() - skip_back);
+    return Cubic_spline_2(std::move(t), std::move(d), std::move(w), closed);
+  }
 
 private:
   typedef internal::spline::Homogeneous_point<FT> Homogeneous;
