@@ -24,7 +24,7 @@
 // combinations (backward stable, ~p ulps of the control polygon's extent).
 //
 // Complexity: construction O(n + p) (validation); pieces() O(n p^3) once, cached (thread-safe);
-// point/derivatives O(log n + p^2 + order p); insert_knot O(n + p).
+// point/derivatives O(log n + p^2 + order p) once the pieces are built; insert_knot O(n + p).
 //
 // Conversion with the C2 cubic spline: Cubic_spline_2::nurbs() and Cubic_spline_2::from_nurbs()
 // (fair/Cubic_spline_2.h, which includes this header).
@@ -74,6 +74,8 @@ public:
     : p_(degree), u_(std::move(knots)), P_(std::move(control_points)), w_(std::move(weights)), closed_(closed) {
     if (w_.empty()) w_.assign(P_.size(), FT(1));
     validate();
+    for (std::size_t i = p_; i < P_.size(); ++i)
+      if (u_[i] < u_[i + 1]) spans_.push_back(i);
   }
 
   std::size_t degree() const { return p_; }
@@ -234,18 +236,12 @@ private:
   }
 
   // The indices i of the non-empty spans [u_i, u_{i+1}] of the domain.
-  std::vector<std::size_t> spans() const {
-    std::vector<std::size_t> s;
-    for (std::size_t i = p_; i < P_.size(); ++i)
-      if (u_[i] < u_[i + 1]) s.push_back(i);
-    return s;
-  }
+  const std::vector<std::size_t>& spans() const { return spans_; }
 
   Located locate(const FT& u, const char* fn) const {
     check_parameter(u, fn);
     const std::size_t i = internal::nurbs::find_span(p_, P_.size(), u_, u);
-    const std::vector<std::size_t> s = spans();
-    const std::size_t j = static_cast<std::size_t>(std::lower_bound(s.begin(), s.end(), i) - s.begin());
+    const std::size_t j = static_cast<std::size_t>(std::lower_bound(spans_.begin(), spans_.end(), i) - spans_.begin());
     const FT h = u_[i + 1] - u_[i];
     return Located{&pieces()[j], (u - u_[i]) / h, h};
   }
@@ -308,6 +304,7 @@ private:
   std::vector<Point_2> P_;
   std::vector<FT> w_;
   bool closed_;
+  std::vector<std::size_t> spans_; // the non-empty spans of the domain (derived, O(n))
   internal::common::Lazy_cache<std::vector<Piece>> pieces_;
 };
 
