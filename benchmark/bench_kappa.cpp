@@ -114,6 +114,8 @@ BENCHMARK(BM_kappa_dense_inflected)
     ->Args({10000, 7, 30, 40, 10, 1})
     ->Args({100000, 7, 30, 40, 0, 0})
     ->Args({100000, 7, 30, 40, 0, 1})
+    ->Args({100000, 7, 30, 40, 10, 0})  // issue 24: dense noisy data at 10^5 too
+    ->Args({100000, 7, 30, 40, 10, 1})
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 

@@ -23,7 +23,8 @@ namespace fair {
 ///    at an interior curvature maximum.
 ///  - UNSOLVED: otherwise: the residual stays above the tolerance (worst_points says where), or a
 ///    point lies at a curvature MINIMUM of its piece (points_at_minima; possible with weights
-///    w_i < 1, paper Sec. 3.2), even when every equation holds.
+///    w_i < 1, paper Sec. 3.2), even when every equation holds; Kappa_curve_report::reason says
+///    which (Kappa_curve_unsolved_reason).
 enum class Kappa_curve_status { INTERIOR, ON_JOINS, UNSOLVED };
 
 /// "interior", "on_joins" or "unsolved" (the spelling of the JSON of fair-curves kappa).
@@ -36,6 +37,32 @@ inline const char* to_string(Kappa_curve_status s) {
   return "unsolved";
 }
 inline std::ostream& operator<<(std::ostream& out, Kappa_curve_status s) { return out << to_string(s); }
+
+/// Why a solve ended UNSOLVED (Kappa_curve_report::reason; doc/kappa_curves.md, "Outcomes"):
+///  - BEYOND_DENSITY_LIMIT: points_beyond_density_limit lists points where the data are denser
+///    than interior kappa-curves allow (doc/kappa_existence.md, Sec. 7), and the solve did not
+///    reach a root: such data are decided early (a bounded first attempt, no fallbacks; a
+///    kappa-curve is a tool for sparse design points, dense samples want Csr_spline_2 or
+///    Optimal_curve_2).
+///  - POINTS_AT_MINIMA: the equations hold to the tolerance, but the points of points_at_minima
+///    are at a curvature minimum of their piece (possible with weights < 1).
+///  - NO_CONVERGENCE: the residual stays above the tolerance within the caps; worst_points says
+///    where.
+///  - NONE: the outcome is INTERIOR or ON_JOINS.
+enum class Kappa_curve_unsolved_reason { NONE, BEYOND_DENSITY_LIMIT, POINTS_AT_MINIMA, NO_CONVERGENCE };
+
+/// "none", "beyond_density_limit", "points_at_minima" or "no_convergence" (the spelling of the
+/// JSON member "reason" of fair-curves kappa).
+inline const char* to_string(Kappa_curve_unsolved_reason r) {
+  switch (r) {
+    case Kappa_curve_unsolved_reason::BEYOND_DENSITY_LIMIT: return "beyond_density_limit";
+    case Kappa_curve_unsolved_reason::POINTS_AT_MINIMA: return "points_at_minima";
+    case Kappa_curve_unsolved_reason::NO_CONVERGENCE: return "no_convergence";
+    case Kappa_curve_unsolved_reason::NONE: break;
+  }
+  return "none";
+}
+inline std::ostream& operator<<(std::ostream& out, Kappa_curve_unsolved_reason r) { return out << to_string(r); }
 
 /// An input point and the largest residual of its block (eq. 18 as distances, eq. 7, |kappa|
 /// continuity at the join before it, eq. 16 with automatic weights): one of the worst points
@@ -55,6 +82,8 @@ struct Kappa_curve_report {
   /// Most worst_points an UNSOLVED report lists.
   static constexpr std::size_t worst_points_listed = 5;
   Kappa_curve_status status = Kappa_curve_status::UNSOLVED;  ///< the outcome (see Kappa_curve_status)
+  /// Why the outcome is UNSOLVED (never NONE then); NONE for INTERIOR and ON_JOINS.
+  Kappa_curve_unsolved_reason reason = Kappa_curve_unsolved_reason::NO_CONVERGENCE;
   bool warm_started = false;           ///< the solution came from the previous one (not a cold start)
   std::size_t refinement_passes = 0;   ///< alternating passes of Sec. 5.1
   std::size_t iterations = 0;          ///< Jacobians evaluated (Newton and Levenberg-Marquardt)
@@ -81,7 +110,7 @@ struct Kappa_curve_report {
   /// UNSOLVED: up to worst_points_listed input points with the largest residuals, worst first.
   /// Empty otherwise.
   std::vector<Kappa_point_residual> worst_points;
-  /// UNSOLVED: the input points (increasing) where the data are denser than interior
+  /// UNSOLVED (any reason): the input points (increasing) where the data are denser than interior
   /// kappa-curves allow (doc/kappa_existence.md, Sec. 7): the |kappa| of a conic piece falls off
   /// quadratically from its maximum, so |kappa| continuity between points closer than about
   /// (2/3) |dkappa/ds| / kappa^3 puts the maximum of the point's piece outside the piece. Estimated
@@ -95,7 +124,7 @@ struct Kappa_curve_report {
 
   /// Member by member (the report a Solve_error carries equals the curve's report()).
   friend bool operator==(const Kappa_curve_report& a, const Kappa_curve_report& b) {
-    return a.status == b.status && a.warm_started == b.warm_started && a.refinement_passes == b.refinement_passes &&
+    return a.status == b.status && a.reason == b.reason && a.warm_started == b.warm_started && a.refinement_passes == b.refinement_passes &&
            a.iterations == b.iterations && a.residual == b.residual &&
            a.interpolation_residual == b.interpolation_residual && a.curvature_residual == b.curvature_residual &&
            a.g2_residual == b.g2_residual && a.weight_residual == b.weight_residual &&
@@ -107,7 +136,9 @@ struct Kappa_curve_report {
   friend bool operator!=(const Kappa_curve_report& a, const Kappa_curve_report& b) { return !(a == b); }
 
   friend std::ostream& operator<<(std::ostream& out, const Kappa_curve_report& r) {
-    out << "Kappa_curve_report{" << r.status << ", warm " << r.warm_started << ", passes "
+    out << "Kappa_curve_report{" << r.status;
+    if (r.reason != Kappa_curve_unsolved_reason::NONE) out << " (" << r.reason << ')';
+    out << ", warm " << r.warm_started << ", passes "
         << r.refinement_passes << ", iterations " << r.iterations << ", residual " << r.residual << " (interpolation "
         << r.interpolation_residual << ", eq.7 " << r.curvature_residual << ", |kappa| " << r.g2_residual << ", weight "
         << r.weight_residual << "), bounds active " << r.bounds_active;

@@ -28,6 +28,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -35,6 +37,7 @@
 #include <vector>
 
 #include "data_sets.h"
+#include "expected_outcomes.h"
 #include "glyph_outlines.h"
 #include "property_check.h"
 #include "test_support.h"
@@ -111,6 +114,9 @@ struct Solve_record {
   /// An UNSOLVED report that says why: points at curvature minima or beyond the density limit.
   bool explained = false;
   std::size_t beyond_density_limit = 0;  ///< the number of points_beyond_density_limit
+  fair::Kappa_curve_unsolved_reason reason = fair::Kappa_curve_unsolved_reason::NONE;
+  std::vector<std::size_t> points_beyond_density_limit;  ///< as reported
+  std::vector<Point> points;  ///< the input (for the independent density estimate)
   kappa_real::Curve_result check;
   std::string report;
 };
@@ -128,6 +134,7 @@ Solve_record solve(const Point_set& set, fair::Kappa_weights weights) {
   r.closed = set.closed;
   r.weights = weights;
   const std::vector<Point> q = to_points(set.points);
+  r.points = q;
   r.collinear = all_collinear(q);
   fair::Kappa_curve_options o;
   o.closed = set.closed;
@@ -140,6 +147,8 @@ Solve_record solve(const Point_set& set, fair::Kappa_weights weights) {
     r.points_on_joins = curve.report().points_on_joins;
     r.iterations = curve.report().iterations;
     r.beyond_density_limit = curve.report().points_beyond_density_limit.size();
+    r.points_beyond_density_limit = curve.report().points_beyond_density_limit;
+    r.reason = curve.report().reason;
     r.explained = !curve.report().points_at_minima.empty() || r.beyond_density_limit > 0;
     std::ostringstream rep;
     rep << curve.report();
@@ -152,9 +161,27 @@ Solve_record solve(const Point_set& set, fair::Kappa_weights weights) {
   return r;
 }
 
-/// Every set of `name` with both weight modes; prints the per-data-set summary.
-std::vector<Solve_record> solve_data_set(const std::string& name) {
-  std::vector<Solve_record> out;
+/// The key of a record in the expected outcomes (expected_outcomes.h): "<data set>: <name> |
+/// <weights>", with " #k" after the name of its k-th repeat in the data set.
+std::string outcome_key(const Solve_record& r, std::map<std::string, int>& seen) {
+  const int k = ++seen[r.name + " | " + weights_name(r.weights)];
+  return r.name + (k > 1 ? " #" + std::to_string(k) : std::string()) + " | " + weights_name(r.weights);
+}
+
+/// "interior", "on_joins", "unsolved <reason>" or "rejected".
+std::string outcome_of(const Solve_record& r) {
+  if (r.rejected) return "rejected";
+  if (r.status == fair::Kappa_curve_status::UNSOLVED) return std::string("unsolved ") + fair::to_string(r.reason);
+  return fair::to_string(r.status);
+}
+
+/// Every set of `name` with both weight modes, solved once per process (the property and the
+/// outcome tests share the solves); prints the per-data-set summary.
+const std::vector<Solve_record>& solve_data_set(const std::string& name) {
+  static std::map<std::string, std::vector<Solve_record>> cache;
+  const auto cached = cache.find(name);
+  if (cached != cache.end()) return cached->second;
+  std::vector<Solve_record>& out = cache[name];
   const std::vector<Point_set> sets = data_set(name);
   for (const fair::Kappa_weights w : {fair::Kappa_weights::UNIT, fair::Kappa_weights::AUTOMATIC})
     for (const Point_set& s : sets) out.push_back(solve(s, w));
@@ -213,24 +240,46 @@ void expect_properties(const std::vector<Solve_record>& records) {
   }
 }
 
-void expect_solved(const std::vector<Solve_record>& records) {
-  for (const Solve_record& r : records) {
-    if (r.rejected) continue;
-    EXPECT_NE(r.status, fair::Kappa_curve_status::UNSOLVED) << describe(r) << ": " << r.report;
+/// The reason of an UNSOLVED record checked against its report: never NONE; POINTS_AT_MINIMA
+/// lists points at minima; BEYOND_DENSITY_LIMIT lists points, each of which the independent
+/// density estimate (expected_outcomes.h) puts beyond the limit (t_i outside [0, 1]).
+void expect_reason_explained(const Solve_record& r) {
+  if (r.rejected || r.status != fair::Kappa_curve_status::UNSOLVED) {
+    EXPECT_EQ(r.reason, fair::Kappa_curve_unsolved_reason::NONE) << describe(r) << ": " << r.report;
+    return;
+  }
+  EXPECT_NE(r.reason, fair::Kappa_curve_unsolved_reason::NONE) << describe(r) << ": " << r.report;
+  if (r.reason == fair::Kappa_curve_unsolved_reason::POINTS_AT_MINIMA) EXPECT_TRUE(r.explained) << describe(r);
+  if (r.reason != fair::Kappa_curve_unsolved_reason::BEYOND_DENSITY_LIMIT) return;
+  EXPECT_FALSE(r.points_beyond_density_limit.empty()) << describe(r) << ": " << r.report;
+  for (const std::size_t i : r.points_beyond_density_limit) {
+    const double t = kappa_real::density_estimate(r.points, r.closed, i);
+    // Both estimates are first order; they differ in rounding only (1e-9 of the O(1) terms).
+    EXPECT_TRUE(!(t >= 1e-9 && t <= 1 - 1e-9)) << describe(r) << ": point " << i << " listed, estimate t = " << t;
   }
 }
 
-/// A regression floor below the target of issue 9 (every curve solved, the DISABLED_ tests
-/// below): at least `unit` curves with w = 1 and `automatic` with automatic weights end INTERIOR
-/// or ON_JOINS. The floors are the counts measured on the branch that set them
-/// (doc/real_data.md, "Measured results"); the UNSOLVED curves are printed by solve_data_set.
-void expect_solved_at_least(const std::vector<Solve_record>& records, std::size_t unit, std::size_t automatic) {
-  std::size_t solved[2] = {0, 0};
-  for (const Solve_record& r : records)
-    if (!r.rejected && r.status != fair::Kappa_curve_status::UNSOLVED)
-      ++solved[r.weights == fair::Kappa_weights::UNIT ? 0 : 1];
-  EXPECT_GE(solved[0], unit) << "curves solved with w = 1";
-  EXPECT_GE(solved[1], automatic) << "curves solved with automatic weights";
+/// Every curve of `records` has the outcome test/data/real/kappa_outcomes.txt expects for it
+/// (expected_outcomes.h), and every UNSOLVED one its reason (expect_reason_explained). With
+/// FAIR_KAPPA_OUTCOMES_OUT set, the outcomes seen are appended to that file.
+void expect_outcomes(const std::vector<Solve_record>& records) {
+  static const std::map<std::string, std::string> expected =
+      kappa_real::read_expected_outcomes(real_dir + "kappa_outcomes.txt");
+  const char* out_file = std::getenv("FAIR_KAPPA_OUTCOMES_OUT");
+  std::ofstream out;
+  if (out_file != nullptr) out.open(out_file, std::ios::app);
+  std::map<std::string, int> seen;
+  for (const Solve_record& r : records) {
+    const std::string key = outcome_key(r, seen), outcome = outcome_of(r);
+    if (out.is_open()) out << key << " | " << outcome << "\n";
+    const auto it = expected.find(key);
+    if (it == expected.end()) {
+      ADD_FAILURE() << "no expected outcome for " << key << " (is " << outcome << ")";
+    } else {
+      EXPECT_EQ(outcome, it->second) << describe(r) << ": " << r.report;
+    }
+    expect_reason_explained(r);
+  }
 }
 
 // ---- the data and the check itself ---------------------------------------------------------
@@ -315,46 +364,23 @@ TEST(KappaRealData, ThePropertyCheckPassesThePublishedCurveAndCatchesBrokenOnes)
   EXPECT_FALSE(other.passes()) << other.summary();
 }
 
-// ---- kappa-curves: properties (hold on main) and outcome (the target of issue 9) ---------------
+// ---- kappa-curves: properties and outcomes, curve by curve -------------------------------------
 
-// Each also asserts the regression floor of expect_solved_at_least (of 117 quickdraw strokes, 16
-// coastlines, 60 glyph contours).
-TEST(KappaRealProperties, QuickDrawStrokes) {
-  const std::vector<Solve_record> records = solve_data_set("quickdraw");
-  expect_properties(records);
-  expect_solved_at_least(records, 113, 99);
-}
+TEST(KappaRealProperties, QuickDrawStrokes) { expect_properties(solve_data_set("quickdraw")); }
 TEST(KappaRealProperties, FeatherIcons) { expect_properties(solve_data_set("feather")); }
-TEST(KappaRealProperties, NaturalEarthCoastlines) {
-  const std::vector<Solve_record> records = solve_data_set("coastlines");
-  expect_properties(records);
-  expect_solved_at_least(records, 15, 8);
-}
-TEST(KappaRealProperties, GlyphOutlines) {
-  const std::vector<Solve_record> records = solve_data_set("glyphs");
-  expect_properties(records);
-  expect_solved_at_least(records, 48, 24);
-}
-// The midpoint sampling of the glyph outlines is dense: every contour that ends UNSOLVED says so
-// by listing points beyond the density limit (doc/kappa_existence.md, Sec. 7).
-TEST(KappaRealProperties, GlyphOutlinesDenseStress) {
-  const std::vector<Solve_record> records = solve_data_set("glyphs-dense");
-  expect_properties(records);
-  for (const Solve_record& r : records) {
-    if (!r.rejected && r.status == fair::Kappa_curve_status::UNSOLVED) {
-      EXPECT_GT(r.beyond_density_limit, 0u) << describe(r) << ": " << r.report;
-    }
-  }
-}
+TEST(KappaRealProperties, NaturalEarthCoastlines) { expect_properties(solve_data_set("coastlines")); }
+TEST(KappaRealProperties, GlyphOutlines) { expect_properties(solve_data_set("glyphs")); }
+TEST(KappaRealProperties, GlyphOutlinesDenseStress) { expect_properties(solve_data_set("glyphs-dense")); }
 
-TEST(KappaRealOutcome, FeatherIcons) { expect_solved(solve_data_set("feather")); }
-// The target of issue 9 §5, not met yet: some curves of these sets end UNSOLVED (counts per set in
-// doc/real_data.md; the floors reached so far are asserted by KappaRealProperties.*). Disabled so that CI passes, kept so that the gap is visible in every run
-// ("YOU HAVE 5 DISABLED TESTS", with KappaDenseSamples.DISABLED_*) and measurable: --gtest_also_run_disabled_tests.
-TEST(KappaRealOutcome, DISABLED_QuickDrawStrokes) { expect_solved(solve_data_set("quickdraw")); }
-TEST(KappaRealOutcome, DISABLED_NaturalEarthCoastlines) { expect_solved(solve_data_set("coastlines")); }
-TEST(KappaRealOutcome, DISABLED_GlyphOutlines) { expect_solved(solve_data_set("glyphs")); }
-TEST(KappaRealOutcome, DISABLED_GlyphOutlinesDenseStress) { expect_solved(solve_data_set("glyphs-dense")); }
+// Issue 24's decided semantics: every curve is interior, on joins, or unsolved with its reason,
+// as test/data/real/kappa_outcomes.txt says curve by curve (the solves are those of
+// KappaRealProperties.*, made once). The dense glyph sampling is beyond the density limit at
+// most of its contours (doc/kappa_existence.md, Sec. 7): unsolved, beyond_density_limit, decided early.
+TEST(KappaRealOutcome, QuickDrawStrokes) { expect_outcomes(solve_data_set("quickdraw")); }
+TEST(KappaRealOutcome, FeatherIcons) { expect_outcomes(solve_data_set("feather")); }
+TEST(KappaRealOutcome, NaturalEarthCoastlines) { expect_outcomes(solve_data_set("coastlines")); }
+TEST(KappaRealOutcome, GlyphOutlines) { expect_outcomes(solve_data_set("glyphs")); }
+TEST(KappaRealOutcome, GlyphOutlinesDenseStress) { expect_outcomes(solve_data_set("glyphs-dense")); }
 
 // ---- dense samples of a smooth curve: a sampled ellipse ----------------------------------------
 
@@ -389,16 +415,36 @@ TEST(KappaDenseSamples, EllipseIsInteriorWhileTheParametersStayInside) {
   for (const std::size_t n : {100, 160, 200, 240})
     expect_interior_and_checked(ellipse_samples(n, 0.99), "ellipse b = 0.99, n = " + std::to_string(n));
 }
-// Issue 9's dense target, not met: beyond the density limit (b = 0.95: n >= 60) these end
-// UNSOLVED. The branch of roots folds once points reach their faces, and the roots that exist
-// further on are not reached (doc/kappa_existence.md, Sec. 7). Disabled like
-// KappaRealOutcome.DISABLED_*, to keep the gap visible.
-TEST(KappaDenseSamples, DISABLED_EllipseDenseSamplesAreSolved) {
-  for (const std::size_t n : {60, 100, 200, 1000}) {
+// Beyond the density limit (b = 0.95: n >= 60) no interior kappa-curve exists. Where the first
+// order estimate lists points (from about n = 100 on; at n = 60 the t_i it predicts are still
+// inside [0, 1], and the full solve runs and ends with reason NO_CONVERGENCE) the solve says so
+// early (issue 24): UNSOLVED with reason BEYOND_DENSITY_LIMIT, the listed points beyond
+// the limit by the independent estimate, after the bounded first attempt only (two passes and at
+// most beyond_limit_newton_iterations Jacobians; the fallbacks spent up to 200 Jacobians and 300
+// passes before). The curve returned still interpolates and is G1 (doc/kappa_curves.md, Outcomes).
+TEST(KappaDenseSamples, EllipseBeyondTheDensityLimitIsDecidedEarlyWithItsReason) {
+  for (const std::size_t n : {100, 200, 1000}) {
     fair::Kappa_curve_options o;
     o.closed = true;
-    const fair::Kappa_curve_2<K> curve(ellipse_samples(n, 0.95), o);
-    EXPECT_NE(curve.report().status, fair::Kappa_curve_status::UNSOLVED) << "n = " << n << ": " << curve.report();
+    const std::vector<Point> q = ellipse_samples(n, 0.95);
+    const fair::Kappa_curve_2<K> curve(q, o);
+    const fair::Kappa_curve_report& r = curve.report();
+    EXPECT_EQ(r.status, fair::Kappa_curve_status::UNSOLVED) << "n = " << n << ": " << r;
+    EXPECT_EQ(r.reason, fair::Kappa_curve_unsolved_reason::BEYOND_DENSITY_LIMIT) << "n = " << n << ": " << r;
+    EXPECT_LE(r.iterations, fair::internal::kappa::beyond_limit_newton_iterations) << "n = " << n << ": " << r;
+    EXPECT_LE(r.refinement_passes, fair::internal::kappa::fast_passes) << "n = " << n << ": " << r;
+    ASSERT_FALSE(r.points_beyond_density_limit.empty()) << "n = " << n;
+    for (const std::size_t i : r.points_beyond_density_limit) {
+      const double t = kappa_real::density_estimate(q, true, i);
+      EXPECT_TRUE(!(t >= 0 && t <= 1)) << "n = " << n << ", point " << i << ": estimate t = " << t;
+    }
+    // Uniform samples: the estimate is t_i - 1/2 = kappa_s / (3 kappa^3 h), beyond the limit
+    // near the ends of the minor axis, where |kappa_s| / kappa^3 is largest; n = 1000 has most
+    // points beyond it.
+    if (n == 1000) EXPECT_GT(r.points_beyond_density_limit.size(), n / 2) << r;
+    const kappa_real::Curve_result check = kappa_real::check_kappa_curve(curve.pieces(), q, true);
+    EXPECT_LE(check.worst_distance(), 1e-9) << "n = " << n << ": " << check.summary();
+    EXPECT_LE(check.worst_g1(), 1e-9) << "n = " << n << ": " << check.summary();
   }
 }
 

@@ -5,8 +5,9 @@
 // "auto" (clamped minimum-eccentricity weights, eq. 16, optional per-point tension file) or a
 // number W used for every point; with "auto", --clamp sets the lower clamp of eq. 16 (default
 // 1/2). Writes the pieces and the solve report as JSON and a figure. The outcome (interior, on
-// joins, unsolved: fair::Kappa_curve_status) is one line on stdout; unsolved also on stderr, and
-// the exit code is then unsolved_exit_code unless --allow-unsolved.
+// joins, unsolved: fair::Kappa_curve_status) is one line on stdout; unsolved also on stderr (by its
+// reason: on data beyond the density limit, that no kappa-curve exists and which commands are made
+// for dense samples), and the exit code is then unsolved_exit_code unless --allow-unsolved.
 
 #include "registry.h"
 #include "tool_common.h"
@@ -106,13 +107,26 @@ std::string point_list(const std::vector<std::size_t>& points) {
   return s;
 }
 
-/// The line of an unsolved outcome: how far (the residual) and where (the worst points), the
-/// points at a curvature minimum, and the points beyond the density limit (the likely cause).
+/// The line of an unsolved outcome, by its reason (fair::Kappa_curve_unsolved_reason):
+/// beyond the density limit, plainly that no kappa-curve exists for the data, how many points are
+/// beyond the limit (the first few listed) and the commands made for dense samples; otherwise how
+/// far (the residual) and where (the worst points), and the points at a curvature minimum.
 std::string unsolved_line(const fair::Kappa_curve_2<fair_curves::Kernel>& curve) {
   using namespace fair_curves;
   const fair::Kappa_curve_report& r = curve.report();
   std::ostringstream line;
   line << "unsolved: ";
+  if (r.reason == fair::Kappa_curve_unsolved_reason::BEYOND_DENSITY_LIMIT) {
+    // Thousands of points on dense data: the count and the first few (all of them in the JSON).
+    const std::vector<std::size_t>& d = r.points_beyond_density_limit;
+    const std::size_t shown = std::min<std::size_t>(d.size(), 8);
+    line << "no kappa-curve exists for this data: " << d.size() << " of " << curve.points().size()
+         << (d.size() == 1 ? " points is" : " points are")
+         << " beyond the density limit (kappa-curves need sparse points; doc/kappa_existence.md, Sec. 7):"
+         << point_list({d.begin(), d.begin() + static_cast<std::ptrdiff_t>(shown)}) << (shown < d.size() ? " ..." : "")
+         << "; fair-curves csr and fair-curves optimal are made for dense samples";
+    return line.str();
+  }
   if (!(r.residual <= curve.options().tolerance)) {  // NaN included
     line << "residual " << format_number(r.residual, 3) << " > tolerance " << format_number(curve.options().tolerance)
          << ", worst";
@@ -122,14 +136,6 @@ std::string unsolved_line(const fair::Kappa_curve_2<fair_curves::Kernel>& curve)
   }
   if (!r.points_at_minima.empty())
     line << "at a curvature minimum, not a maximum:" << point_list(r.points_at_minima);
-  if (!r.points_beyond_density_limit.empty()) {
-    // Thousands of points on dense data: the count and the first few (all of them in the JSON).
-    const std::vector<std::size_t>& d = r.points_beyond_density_limit;
-    const std::size_t shown = std::min<std::size_t>(d.size(), 8);
-    line << "; " << d.size() << " of " << curve.points().size() << (d.size() == 1 ? " points is" : " points are")
-         << " denser than kappa-curves allow (doc/kappa_existence.md, Sec. 7; use fewer points):"
-         << point_list({d.begin(), d.begin() + static_cast<std::ptrdiff_t>(shown)}) << (shown < d.size() ? " ..." : "");
-  }
   return line.str();
 }
 

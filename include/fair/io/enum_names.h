@@ -9,6 +9,7 @@
 //   Knot_spacing            uniform, centripetal, chordal
 //   Kappa_weights           1, auto, fixed     (the --weights spellings of fair-curves kappa)
 //   Kappa_curve_status      interior, on_joins, unsolved
+//   Kappa_curve_unsolved_reason  none, beyond_density_limit, points_at_minima, no_convergence
 //   Optimal_curve_solver    newton, cg
 //   Curvature_discretisation regularised, circumcircle, turning_angle
 //   Point_constraint_kind   tangent, normal, corner
@@ -56,6 +57,14 @@ FAIR_IO_SPELLINGS(Kappa_weights, {Kappa_weights::UNIT, "1"}, {Kappa_weights::AUT
 FAIR_IO_SPELLINGS(Kappa_curve_status, {Kappa_curve_status::INTERIOR, fair::to_string(Kappa_curve_status::INTERIOR)},
                   {Kappa_curve_status::ON_JOINS, fair::to_string(Kappa_curve_status::ON_JOINS)},
                   {Kappa_curve_status::UNSOLVED, fair::to_string(Kappa_curve_status::UNSOLVED)})
+FAIR_IO_SPELLINGS(Kappa_curve_unsolved_reason,
+                  {Kappa_curve_unsolved_reason::NONE, fair::to_string(Kappa_curve_unsolved_reason::NONE)},
+                  {Kappa_curve_unsolved_reason::BEYOND_DENSITY_LIMIT,
+                   fair::to_string(Kappa_curve_unsolved_reason::BEYOND_DENSITY_LIMIT)},
+                  {Kappa_curve_unsolved_reason::POINTS_AT_MINIMA,
+                   fair::to_string(Kappa_curve_unsolved_reason::POINTS_AT_MINIMA)},
+                  {Kappa_curve_unsolved_reason::NO_CONVERGENCE,
+                   fair::to_string(Kappa_curve_unsolved_reason::NO_CONVERGENCE)})
 FAIR_IO_SPELLINGS(Optimal_curve_solver, {Optimal_curve_solver::NEWTON, "newton"},
                   {Optimal_curve_solver::CONJUGATE_GRADIENT, "cg"})
 FAIR_IO_SPELLINGS(Curvature_discretisation, {Curvature_discretisation::REGULARISED, "regularised"},

@@ -216,13 +216,15 @@ nlohmann::json curve_to_json(const std::string& method, bool closed, const std::
   return out;
 }
 
-/// A kappa-curve's solve report: {"status": "interior" | "on_joins" | "unsolved", the counts,
+/// A kappa-curve's solve report: {"status": "interior" | "on_joins" | "unsolved", "reason":
+/// "none" | "beyond_density_limit" | "points_at_minima" | "no_convergence", the counts,
 /// "residuals" (the dimensionless residuals of the report), "energy" (its terms and total), and
 /// the point lists (0-based input indices)}.
 inline nlohmann::json to_json(const Kappa_curve_report& r) {
   nlohmann::json worst = nlohmann::json::array();
   for (const Kappa_point_residual& p : r.worst_points) worst.push_back({{"point", p.point}, {"residual", p.residual}});
   return nlohmann::json{{"status", spelling(r.status)},
+                        {"reason", spelling(r.reason)},
                         {"warm_started", r.warm_started},
                         {"refinement_passes", r.refinement_passes},
                         {"iterations", r.iterations},

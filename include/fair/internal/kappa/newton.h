@@ -136,6 +136,7 @@ inline double newton(const Problem& pb, Kappa_solver_state& st, const Solve_sett
     factored = lu.factor_rows(fill, delta.data());
     pivoted = !factored;
     if (pivoted) {  // a singular pivot block: the pivoted band LU of the same Jacobian
+      if (!settings.pivoted_fallback) break;
       factored = factor_pivoted(pb, range, na, fill, plu);
       if (!factored) break;
       for (std::size_t k = 0; k < N; ++k) delta[k] = -F[k];

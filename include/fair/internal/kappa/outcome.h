@@ -126,8 +126,16 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
                                                         : Kappa_curve_status::INTERIOR;
   res.worst_points.clear();
   res.points_beyond_density_limit.clear();
+  res.reason = Kappa_curve_unsolved_reason::NONE;
   if (res.status != Kappa_curve_status::UNSOLVED) return;
   res.points_beyond_density_limit = points_beyond_density_limit(pb, st);
+  // The reason (Kappa_curve_unsolved_reason): a root of the equations with points at minima is
+  // explained by those points; a solve that missed the tolerance on data with points beyond the
+  // density limit by those points (the likely cause, and the early decision of start_strategy.h
+  // stops there); otherwise the worst points say where it stalled.
+  res.reason = solved                                   ? Kappa_curve_unsolved_reason::POINTS_AT_MINIMA
+               : !res.points_beyond_density_limit.empty() ? Kappa_curve_unsolved_reason::BEYOND_DENSITY_LIMIT
+                                                          : Kappa_curve_unsolved_reason::NO_CONVERGENCE;
   std::vector<Kappa_point_residual> all(pb.n);
   for (std::size_t i = 0; i < pb.n; ++i) {
     double r = weight_error.empty() ? 0.0 : weight_error[i];

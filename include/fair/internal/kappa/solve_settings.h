@@ -39,6 +39,11 @@ struct Solve_settings {
   /// Warm start after a change of Q_moved only (block index; n or more: unknown): try local
   /// solves first, see solve().
   std::size_t moved = Problem::no_block;
+  /// Newton's method factors a Jacobian whose block LU meets a singular pivot block by the
+  /// pivoted band LU (pivoted_fallback.h; ~5x a Jacobian on a whole closed curve, whose zig-zag
+  /// band is wide). Off in the bounded attempt of the early decision beyond the density limit
+  /// (start_strategy.h), where such a Jacobian means the attempt has failed.
+  bool pivoted_fallback = true;
 };
 
 /// The caps and tolerance of a solve with these options (no warm start).

@@ -54,6 +54,25 @@ constexpr double predicted_spread_min = 0.1;
 /// fixed point near 1/2.
 constexpr std::size_t density_start_passes = 1;
 
+/// The early decision (doc/kappa_curves.md, "Dense data"): on data where the density estimate
+/// lists beyond_limit_decision_points or more points beyond the density limit
+/// (points_beyond_density_limit, with the weights of the first passes) the first Newton run gets at most this many Jacobians, and when it ends at no
+/// root nothing more is tried: the outcome is UNSOLVED with reason BEYOND_DENSITY_LIMIT. There an
+/// interior root does not exist to first order (doc/kappa_existence.md, Sec. 7), and the roots on
+/// joins that may exist are exponentially ill-conditioned chains that the fallbacks (the paper's
+/// 60 passes, Levenberg-Marquardt with restart) did not reach on any measured data set while
+/// spending 40x the time of a random star of the same size (issue 24). That run does not use the
+/// pivoted fallback (Solve_settings::pivoted_fallback): a singular pivot block ends it.
+constexpr std::size_t beyond_limit_newton_iterations = 8;
+/// The early decision applies when the density estimate lists at least this many points beyond
+/// the limit. Isolated points beyond it can sit on joins of a root that the fallbacks reach: on
+/// the real data of the tests every curve solved with listed points has at most 7 of them (glyph
+/// midpoint samplings, two hand-drawn strokes; 10 curves that the bounded attempt alone leaves
+/// UNSOLVED), while the dense samples where the fallbacks never succeeded list 20 or more (the
+/// benchmark's noisy inflected curves 20-111, the smooth ones 731-99912, the dense glyph
+/// samplings 23-277; doc/kappa_curves.md, "Dense data").
+constexpr std::size_t beyond_limit_decision_points = 12;
+
 /// Cold start, the Newton paths. On dense smooth data with w = 1 first the density start
 /// (parameter_prediction.h: predicted t_i, one pass, at most density_start_iterations Jacobians
 /// of Newton's method, kept only at an interior root). Then the initial guess, fast_passes
@@ -64,9 +83,13 @@ constexpr std::size_t density_start_passes = 1;
 /// converges as often as Levenberg-Marquardt, and it finds an interior root for some sets whose
 /// fast path ended on joins). An interior root is preferred; else the first root on joins
 /// found.
+/// Early decision: where the first passes leave points beyond the density limit, only the fast
+/// path runs (its Newton run capped at beyond_limit_newton_iterations), and `decided` is set when
+/// it ends at no root: then st is its last state and the caller tries nothing more.
 /// Returns true (fmax set) at a root; otherwise st is the state after the passes.
 inline bool cold_start_newton(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                              Kappa_curve_report& res, double& fmax) {
+                              Kappa_curve_report& res, double& fmax, bool* decided = nullptr) {
+  if (decided != nullptr) *decided = false;
   // The density start (parameter_prediction.h): on densely sampled smooth data the interior
   // root's t_i lie far from 1/2, where the paper's start begins (uniform samples of the ellipse
   // (cos a, 0.99 sin a): n = 160-260 UNSOLVED from it, INTERIOR in 1-3 Jacobians from this one;
@@ -87,9 +110,18 @@ inline bool cold_start_newton(const Problem& pb, Kappa_solver_state& st, const S
   initial_guess(pb, st);
   const std::size_t first_passes = std::min<std::size_t>(fast_passes, settings.refinement_passes);
   refine(pb, st, first_passes, refinement_stop, res);
-  fmax = newton(pb, st, settings, res, std::min(remaining_iterations(settings, res), newton_iterations));
+  // O(n): the density estimate from the data, with the weights the passes computed.
+  const bool beyond_limit = points_beyond_density_limit(pb, st).size() >= beyond_limit_decision_points;
+  const std::size_t first_cap = beyond_limit ? beyond_limit_newton_iterations : newton_iterations;
+  Solve_settings first = settings;
+  first.pivoted_fallback = !beyond_limit;
+  fmax = newton(pb, st, first, res, std::min(remaining_iterations(settings, res), first_cap));
   if (is_root(pb, st, fmax, settings) && bounds_active(pb, st) == 0) return true;
   const bool on_joins = is_root(pb, st, fmax, settings);
+  if (beyond_limit) {
+    if (decided != nullptr) *decided = !on_joins;
+    return on_joins;
+  }
   Kappa_solver_state joins_root;
   const double joins_fmax = fmax;
   if (on_joins) joins_root = st;
@@ -196,7 +228,9 @@ inline double cold_solve(const Problem& pb, Kappa_solver_state& st, const Solve_
   double fmax = std::numeric_limits<double>::infinity();
   bool root = false;
   if (!newton_paths_failed) {
-    root = cold_start_newton(pb, st, settings, res, fmax);
+    bool decided = false;
+    root = cold_start_newton(pb, st, settings, res, fmax, &decided);
+    if (decided) return fmax;  // beyond the density limit: UNSOLVED, nothing more tried
   } else {
     initial_guess(pb, st);
     refine(pb, st, settings.refinement_passes, refinement_stop, res);
@@ -210,6 +244,8 @@ struct Solve_trace {
   /// A warm solve ran cold_start_newton with its full caps (as a cold solve runs it) and it
   /// failed.
   bool cold_newton_paths_failed = false;
+  /// The early decision (cold_start_newton) ended the solve: beyond the density limit, no root.
+  bool decided_beyond_limit = false;
 };
 
 /// Solves the kappa-curve system; `st` holds the initial state when settings.warm.
@@ -237,12 +273,18 @@ inline Kappa_curve_report solve(const Problem& pb, Kappa_solver_state& st, const
         remaining_iterations(settings, res) >=
         std::min(settings.max_iterations, 2 * newton_iterations + density_start_iterations);
     Kappa_solver_state fresh;
-    if (cold_start_newton(pb, fresh, settings, res, fmax)) {
+    bool decided = false;
+    if (cold_start_newton(pb, fresh, settings, res, fmax, &decided)) {
       st = std::move(fresh);
       res.warm_started = false;
       root = true;
     } else if (trace != nullptr) {
       trace->cold_newton_paths_failed = full_caps;
+      trace->decided_beyond_limit = decided;
+    }
+    if (decided) {  // beyond the density limit: the previous solution's neighbourhood, reported
+      std::vector<double> F;
+      return finish(pb, st, settings, res, evaluate(pb, st, F));
     }
   }
   if (!root) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
@@ -269,6 +311,8 @@ inline Kappa_curve_report solve_with_warm_start(const Problem& pb, const Kappa_s
   // A warm root on joins is the constrained solution near the previous one: kept (a cold solve
   // costs more than the whole warm one and would jump to another root far from the edit).
   if (warm_report.status != Kappa_curve_status::UNSOLVED) return warm_report;
+  // Decided beyond the density limit: the cold solve would repeat the same bounded attempt.
+  if (trace.decided_beyond_limit) return warm_report;
   // The cold solve; when the warm one's fallback already ran the cold Newton paths and they
   // failed, they are not repeated (up to 2 x newton_iterations + density_start_iterations
   // Jacobians for nothing: fuzz finding slow-fixed-weights-25-points). Otherwise (e.g. a warm
