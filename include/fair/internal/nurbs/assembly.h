@@ -36,6 +36,8 @@
 #include <fair/Nurbs_curve_2.h>
 #include <fair/internal/common/piece_detection.h>
 
+#include <CGAL/number_utils.h>
+
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -121,8 +123,9 @@ Nurbs_curve_2<K> finish_c0(Nurbs_data<K> d, bool closed, const char* who) {
   if (!closed) return Nurbs_curve_2<K>(d.p, std::move(d.u), std::move(d.P), std::move(d.w), false);
   const std::size_t p = d.p, M = d.P.size() - 1;
   require(M >= p, who, ": a closed curve of ", M, " control points for degree ", p);
-  require(polynomial || d.w.back() == d.w.front(), who, ": the weights at the seam differ (",
-          CGAL::to_double(d.w.back()), " and ", CGAL::to_double(d.w.front()), ")");
+  if (!polynomial)  // (not in require's arguments: they are evaluated even when it holds, and d.w is empty then)
+    require(d.w.back() == d.w.front(), who, ": the weights at the seam differ (", CGAL::to_double(d.w.back()),
+            " and ", CGAL::to_double(d.w.front()), ")");
   std::vector<FT> period(d.u.begin() + static_cast<long>(p), d.u.begin() + static_cast<long>(M + p) + 1);
   std::vector<typename K::Point_2> P(d.P.begin(), d.P.begin() + static_cast<long>(M));
   for (std::size_t k = 0; k < p; ++k) P.push_back(P[k]);
