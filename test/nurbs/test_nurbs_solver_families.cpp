@@ -4,7 +4,7 @@
 // and Simple_cartesian<Gmpq> (to rounding in double): Kappa_curve_2 (degree 2, knots at the piece
 // indices, interior ones double, weights 1 at the joins and w_j between; polynomial with unit
 // weights, rational with automatic ones; closed: the periodic form -1, 0, 0, 1, 1, ..., m, m,
-// m + 1) and Optimal_curve_2 (its spline runs: single knots inside a run, multiplicity 3 at the
+// m + 1, m + 1) and Optimal_curve_2 (its spline runs: single knots inside a run, multiplicity 3 at the
 // corners; closed with corners: the seam at the first corner). The solves run in double whatever
 // the kernel; the pieces, and so the NURBS, are built in the kernel.
 
@@ -48,9 +48,8 @@ TYPED_TEST(Nurbs_solver_families, KappaIsDegree2WithDoubleKnotsAtThePieceIndices
     EXPECT_EQ(n.is_rational(), closed) << "unit weights: polynomial; automatic ones: rational";
     std::vector<FT> knots;  // the documented knot vector
     if (closed) {
-      knots.push_back(FT(-1));
+      knots.push_back(FT(-1));  // -1, 0, 0, 1, 1, ..., m, m, m + 1, m + 1: 2m + 5 knots for 2m + 2 points
       for (std::size_t j = 0; j <= m + 1; ++j) knots.insert(knots.end(), 2, FT(static_cast<int>(j)));
-      knots.pop_back();
     } else {
       knots.push_back(FT(0));
       for (std::size_t j = 0; j <= m; ++j) knots.insert(knots.end(), 2, FT(static_cast<int>(j)));
