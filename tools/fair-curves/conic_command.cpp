@@ -8,6 +8,7 @@
 #include "registry.h"
 
 #include <fair/io/svg.h>
+#include <fair/Nurbs_curve_2.h>
 #include <fair/io/write_json.h>
 
 #include <iostream>
@@ -38,6 +39,7 @@ void run_conic(const Conic_options& o) {
   if (!o.json_out.empty()) {
     const std::vector<Point_2> points = {p0, p2};  // the arc's end points: what it interpolates
     nlohmann::json j = fair::io::curve_to_json("conic", false, points, curve, nlohmann::json{{"conic", conic_json(report)}});
+    j["bspline"] = fair::io::nurbs_to_json(fair::Nurbs_curve_2<Kernel>(2, {0, 0, 0, 1, 1, 1}, piece.control_points(), piece.weights()));
     std::ostringstream out;
     fair::io::write_json(out, j);
     json_text = out.str();
