@@ -39,6 +39,8 @@ namespace nurbs {
 template <class FT>
 void check_knot_vector(std::size_t p, std::size_t n, const std::vector<FT>& u, bool closed, const char* who) {
   require(p >= 1, who, ": degree ", p, " < 1");
+  require(p < u.size() && p < n, who, ": degree ", p, " for ", n, " control points and ", u.size(),
+          " knots (at least degree + 1 of each)"); // before any p + 1 is formed: it could wrap
   require(n >= p + 1, who, ": ", n, " control points for degree ", p, " (at least ", p + 1, ")");
   require(u.size() == n + p + 1, who, ": ", u.size(), " knots for ", n, " control points of degree ", p,
           " (expected n + p + 1 = ", n + p + 1, ")");
@@ -60,7 +62,8 @@ void check_knot_vector(std::size_t p, std::size_t n, const std::vector<FT>& u, b
     const std::size_t last = k - 1; // the run u[k - run] .. u[last] of equal knots
     require(run <= p + 1, who, ": knot ", last, " = ", CGAL::to_double(u[last]), " has multiplicity ", run,
             " > degree + 1 = ", p + 1);
-    const bool inside = u[p] < u[last] && u[last] < u[n];
+    // a closed curve's seam u_p = u_n is inside the curve too (p + 1 there would open it)
+    const bool inside = closed ? (u[p] <= u[last] && u[last] <= u[n]) : (u[p] < u[last] && u[last] < u[n]);
     require(!inside || run <= p, who, ": interior knot ", last, " = ", CGAL::to_double(u[last]),
             " has multiplicity ", run, " > degree ", p, " (the curve would be disconnected there)");
     run = 1;
