@@ -135,8 +135,9 @@ TEST(Nurbs_json, MalformedMembersAreParseErrorsAtTheirLine) {
   expect_parse_error(with_member("control_points", "[]"), 8, "\"control_points\" must be a nonempty array");
   // what only the class knows, reported at the line of the member: a knot of multiplicity 4 > p + 1
   expect_parse_error(with_member("knots", "[0, 0, 0, 0, 1, 1, 1, 1]"), 2, "multiplicity 4");
-  // a closed curve that does not repeat its first p control points
-  expect_parse_error(with_member("closed", "true"), 2, "closed curve");
+  // a clamped knot vector marked closed: its seam knot has multiplicity p + 1, which would open
+  // the periodic curve (refused before the repetition of the control points is looked at)
+  expect_parse_error(with_member("closed", "true"), 2, "multiplicity 3 > degree 2");
   expect_parse_error("{\"pieces\": []}", 1, "no \"bspline\" member");
   expect_parse_error("[1, 2]", 1, "expected a curve JSON");
   expect_parse_error("{\"bspline\": [1]}", 1, "\"bspline\" must be an object");
