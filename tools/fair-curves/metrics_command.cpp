@@ -117,11 +117,15 @@ void report(const std::vector<Piece>& curve, const Metrics_options& o, const Fil
         }
       tol = std::max(1e-300, 1e-5 * std::hypot(xmax - xmin, ymax - ymin));
     }
-    const double h = other->rational ? fair::hausdorff_distance(curve, other->pieces, tol)
-                                     : fair::hausdorff_distance(curve, other->polynomial_pieces(), tol);
-    text << "Hausdorff distance to " << o.hausdorff << " = " << format_number(h, 10) << " (sampling tolerance "
-              << format_number(tol, 3) << ")\n";
-    j["hausdorff_distance"] = h;
+    const fair::Hausdorff_bounds h = other->rational ? fair::hausdorff_distance_bounds(curve, other->pieces, tol)
+                                                     : fair::hausdorff_distance_bounds(curve, other->polynomial_pieces(), tol);
+    text << "Hausdorff distance to " << o.hausdorff << " = " << format_number(h.value(), 10) << " (certified in ["
+         << format_number(h.lower, 10) << ", " << format_number(h.upper, 10) << "], tolerance "
+         << format_number(tol, 3) << (h.converged ? "" : "; work cap reached, bounds wider than the tolerance") << ")\n";
+    j["hausdorff_distance"] = h.value();
+    j["hausdorff_lower"] = h.lower;
+    j["hausdorff_upper"] = h.upper;
+    j["hausdorff_converged"] = h.converged;
     j["hausdorff_tolerance"] = tol;
   }
   std::string profile_text;
