@@ -48,6 +48,9 @@ extern "C" int FAIR_FUZZ_ENTRY(conic)(const std::uint8_t* data, std::size_t size
   }
   if (head & 4) p[1] = Point_2(p[1].x(), std::nextafter(p[1].y(), 1e308) + in.number() * 1e-9);
   const double w = (head & 8) ? in.number() : (in.byte() + 1) / 64.0;
+  if (std::getenv("FAIR_FUZZ_VERBOSE"))
+    std::fprintf(stderr, "P0 = (%.17g, %.17g), P1 = (%.17g, %.17g), P2 = (%.17g, %.17g), w = %.17g\n", p[0].x(), p[0].y(),
+                 p[1].x(), p[1].y(), p[2].x(), p[2].y(), w);
   return fair_fuzz::run_guarded([&] {
     const fair::Rational_quadratic_bezier_2<K> piece(p[0], p[1], p[2], w);
     (void)fair::to_string(piece.conic_type());

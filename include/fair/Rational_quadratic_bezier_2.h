@@ -328,10 +328,10 @@ public:
     // 2^(-2s) D2 is near 1: log2 |p/q| is within 1 of bits(p) - bits(q).
     const long bits = long(mpz_sizeinbase(mpq_numref(D2.mpq()), 2)) - long(mpz_sizeinbase(mpq_denref(D2.mpq()), 2));
     const long s = bits / 2;
-    auto scaled = [](const Q& v, long twice_exponent_shift) {
-      Q r = v;
-      if (twice_exponent_shift > 0) mpq_div_2exp(r.mpq(), r.mpq(), static_cast<unsigned long>(twice_exponent_shift));
-      else if (twice_exponent_shift < 0) mpq_mul_2exp(r.mpq(), r.mpq(), static_cast<unsigned long>(-twice_exponent_shift));
+    auto scaled = [](const Q& v, long shift) {
+      Q r;  // a fresh value: a copy of v would share (and modify) v's GMP number
+      if (shift >= 0) mpq_div_2exp(r.mpq(), v.mpq(), static_cast<unsigned long>(shift));
+      else mpq_mul_2exp(r.mpq(), v.mpq(), static_cast<unsigned long>(-shift));
       return CGAL::to_double(r);
     };
     const double d2 = scaled(D2, 2 * s), as = scaled(A, s), ds = scaled(disc, 2 * s);

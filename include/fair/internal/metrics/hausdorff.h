@@ -201,8 +201,9 @@ Certified_polyline certified_polyline(const std::vector<Piece>& curve, double ta
       if (out.vertices.empty() || out.vertices.back() != a) out.vertices.push_back(a);
       out.vertices.push_back(b);
     }
-    // Rounding allowance of the double de Casteljau steps and distances.
-    out.error = err + 64 * double(degree + 1) * std::numeric_limits<double>::epsilon() * magnitude;
+    // Rounding allowance of the double de Casteljau steps and chord deviations; a curve of
+    // straight pieces has its control points as the polyline, exactly (e = 0).
+    out.error = degree <= 1 ? 0.0 : err + 64 * double(degree + 1) * std::numeric_limits<double>::epsilon() * magnitude;
   } else {
     out.certified = false;
     double err = 0;
