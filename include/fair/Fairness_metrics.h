@@ -210,7 +210,7 @@ struct Hausdorff_bounds {
 /// directed distances of the polylines are bracketed by branch and bound (exact convex bounds per
 /// nearest segment), and lower/upper follow by the triangle inequality; upper - lower <= tolerance.
 /// The work grows like sqrt(1/tolerance) in the curved parts and log(1/tolerance) elsewhere, and is
-/// capped (2^14 sub-pieces per curve, 2^16 refinements per direction): converged = false then.
+/// capped (2^12 sub-pieces per curve, 2^14 refinements per direction): converged = false then.
 /// \throws Precondition_error for an empty curve or a tolerance not finite and > 0;
 /// Invalid_input_error for a coordinate beyond DBL_MAX / 8 or a rational piece whose weights
 /// differ by a factor above 1e100.

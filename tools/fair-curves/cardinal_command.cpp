@@ -49,7 +49,7 @@ struct Cardinal_result {
 /// Cap on the decimal digits of the common denominator of the input coordinates with --exact:
 /// the sums of eq. 18 and the pieces are rationals over (a power of) that denominator, so GMP's
 /// work grows with its size (issue 29 #22: 199 points with 50-digit p/q, a common denominator of
-/// some 10^4 digits, took 11.6 s). Measured in doc/fair_curves_program.md ("cardinal").
+/// some 10^4 digits, took 11.6 s). Listed with every cap in doc/hardening.md.
 constexpr std::size_t max_exact_denominator_digits = 2000;
 
 /// Refuses, with --exact, input whose coordinates' common denominator (the lcm of all
