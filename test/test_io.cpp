@@ -346,7 +346,8 @@ TEST(IoJson, StrictRfc8259NumbersDuplicateKeysAndByteOrderMark) {
   for (const char* bad : {"01", "-01", "1.", ".5", "+1", "-", "1e", "1.e3", "00"}) {
     const std::string text = std::string("[[0, 0],\n[1, ") + bad + "]]";
     const std::string m = expect_parse_error([&] { fair::io::parse_points_json<K>(text, "s.json"); }, "s.json", 2);
-    EXPECT_TRUE(m.find("is not a JSON number") != std::string::npos || m.find("is not a number") != std::string::npos)
+    EXPECT_TRUE(m.find("is not a JSON number") != std::string::npos || m.find("is not a number") != std::string::npos ||
+                m.find("trailing garbage") != std::string::npos)
         << bad << ": " << m;
   }
   for (const char* good : {"0", "-0", "-0.5e-3", "1E+2", "12.25", "1e-320"}) {
