@@ -129,6 +129,14 @@ Feature_report certified_features(const std::vector<Piece>& curve, Feature_kind 
     int first = 0;         // first nonzero gap sign along the curve
     for (std::size_t i = 0; i < curve.size(); ++i) {
       const Homogeneous_form h = homogeneous_exact(curve[i]);
+      // Building D and N multiplies the form's polynomials: a form whose size is already a
+      // quarter of the cap gives polynomials beyond it (degree-40 random p/q: 24 s in the
+      // products alone), so it is sampled without them.
+      if (polynomial_bits(h.X) + polynomial_bits(h.Y) + polynomial_bits(h.W) > max_certified_polynomial_bits / 4) {
+        report.certified = false;
+        sampled_features(curve[i], i, which, last, first, report);
+        continue;
+      }
       const Bernstein_polynomial<CGAL::Gmpq> p =
           which == Feature_kind::INFLECTION ? curvature_sign_polynomial(h) : curvature_derivative_sign_polynomial(h);
       if (p.is_zero()) {
