@@ -22,6 +22,10 @@ extern "C" int fuzz_kappa(const std::uint8_t*, std::size_t);
 extern "C" int fuzz_cardinal(const std::uint8_t*, std::size_t);
 extern "C" int fuzz_classic(const std::uint8_t*, std::size_t);
 extern "C" int fuzz_csr(const std::uint8_t*, std::size_t);
+extern "C" int fuzz_shapes(const std::uint8_t*, std::size_t);
+extern "C" int fuzz_optimal(const std::uint8_t*, std::size_t);
+extern "C" int fuzz_metrics(const std::uint8_t*, std::size_t);
+extern "C" int fuzz_conic(const std::uint8_t*, std::size_t);
 
 namespace {
 
@@ -34,7 +38,11 @@ const Target targets[] = {{"read_points", fuzz_read_points},
                           {"kappa", fuzz_kappa},
                           {"cardinal", fuzz_cardinal},
                           {"classic", fuzz_classic},
-                          {"csr", fuzz_csr}};
+                          {"csr", fuzz_csr},
+                          {"shapes", fuzz_shapes},
+                          {"optimal", fuzz_optimal},
+                          {"metrics", fuzz_metrics},
+                          {"conic", fuzz_conic}};
 
 } // namespace
 

@@ -112,6 +112,51 @@ TEST(IoNumbers, RejectsEveryMalformedNumberWithItsReason) {
   }
 }
 
+// Oracle of correct rounding: |v - q| <= |w - q| for both neighbours w of v (exact in Gmpq).
+static void expect_nearest_double(double v, const CGAL::Gmpq& q) {
+  ASSERT_TRUE(std::isfinite(v));
+  const CGAL::Gmpq d = CGAL::abs(CGAL::Gmpq(v) - q);
+  for (const double w : {std::nextafter(v, -INFINITY), std::nextafter(v, INFINITY)})
+    if (std::isfinite(w)) EXPECT_LE(d, CGAL::abs(CGAL::Gmpq(w) - q)) << v;
+}
+
+TEST(IoNumbers, RationalsBeyondTheDoubleRangeAreReadExactlyThenRounded) {
+  // Issue 29 #11: 10^310 / (3 10^310) is 1/3, although p and q overflow double.
+  const std::string zeros(310, '0');
+  const auto third = fair::io::parse_number("1" + zeros + "/3" + zeros, "f", 1, "x");
+  EXPECT_EQ(third.value, 1.0 / 3.0);
+  EXPECT_EQ(fair::io::to_ft<CGAL::Gmpq>(third), CGAL::Gmpq(1, 3));
+  // Subnormal quotients are finite numbers, rounded like the decimal of the same value.
+  const auto tiny = fair::io::parse_number("1/1" + std::string(320, '0'), "f", 1, "x");
+  EXPECT_EQ(tiny.value, fair::io::parse_decimal("1e-320", "f", 1, "x"));
+  EXPECT_EQ(fair::io::parse_decimal("1e-320", "f", 1, "x"), 1e-320);
+  // Quotients beyond the range: overflow and underflow named.
+  const std::string m1 = expect_parse_error([] { fair::io::parse_number("1" + std::string(400, '0') + "/3", "f", 2, "x"); }, "f", 2);
+  EXPECT_NE(m1.find("overflows double"), std::string::npos) << m1;
+  const std::string m2 = expect_parse_error([] { fair::io::parse_number("1/1" + std::string(400, '0'), "f", 2, "x"); }, "f", 2);
+  EXPECT_NE(m2.find("underflows to zero"), std::string::npos) << m2;
+  // Largest double and the rounding boundary above it (DBL_MAX + half an ulp rounds to inf).
+  const CGAL::Gmpq max(std::numeric_limits<double>::max());
+  std::ostringstream at_max;
+  at_max << max;
+  EXPECT_EQ(fair::io::parse_number(at_max.str(), "f", 1, "x").value, std::numeric_limits<double>::max());
+  // Seeded random property: 1..60-digit p and q, ties included (q a power of two), correctly rounded.
+  std::mt19937_64 rng(29);
+  for (int trial = 0; trial < 300; ++trial) {
+    auto digits = [&](int n) {
+      std::string d(1, char('1' + rng() % 9));
+      for (int k = 1; k < n; ++k) d += char('0' + rng() % 10);
+      return d;
+    };
+    const std::string p = digits(1 + int(rng() % 60)), q = trial % 10 == 0 ? "4" : digits(1 + int(rng() % 60));
+    const auto n = fair::io::parse_number("-" + p + "/" + q, "f", 1, "x");
+    expect_nearest_double(n.value, -CGAL::Gmpq(p + "/" + q));
+  }
+  // A cap on the digits of one rational (fair::io::max_rational_digits).
+  expect_parse_error([] { fair::io::parse_number(std::string(fair::io::max_rational_digits + 1, '7') + "/3", "f", 3, "x"); },
+                     "f", 3);
+}
+
 TEST(IoNumbers, Rationals) {
   const auto r = fair::io::parse_number("-9192/12241", "f", 1, "x");
   EXPECT_TRUE(r.rational);
@@ -124,7 +169,9 @@ TEST(IoNumbers, Rationals) {
   std::ostringstream exact;
   exact << e.exact();
   EXPECT_EQ(exact.str(), "123456789012345678901234567891/7");
-  EXPECT_EQ(fair::io::to_ft<double>(big), 123456789012345678901234567891.0 / 7.0);
+  // The double of a rational is the correctly rounded exact quotient (issue 29: not p and q
+  // rounded separately, then divided): no double is nearer to the exact value.
+  expect_nearest_double(fair::io::to_ft<double>(big), CGAL::Gmpq("123456789012345678901234567891/7"));
   for (const char* bad : {"1/0", "1/-3", "1/", "/3", "1.5/2", "1/2/3", "a/b", "1/00"})
     expect_parse_error([&] { fair::io::parse_number(bad, "r", 4, "x"); }, "r", 4);
 }
@@ -291,6 +338,38 @@ TEST(IoJson, MalformedJsonInMemory) {
       "{\"name\": \"a\\\"b\\u00e9\", \"points\": [[1, 2], [\"3\", \"4.5\"]], \"extra\": {\"k\": [null]}}", "ok");
   EXPECT_EQ(ok.points.size(), 2u);
   EXPECT_EQ(ok.points[1], K::Point_2(3, 4.5));
+}
+
+// Issue 29 #18: RFC 8259 strictly: number tokens, duplicate names, the byte-order mark.
+TEST(IoJson, StrictRfc8259NumbersDuplicateKeysAndByteOrderMark) {
+  typedef SC_double K;
+  for (const char* bad : {"01", "-01", "1.", ".5", "+1", "-", "1e", "1.e3", "00"}) {
+    const std::string text = std::string("[[0, 0],\n[1, ") + bad + "]]";
+    const std::string m = expect_parse_error([&] { fair::io::parse_points_json<K>(text, "s.json"); }, "s.json", 2);
+    EXPECT_TRUE(m.find("is not a JSON number") != std::string::npos || m.find("is not a number") != std::string::npos ||
+                m.find("trailing garbage") != std::string::npos)
+        << bad << ": " << m;
+  }
+  for (const char* good : {"0", "-0", "-0.5e-3", "1E+2", "12.25", "1e-320"}) {
+    const auto f = fair::io::parse_points_json<K>(std::string("[[0, 0], [1, ") + good + "]]", "g.json");
+    EXPECT_EQ(f.points[1].y(), fair::io::parse_decimal(good, "g", 1, "y")) << good;
+  }
+  // The looser grammar stays available inside strings.
+  EXPECT_EQ(fair::io::parse_points_json<K>("[[0, 0], [\"+1\", \".5\"]]", "q.json").points[1], K::Point_2(1, 0.5));
+  // Two "points": refused at the second, not the first used silently.
+  const std::string dup = expect_parse_error(
+      [] { fair::io::parse_points_json<K>("{\"points\": [[0, 0], [1, 1]],\n\"points\": [[5, 5], [6, 6]]}", "d.json"); },
+      "d.json", 2);
+  EXPECT_NE(dup.find("duplicate member \"points\""), std::string::npos) << dup;
+  // Nested objects have their own names.
+  EXPECT_EQ(fair::io::parse_json("{\"a\": {\"k\": 1}, \"b\": {\"k\": 2}}", "n.json").members.size(), 2u);
+  // A byte-order mark, named: JSON, point CSV and number files.
+  const std::string bom = "\xEF\xBB\xBF";
+  for (const std::string& m :
+       {expect_parse_error([&] { fair::io::parse_points_json<K>(bom + "[[0, 0], [1, 1]]", "b.json"); }, "b.json", 1),
+        expect_parse_error([&] { fair::io::parse_points_csv<K>(bom + "0, 0\n1, 1\n", "b.csv"); }, "b.csv", 1),
+        expect_parse_error([&] { fair::io::parse_tensions(bom + "1\n", "b.txt"); }, "b.txt", 1)})
+    EXPECT_NE(m.find("byte-order mark"), std::string::npos) << m;
 }
 
 // The public JSON reader of fair/io/parsing.h: kinds, lines, texts and members.
@@ -476,9 +555,15 @@ TEST(IoNumberFiles, ConstraintsWithExactNumbersIndicesAndDuplicates) {
   ASSERT_EQ(c.constraints.size(), 1u);
   EXPECT_EQ(c.constraints[0].outgoing[1], 1.0);
   EXPECT_EQ(c.constraints[0].kind, Point_constraint_kind::CORNER);
-  // An integral index may be written any way the number grammar allows ("4/2" is 2).
-  EXPECT_EQ(fair::io::parse_constraints("4/2 1 0\n", "n.txt", Point_constraint_kind::NORMAL, 5).constraints[0].index,
-            2u);
+  // An index is plain digits (issue 29 #17): numbers that equal an integer are not indices.
+  EXPECT_EQ(fair::io::parse_constraints("4 1 0\n", "n.txt", Point_constraint_kind::NORMAL, 5).constraints[0].index, 4u);
+  EXPECT_EQ(fair::io::parse_constraints("0 1 0\n", "n.txt", Point_constraint_kind::NORMAL, 5).constraints[0].index, 0u);
+  for (const char* index : {"4/2", "1.0", "+1", "01", "1e0", "0x1p1", "-0"})
+    expect_parse_error([&] { fair::io::parse_constraints(std::string(index) + " 1 0\n", "i.txt", Point_constraint_kind::NORMAL, 5); },
+                       "i.txt", 1);
+  // A subnormal direction component is a finite number.
+  EXPECT_EQ(fair::io::parse_constraints("1 1 1e-320\n", "n.txt", Point_constraint_kind::TANGENT, 5).constraints[0].direction[1],
+            1e-320);
   const Parse_case bad[] = {{"0 1 0\n1.5 1 0\n", 2}, {"0 1 0\n-1 1 0\n", 2},  {"0 1 0\n5 1 0\n", 2},
                             {"0 1 0\n1 0 0\n", 2},   {"0 1 0\n0 0 1\n", 2},   {"0 1 0\n1 nan 1\n", 2},
                             {"0 1 0\n1 1 inf\n", 2}, {"0 1 0\n1 1\n", 2},     {"0 1 0\n1 1 0 0\n", 2},

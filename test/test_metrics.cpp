@@ -331,6 +331,67 @@ TEST(Metrics, HausdorffDistance) {
   EXPECT_THROW(fair::hausdorff_distance(s, t, std::numeric_limits<double>::quiet_NaN()), fair::Precondition_error);
 }
 
+TEST(Metrics, HausdorffBoundsCertified) {
+  // Issue 29 #1, #2: the bounded subdivision. A 10^6-long segment against a unit segment one
+  // above: H = |(10^6, 0) - (1, 1)| = sqrt(999999^2 + 1) (the far end's nearest point of the
+  // other is its end (1, 1); every point of the short one is within 1). One segment each, no
+  // refinement: exact up to rounding.
+  typedef SC_double::Point_2 P;
+  typedef fair::Bezier_2<SC_double> B;
+  const std::vector<B> a{B(std::vector<P>{P(0, 0), P(1000000, 0)})}, b{B(std::vector<P>{P(0, 1), P(1, 1)})};
+  const double exact = std::sqrt(999999.0 * 999999.0 + 1);
+  const fair::Hausdorff_bounds h = fair::hausdorff_distance_bounds(a, b, 1e-3);
+  EXPECT_TRUE(h.converged);
+  EXPECT_TRUE(h.certified);
+  EXPECT_EQ(h.segments_a, 1u);
+  EXPECT_LE(h.lower, exact * (1 + 1e-15));
+  EXPECT_GE(h.upper, exact * (1 - 1e-15));
+  EXPECT_LE(h.upper - h.lower, 1e-3);
+  // Two parallel unit segments: H = 1 exactly, lower = upper (the convex bound is exact).
+  const std::vector<B> c{B(std::vector<P>{P(0, 0), P(1, 0)})};
+  const fair::Hausdorff_bounds hp = fair::hausdorff_distance_bounds(c, b, 1e-5);
+  EXPECT_EQ(hp.lower, 1.0);
+  EXPECT_EQ(hp.upper, 1.0);
+  // Concentric quarter circles of radii 1 and 1.25 (exact rational quadratics): H = 0.25 inside
+  // bounds at most the tolerance apart, for each tolerance; the work grows slowly.
+  typedef fair::Rational_bezier_2<SC_double> R;
+  const std::vector<R> q1{R(std::vector<P>{P(1, 0), P(1, 1), P(0, 1)}, std::vector<double>{1, std::sqrt(0.5), 1})};
+  const std::vector<R> q2{R(std::vector<P>{P(1.25, 0), P(1.25, 1.25), P(0, 1.25)}, std::vector<double>{1, std::sqrt(0.5), 1})};
+  for (const double tol : {1e-2, 1e-4, 1e-6}) {
+    const fair::Hausdorff_bounds hc = fair::hausdorff_distance_bounds(q1, q2, tol);
+    EXPECT_TRUE(hc.converged) << tol;
+    EXPECT_LE(hc.lower, 0.25 + 1e-12) << tol;
+    EXPECT_GE(hc.upper, 0.25 - 1e-12) << tol;
+    EXPECT_LE(hc.upper - hc.lower, tol) << tol;
+    EXPECT_LT(hc.segments_a, 8 * std::sqrt(1 / tol)) << tol;  // sqrt(1/tol) growth, not 1/tol
+  }
+  // The midpoint is within tolerance/2 of the true value.
+  EXPECT_NEAR(fair::hausdorff_distance(q1, q2, 1e-6), 0.25, 5e-7);
+  // A cap met: the bounds are reported (still valid), hausdorff_distance refuses.
+  const fair::Hausdorff_bounds capped = fair::hausdorff_distance_bounds(q1, q2, 1e-10);
+  EXPECT_FALSE(capped.converged);
+  EXPECT_LE(capped.lower, 0.25 + 1e-12);
+  EXPECT_GE(capped.upper, 0.25 - 1e-12);
+  EXPECT_THROW(fair::hausdorff_distance(q1, q2, 1e-10), fair::Non_convergence_error);
+  // Issue 29 #13: weights 5e-324, 1, 5e-324 used to give inf; refused.
+  const std::vector<R> w0{R(std::vector<P>{P(0, 0), P(1, 1), P(2, 0)}, std::vector<double>{5e-324, 1, 5e-324})};
+  EXPECT_THROW(fair::hausdorff_distance_bounds(c, w0, 1e-3), fair::Invalid_input_error);
+  // Coordinates beyond DBL_MAX / 8 are refused rather than giving an infinite distance.
+  const double big = std::numeric_limits<double>::max() / 2;
+  const std::vector<B> far{B(std::vector<P>{P(-big, 0), P(big, 0)})};
+  EXPECT_THROW(fair::hausdorff_distance_bounds(c, far, 1e-3), fair::Invalid_input_error);
+}
+
+TEST(Metrics, CircleDeviationOverflowRefused) {
+  // Issue 29 #14: a centre near the largest double: the deviation overflows; refused, not inf.
+  typedef SC_double::Point_2 P;
+  typedef fair::Rational_bezier_2<SC_double> R;
+  const std::vector<R> q{R(std::vector<P>{P(1, 0), P(1, 1), P(0, 1)}, std::vector<double>{1, std::sqrt(0.5), 1})};
+  const double m = std::numeric_limits<double>::max();
+  EXPECT_THROW(fair::max_circle_deviation(q, P(-m, m), 0.0), fair::Invalid_input_error);
+  EXPECT_NEAR(fair::max_circle_deviation(q, P(0, 0), 1.0).max_deviation, 0.0, 1e-15);
+}
+
 TEST(Metrics, ProfileAndLengthOfAStraightPiece) {
   typedef SC_double::Point_2 P;
   const std::vector<fair::Bezier_2<SC_double>> line{fair::Bezier_2<SC_double>(P(0, 0), P(1, 0), P(5, 0), P(6, 0)),

@@ -43,6 +43,7 @@ Cubic_spline_2<K> exact_spline(const Rational_bezier_2<K>& curve, const std::vec
   typedef typename K::Point_2 Point_2;
   namespace ec = internal::exact_conversion;
   const char* fn = "exact_spline";
+  ec::check_weights(curve, fn);
   const std::array<ec::Homogeneous<FT>, 4> b = ec::homogeneous_cubic(curve, fn);
   ec::check_marks(interior_parameters, fn);
   const std::vector<ec::Homogeneous<FT>> d = ec::de_boor_points(b, interior_parameters);

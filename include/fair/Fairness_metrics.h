@@ -21,7 +21,8 @@
 //    sampling (certified = false);
 //  - max_circle_deviation: max | |c(t) - C| - r |, its candidates being the certified roots of
 //    d/dt |c - C|^2 and the piece ends;
-//  - hausdorff_distance: the discrete Hausdorff distance of two curves sampled to a tolerance.
+//  - hausdorff_distance(_bounds): the Hausdorff distance of two curves with certified bounds, by
+//    bounded subdivision (internal/metrics/hausdorff.h).
 // Curvature is undefined at a singular point (c' = 0): the quadratures throw Precondition_error
 // when they meet one, and the certified features are only meaningful on regular pieces.
 
@@ -161,6 +162,7 @@ struct Circle_deviation {
 /// max | |c(t) - center| - radius | over the curve. For Bernstein-form pieces the candidates are the
 /// piece ends and the certified roots of d/dt |c - C|^2 (numerator (B . B') W - |B|^2 W',
 /// B = (X - Cx W, Y - Cy W)), so the maximum is exact up to rounding of the final evaluation.
+/// \throws Invalid_input_error when a deviation overflows double precision.
 template <class Piece>
 Circle_deviation max_circle_deviation(const std::vector<Piece>& curve, const typename Piece::Point_2& center,
                                       double radius) {
@@ -175,6 +177,11 @@ Circle_deviation max_circle_deviation(const std::vector<Piece>& curve, const typ
     for (double t : ts) {
       const internal::metrics::Jet j = jet(t);
       const double d = std::fabs(std::hypot(j.x - cx, j.y - cy) - radius);
+      // A center or radius near the largest double: the difference overflows (issue 29 #14).
+      if (!std::isfinite(d))
+        throw Invalid_input_error(internal::message("max_circle_deviation: the deviation from the circle of center (",
+                                                    cx, ", ", cy, ") and radius ", radius,
+                                                    " overflows double precision (piece ", i, ", t = ", t, ")"));
       if (d > out.max_deviation || (i == 0 && t == 0.0)) {
         out.max_deviation = d;
         out.piece = i;
@@ -185,20 +192,67 @@ Circle_deviation max_circle_deviation(const std::vector<Piece>& curve, const typ
   return out;
 }
 
-/// The discrete Hausdorff distance of two curves: both are sampled into polylines with chords
-/// <= tolerance (and midpoint sagitta <= tolerance/4), and the result is the larger of the two
-/// directed distances from the samples of one curve to the polyline of the other. For curves whose
-/// pieces are sampled to that criterion the result is within about `tolerance` of the true
-/// Hausdorff distance (the sampling of the source curve loses at most tolerance/2, the polyline
-/// of the target deviates from it by about its sagitta).
+/// Certified bounds of the Hausdorff distance of two curves (hausdorff_distance_bounds).
+struct Hausdorff_bounds {
+  double lower = 0, upper = 0; ///< lower <= H(a, b) <= upper (up to the rounding allowance)
+  /// upper - lower <= tolerance; false when a work cap was met (the bounds still hold).
+  bool converged = true;
+  /// False when a curve has generic pieces (sampled, not certified).
+  bool certified = true;
+  std::size_t segments_a = 0, segments_b = 0; ///< sizes of the polylines used
+  double value() const { return 0.5 * (lower + upper); }
+};
+
+/// The Hausdorff distance H(a, b) = max(sup_{p in a} d(p, b), sup_{q in b} d(q, a)) by bounded
+/// subdivision with certified bounds (internal/metrics/hausdorff.h, doc/fairness_metrics.md):
+/// each curve is replaced by a polyline through its points within a certified distance
+/// e <= tolerance / 8 (convex-hull bound of its Bernstein pieces, halving the worst piece), the
+/// directed distances of the polylines are bracketed by branch and bound (exact convex bounds per
+/// nearest segment), and lower/upper follow by the triangle inequality; upper - lower <= tolerance.
+/// The work grows like sqrt(1/tolerance) in the curved parts and log(1/tolerance) elsewhere, and is
+/// capped (2^12 sub-pieces per curve, 2^14 refinements per direction): converged = false then.
+/// \throws Precondition_error for an empty curve or a tolerance not finite and > 0;
+/// Invalid_input_error for a coordinate beyond DBL_MAX / 8 or a rational piece whose weights
+/// differ by a factor above 1e100.
 template <class PieceA, class PieceB>
-double hausdorff_distance(const std::vector<PieceA>& a, const std::vector<PieceB>& b, double tolerance) {
+Hausdorff_bounds hausdorff_distance_bounds(const std::vector<PieceA>& a, const std::vector<PieceB>& b,
+                                           double tolerance) {
   internal::metrics::check_curve(a, "hausdorff_distance");
   internal::metrics::check_curve(b, "hausdorff_distance");
   internal::require(std::isfinite(tolerance) && tolerance > 0, "hausdorff_distance: tolerance ", tolerance,
                     " must be finite and > 0");
-  const auto sa = internal::metrics::sample_polyline(a, tolerance), sb = internal::metrics::sample_polyline(b, tolerance);
-  return std::max(internal::metrics::directed_polyline_distance(sa, sb), internal::metrics::directed_polyline_distance(sb, sa));
+  using namespace internal::metrics;
+  const Certified_polyline pa = certified_polyline(a, tolerance / 8, "the first curve"),
+                           pb = certified_polyline(b, tolerance / 8, "the second curve");
+  const Polyline_grid ga(pa.vertices), gb(pb.vertices);
+  const Directed_bounds ab = directed_polyline_bounds(pa.vertices, gb, tolerance / 2),
+                        ba = directed_polyline_bounds(pb.vertices, ga, tolerance / 2);
+  Hausdorff_bounds out;
+  const double e = pa.error + pb.error;
+  out.lower = std::max(0.0, std::max(ab.lower, ba.lower) - e);
+  out.upper = std::max(ab.upper, ba.upper) + e;
+  out.converged = pa.converged && pb.converged && ab.converged && ba.converged;
+  out.certified = pa.certified && pb.certified;
+  out.segments_a = pa.vertices.size() - 1;
+  out.segments_b = pb.vertices.size() - 1;
+  if (!std::isfinite(out.upper))
+    throw Invalid_input_error(internal::message("hausdorff_distance: the distance overflows double precision"));
+  return out;
+}
+
+/// The Hausdorff distance within `tolerance`: the midpoint of hausdorff_distance_bounds.
+/// \throws Non_convergence_error when a work cap leaves the bounds further apart than
+/// `tolerance` (the message gives them); the errors of hausdorff_distance_bounds.
+template <class PieceA, class PieceB>
+double hausdorff_distance(const std::vector<PieceA>& a, const std::vector<PieceB>& b, double tolerance) {
+  const Hausdorff_bounds h = hausdorff_distance_bounds(a, b, tolerance);
+  if (!h.converged && h.upper - h.lower > tolerance)
+    throw Non_convergence_error(internal::message("hausdorff_distance: the work cap (", internal::metrics::max_hausdorff_segments,
+                                                  " sub-pieces per curve, ", internal::metrics::max_hausdorff_refinements,
+                                                  " refinements) was reached with the distance between ", h.lower,
+                                                  " and ", h.upper, ", wider than the tolerance ", tolerance),
+                                h.segments_a + h.segments_b, h.upper - h.lower);
+  return h.value();
 }
 
 /// The headline fairness figures of a curve.

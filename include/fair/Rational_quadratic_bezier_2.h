@@ -314,7 +314,43 @@ public:
     using internal::common::to_gmpq;
     const CGAL::Gmpq x[3] = {to_gmpq(p_[0].x()), to_gmpq(p_[1].x()), to_gmpq(p_[2].x())};
     const CGAL::Gmpq y[3] = {to_gmpq(p_[0].y()), to_gmpq(p_[1].y()), to_gmpq(p_[2].y())};
-    return internal::conic::eccentricity(internal::conic::implicit_coefficients(x, y, to_gmpq(w_)), edges_, wd_);
+    typedef CGAL::Gmpq Q;
+    const std::array<Q, 6> k = internal::conic::implicit_coefficients(x, y, to_gmpq(w_));
+    const Q &a = k[0], &b = k[1], &c = k[2], &d = k[3], &e = k[4], &f = k[5];
+    if (CGAL::is_zero(a - c) && CGAL::is_zero(b)) return 0.0;
+    // eta = -sign(4 det M) of the 3x3 conic matrix, exact (internal/conic/implicit_form.h).
+    const Q det4 = Q(4) * a * c * f + b * e * d - a * e * e - c * d * d - f * b * b;
+    const bool eta_positive = CGAL::sign(det4) != CGAL::POSITIVE;
+    // eps^2 = 2R / (eta (a + c) + R), R = sqrt(D2), D2 = (a - c)^2 + b^2. On a flat control
+    // triangle eta (a + c) + R cancels to nothing in double (issue 29 #5: P1 = (1, 1e-9), w = 2
+    // gave a denominator <= 0). Where eta (a + c) < 0 it is rewritten without cancellation as
+    //   eta (a + c) + R = (R^2 - (a + c)^2) / (R - eta (a + c)) = (b^2 - 4ac) / (R - eta (a + c)),
+    // with the discriminant b^2 - 4ac exact. The exact D2, A = eta (a + c) and b^2 - 4ac are
+    // scaled by exact powers of two (eps is homogeneous of degree 0) so that their doubles
+    // neither overflow nor underflow, whatever the scale of the input and the weight.
+    const Q D2 = (a - c) * (a - c) + b * b, A = eta_positive ? a + c : -(a + c), disc = b * b - Q(4) * a * c;
+    // 2^(-2s) D2 is near 1: log2 |p/q| is within 1 of bits(p) - bits(q).
+    const long bits = long(mpz_sizeinbase(mpq_numref(D2.mpq()), 2)) - long(mpz_sizeinbase(mpq_denref(D2.mpq()), 2));
+    const long s = bits / 2;
+    auto scaled = [](const Q& v, long shift) {
+      Q r;  // a fresh value: a copy of v would share (and modify) v's GMP number
+      if (shift >= 0) mpq_div_2exp(r.mpq(), v.mpq(), static_cast<unsigned long>(shift));
+      else mpq_mul_2exp(r.mpq(), v.mpq(), static_cast<unsigned long>(-shift));
+      return CGAL::to_double(r);
+    };
+    const double d2 = scaled(D2, 2 * s), as = scaled(A, s), ds = scaled(disc, 2 * s);
+    const double R = std::sqrt(d2);
+    double eps2;
+    if (as >= 0) eps2 = 2.0 * R / (as + R);
+    else eps2 = 2.0 * R * (R - as) / ds;
+    FAIR_ASSERT_MSG(!(eps2 < 0), "Rational_quadratic_bezier_2::eccentricity: eps^2 = ", eps2, " (R = ", R,
+                    ", eta (a + c) = ", as, ", b^2 - 4ac = ", ds, ")");
+    // A hyperbola that is nearly its line pair (w near the largest double) can have an
+    // eccentricity beyond the double range: refused, not returned as inf.
+    if (!std::isfinite(eps2))
+      throw Invalid_input_error(internal::message("Rational_quadratic_bezier_2::eccentricity: the eccentricity of the "
+                                                  "conic with weight w = ", wd_, " overflows double precision"));
+    return std::sqrt(eps2);
   }
 
   /// eq. 15 squared: w_hat^2 = |P2-P0|^2 / (2 (|P0-P1|^2 + |P2-P1|^2)), exact (rational).

@@ -15,6 +15,7 @@
 #include <fair/io/write_json.h>
 
 #include <CGAL/Gmpq.h>
+#include <CGAL/Gmpz.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <iostream>
@@ -22,6 +23,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -44,6 +46,40 @@ struct Cardinal_result {
   fair::Quadrature_estimate energy_parameter, energy_arc_length;
 };
 
+/// Cap on the decimal digits of the common denominator of the input coordinates with --exact:
+/// the sums of eq. 18 and the pieces are rationals over (a power of) that denominator, so GMP's
+/// work grows with its size (issue 29 #22: 199 points with 50-digit p/q, a common denominator of
+/// some 10^4 digits, took 11.6 s). Listed with every cap in doc/hardening.md.
+constexpr std::size_t max_exact_denominator_digits = 2000;
+
+/// Refuses, with --exact, input whose coordinates' common denominator (the lcm of all
+/// denominators, doubles being dyadic) has more than max_exact_denominator_digits digits.
+template <class Points>
+void check_exact_input_size(const Points& points, const std::string& file) {
+  CGAL::Gmpz lcm(1);
+  for (const auto& p : points)
+    for (const CGAL::Gmpq* c : {&p.x(), &p.y()}) {
+      mpz_lcm(lcm.mpz(), lcm.mpz(), mpq_denref(c->mpq()));
+      const std::size_t digits = mpz_sizeinbase(lcm.mpz(), 10);
+      if (digits > max_exact_denominator_digits)
+        throw fair::Invalid_input_error(fair::internal::message(
+            file, ": with --exact the common denominator of the coordinates has more than ",
+            max_exact_denominator_digits, " digits (", digits, " after ", &p - &points[0] + 1,
+            " points): exact arithmetic on it would take minutes; round the p/q coordinates or drop --exact"));
+    }
+}
+
+/// The double of an exact (or double) value the report prints: refused when it is beyond the
+/// double range, as the double computation refuses it (issue 29 #16), never printed as inf.
+template <class FT>
+double reported_double(const FT& v, const char* what) {
+  const double d = CGAL::to_double(v);
+  if (!std::isfinite(d))
+    throw fair::Invalid_input_error(fair::internal::message(
+        "cardinal: ", what, " is beyond the double range: the coordinates are too large"));
+  return d;
+}
+
 // Reads and checks the input, then builds the spline (fair::Cardinal_spline_2): the optimum of
 // eq. 18 with the auxiliary points of eqs. 19-20, or the given alpha with the given auxiliary
 // points or those optimal for it (eqs. 16-17).
@@ -62,6 +98,7 @@ Cardinal_result<K> compute_cardinal(const Cardinal_options& o) {
     throw CLI::ValidationError("--aux-start/--aux-end", "give both auxiliary points or neither");
   const std::size_t minimum = optimal ? (r.closed ? 3 : 4) : (r.closed ? 3 : (r.explicit_aux ? 2 : 3));
   fair::io::check_point_file(r.data, minimum, r.closed, "fair-curves cardinal");
+  if constexpr (std::is_same<FT, CGAL::Gmpq>::value) check_exact_input_size(r.data.points, o.input);
 
   fair::Cardinal_spline_options options;
   options.closed = r.closed;
@@ -74,6 +111,13 @@ Cardinal_result<K> compute_cardinal(const Cardinal_options& o) {
     if (!optimal) options.alpha = fair_curves::option_number(o.alpha, "--alpha");
     r.curve.emplace(r.data.points, options);
   }
+  reported_double(r.curve->approximate_energy(), "the energy of eq. 10");
+  reported_double(r.curve->alpha(), "alpha");
+  if (!r.closed)
+    for (const P& a : {r.curve->aux_start(), r.curve->aux_end()}) {
+      reported_double(a.x(), "an auxiliary point");
+      reported_double(a.y(), "an auxiliary point");
+    }
   r.energy_parameter = fair::curvature_variation_energy(r.curve->pieces(), fair::Energy_measure::PARAMETER);
   r.energy_arc_length = fair::curvature_variation_energy(r.curve->pieces(), fair::Energy_measure::ARC_LENGTH);
   return r;

@@ -106,22 +106,35 @@ void report(const std::vector<Piece>& curve, const Metrics_options& o, const Fil
     j["circle_deviation"] = d.max_deviation;
   }
   if (other) {
-    // Default tolerance: 1e-5 of the larger bounding box diagonal.
+    // Default tolerance: 1e-5 of the diagonal of the bounding box of both curves' control
+    // points (halved coordinates: no overflow), or of the largest coordinate when that box is a
+    // point, so that a degenerate curve does not ask for a tolerance of 1e-300.
     double tol = o.tolerance;
     if (!(tol > 0)) {
-      double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
-      for (const auto& p : curve)
-        for (const auto& q : p.control_points()) {
-          xmin = std::min(xmin, CGAL::to_double(q.x())); xmax = std::max(xmax, CGAL::to_double(q.x()));
-          ymin = std::min(ymin, CGAL::to_double(q.y())); ymax = std::max(ymax, CGAL::to_double(q.y()));
-        }
-      tol = std::max(1e-300, 1e-5 * std::hypot(xmax - xmin, ymax - ymin));
+      double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300, big = 0;
+      auto extend = [&](const auto& pieces) {
+        for (const auto& p : pieces)
+          for (const auto& q : p.control_points()) {
+            const double x = CGAL::to_double(q.x()), y = CGAL::to_double(q.y());
+            xmin = std::min(xmin, x); xmax = std::max(xmax, x); ymin = std::min(ymin, y); ymax = std::max(ymax, y);
+            big = std::max({big, std::fabs(x), std::fabs(y)});
+          }
+      };
+      extend(curve);
+      extend(other->pieces);
+      const double diagonal = 2 * std::hypot(0.5 * xmax - 0.5 * xmin, 0.5 * ymax - 0.5 * ymin);
+      tol = 1e-5 * (diagonal > 0 ? diagonal : big);
+      if (!(tol > 0) || !std::isfinite(tol)) tol = 1e-5;
     }
-    const double h = other->rational ? fair::hausdorff_distance(curve, other->pieces, tol)
-                                     : fair::hausdorff_distance(curve, other->polynomial_pieces(), tol);
-    text << "Hausdorff distance to " << o.hausdorff << " = " << format_number(h, 10) << " (sampling tolerance "
-              << format_number(tol, 3) << ")\n";
-    j["hausdorff_distance"] = h;
+    const fair::Hausdorff_bounds h = other->rational ? fair::hausdorff_distance_bounds(curve, other->pieces, tol)
+                                                     : fair::hausdorff_distance_bounds(curve, other->polynomial_pieces(), tol);
+    text << "Hausdorff distance to " << o.hausdorff << " = " << format_number(h.value(), 10) << " (certified in ["
+         << format_number(h.lower, 10) << ", " << format_number(h.upper, 10) << "], tolerance "
+         << format_number(tol, 3) << (h.converged ? "" : "; work cap reached, bounds wider than the tolerance") << ")\n";
+    j["hausdorff_distance"] = h.value();
+    j["hausdorff_lower"] = h.lower;
+    j["hausdorff_upper"] = h.upper;
+    j["hausdorff_converged"] = h.converged;
     j["hausdorff_tolerance"] = tol;
   }
   std::string profile_text;

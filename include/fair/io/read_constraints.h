@@ -4,7 +4,7 @@
 // from text files: lines "i x y" (TANGENT: the direction of travel; NORMAL: its left normal) or
 // "i tx_in ty_in tx_out ty_out" (CORNER), i a 0-based input index. The grammar and the numbers are
 // those of every number file (fair/io/read_numbers.h: comma- or blank-separated, '#' comments,
-// decimals or exact "p/q"). Every problem throws fair::Parse_error naming the file and the line:
+// decimals or exact "p/q"; an index i is plain digits without a sign or leading zero). Every problem throws fair::Parse_error naming the file and the line:
 // a wrong field count, a bad number, an index that is not an integer or is out of range, a zero
 // direction, and a point constrained twice (also across files: merge_constraint_files).
 
@@ -42,8 +42,13 @@ inline Constraint_file parse_constraints(const std::string& text, const std::str
   for (const Number_row& row : parse_number_rows(text, file, corner ? 5 : 3, layout)) {
     const double index = row.numbers[0].value;
     const std::string& written = row.texts[0];
-    if (!(index >= 0) || index != std::floor(index))
-      throw Parse_error(file, row.line, "the point index " + internal::quoted(written) + " is not an integer >= 0");
+    // An index is written as a plain integer, 0 or [1-9][0-9]*: "1.0", "+1", "01", "1e0" or "2/2"
+    // are numbers equal to an integer, not indices (one grammar, issue 29 #17).
+    const bool plain = !written.empty() && internal::is_integer_text(written, false) &&
+                       (written == "0" || written[0] != '0');
+    if (!plain || !(index >= 0) || index != std::floor(index))
+      throw Parse_error(file, row.line,
+                        "the point index " + internal::quoted(written) + " is not an integer >= 0 written in digits");
     if (index >= static_cast<double>(points))
       throw Parse_error(file, row.line, fair::internal::message("point index ", written,
                                                                 " is out of range (the input has ", points, " points)"));

@@ -122,6 +122,8 @@ public:
         const Point_2 q = point(v, p);
         try {
           u = locate(q);
+        } catch (const Internal_error&) {
+          throw;  // a bug of the library, not a problem of this mark
         } catch (const Error& e) {
           // Off the curve, or no point of the arc at all (the conic's P1): at this mark.
           fail(v, p, e.what());
@@ -169,6 +171,8 @@ public:
         read_shape(s, type.text, path, out);
       } catch (const Parse_error&) {
         throw;
+      } catch (const Internal_error&) {
+        throw;  // a bug of the library, not a problem of this shape
       } catch (const Error& e) {
         // The library's checks (zero-length segment, degenerate arc, weights...), at this shape.
         fail(s, path, e.what());

@@ -32,6 +32,7 @@
 #include <fair/Basic_shape_design.h>
 #include <fair/Errors.h>
 
+#include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/Kernel/global_functions_2.h>
 #include <CGAL/squared_distance_2.h>
 #include <CGAL/number_utils.h>
@@ -39,6 +40,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 namespace fair {
@@ -70,6 +73,38 @@ typename K::FT squared_design_size(const std::vector<const Cubic_spline_2<K>*>& 
   return (xmax - xmin) * (xmax - xmin) + (ymax - ymin) * (ymax - ymin);
 }
 
+/// |p - q| in double without overflow or underflow in the intermediate squares (halved
+/// coordinates, then hypot); +inf only when the distance itself exceeds the double range.
+template <class Point_2>
+double double_distance(const Point_2& p, const Point_2& q) {
+  const double dx = 0.5 * CGAL::to_double(p.x()) - 0.5 * CGAL::to_double(q.x());
+  const double dy = 0.5 * CGAL::to_double(p.y()) - 0.5 * CGAL::to_double(q.y());
+  return 2 * std::hypot(dx, dy);
+}
+
+/// The diagonal of the bounding box of all control points, in double (double_distance).
+template <class K>
+double design_diagonal(const std::vector<const Cubic_spline_2<K>*>& parts) {
+  typedef typename K::FT FT;
+  const auto& p0 = parts.front()->control_points().front();
+  FT xmin = p0.x(), xmax = p0.x(), ymin = p0.y(), ymax = p0.y();
+  for (const auto* s : parts)
+    for (const auto& p : s->control_points()) {
+      if (p.x() < xmin) xmin = p.x();
+      if (p.x() > xmax) xmax = p.x();
+      if (p.y() < ymin) ymin = p.y();
+      if (p.y() > ymax) ymax = p.y();
+    }
+  return double_distance(typename K::Point_2(xmin, ymin), typename K::Point_2(xmax, ymax));
+}
+
+/// Where a merged breakpoint comes from: the part and the breakpoint index inside it (for a
+/// part of a segment or cubic shape, breakpoint k is its k-th mark; 0 and m are its ends).
+struct Breakpoint_origin {
+  std::size_t part = 0, index = 0;
+  bool join = false;  ///< a breakpoint created at a join (edge) rather than a part's own
+};
+
 } // namespace basic_shapes
 } // namespace internal
 
@@ -94,7 +129,20 @@ Basic_shape_design_2<K> basic_shape_design(const std::vector<Basic_shape_2<K>>& 
     }
   const std::size_t n = parts.size();
   const bool closed = options.closed;
-  const FT size2 = internal::basic_shapes::squared_design_size<K>(parts);
+  // The merge distance in double, robustly (issue 29 #15: the squared diagonal overflowed to inf
+  // and inf * 0 printed "distance -nan"); a design whose extent is beyond the double range has no
+  // finite distances to report and is refused.
+  const double diagonal = internal::basic_shapes::design_diagonal<K>(parts);
+  if (!std::isfinite(diagonal))
+    throw Invalid_input_error(internal::message(fn, ": the bounding box of the shapes' control points is wider than "
+                                                "the double range (its diagonal overflows)"));
+  const double merge_distance = options.merge_tolerance == 0 ? 0.0 : options.merge_tolerance * diagonal;
+  if (!std::isfinite(merge_distance))
+    throw Invalid_input_error(internal::message(fn, ": the merge distance, merge tolerance ", options.merge_tolerance,
+                                                " times the design's diagonal ", diagonal, ", overflows double precision"));
+  typedef typename CGAL::Algebraic_structure_traits<FT>::Is_exact Is_exact;
+  constexpr bool exact_ft = Is_exact::value && !std::is_floating_point<FT>::value;
+  const FT size2 = exact_ft ? internal::basic_shapes::squared_design_size<K>(parts) : FT(0);
   const FT tol(options.merge_tolerance);
   const FT threshold2 = tol * tol * size2;
 
@@ -109,6 +157,7 @@ Basic_shape_design_2<K> basic_shape_design(const std::vector<Basic_shape_2<K>>& 
 
   std::vector<Point_2> points;
   std::vector<FT> weights, intervals;  // intervals[i]: from the i-th breakpoint to the next
+  std::vector<internal::basic_shapes::Breakpoint_origin> origin;  // of the breakpoint at the end of intervals[i]
   std::vector<Shape_join> joins;
   std::vector<Shape_span> spans;
   std::vector<std::size_t> first_break(n);  // breakpoint index of u_0 of every part
@@ -128,11 +177,12 @@ Basic_shape_design_2<K> basic_shape_design(const std::vector<Basic_shape_2<K>>& 
     j.before = owner[p];
     j.after = owner[q];
     j.inside = !wrap && owner[p] == owner[q];
-    const FT d2 = CGAL::squared_distance(e, s);
-    j.distance = std::sqrt(CGAL::to_double(d2));
+    j.distance = internal::basic_shapes::double_distance(e, s);  // <= diagonal: finite
     j.control_point = points.size();
+    // Exact kernels compare the exact squares; a floating one the distances (squares overflow).
+    const bool near = exact_ft ? CGAL::squared_distance(e, s) <= threshold2 : j.distance <= merge_distance;
     if (e == s) j.kind = Shape_join_kind::AGREE;
-    else if (j.inside || d2 <= threshold2) j.kind = Shape_join_kind::AVERAGED;
+    else if (j.inside || near) j.kind = Shape_join_kind::AVERAGED;
     else j.kind = Shape_join_kind::EDGE;
     // The weights agree by the lambda chain except at the closing join: their mean there.
     const FT wm = wrap ? (we + ws) / FT(2) : we;
@@ -144,12 +194,17 @@ Basic_shape_design_2<K> basic_shape_design(const std::vector<Basic_shape_2<K>>& 
       intervals.push_back(h_before);
       intervals.push_back((h_before + h_after) / FT(2));
       intervals.push_back(h_after);
+      origin.push_back({p, parts[p]->breakpoints().size() - 1, true});
+      origin.push_back({q, 0, true});
+      origin.push_back({q, 0, false});
       breaks += 2;
     } else {
       points.push_back(j.kind == Shape_join_kind::AGREE ? e : CGAL::midpoint(e, s));
       weights.push_back(wm);
       intervals.push_back(h_before);
       intervals.push_back(h_after);
+      origin.push_back({p, parts[p]->breakpoints().size() - 1, true});
+      origin.push_back({q, 0, false});
       breaks += 1;
     }
     joins.push_back(j);
@@ -164,7 +219,10 @@ Basic_shape_design_2<K> basic_shape_design(const std::vector<Basic_shape_2<K>>& 
       points.push_back(d[k]);
       weights.push_back(lambda[p] * w[k]);
     }
-    for (std::size_t k = 0; k < m; ++k) intervals.push_back(sigma[p] * (t[k + 1] - t[k]));
+    for (std::size_t k = 0; k < m; ++k) {
+      intervals.push_back(sigma[p] * (t[k + 1] - t[k]));
+      origin.push_back({p, k + 1, false});
+    }
     breaks += m + 1;
     if (p + 1 < n) add_join(p, p + 1, false);
     else if (closed) add_join(p, 0, true);
@@ -186,7 +244,28 @@ Basic_shape_design_2<K> basic_shape_design(const std::vector<Basic_shape_2<K>>& 
   // Breakpoints from the intervals, starting at the first part's u_0.
   std::vector<FT> knots;
   knots.push_back(parts[0]->breakpoints().front());
-  for (const FT& h : intervals) knots.push_back(knots.back() + h);
+  for (std::size_t i = 0; i < intervals.size(); ++i) {
+    knots.push_back(knots.back() + intervals[i]);
+    // The chain sigma_{p+1} = sigma_p h^p_{m-1} / h^{p+1}_0 multiplies the ratios of end
+    // intervals part after part: marks bunched at one end of many shapes make it decay (or grow)
+    // geometrically, until in a floating FT a breakpoint no longer exceeds the previous one or
+    // overflows (issue 29 #8). Said here with the shape and the mark that cause it.
+    if (!(knots.back() > knots[knots.size() - 2]) || !std::isfinite(CGAL::to_double(knots.back()))) {
+      const internal::basic_shapes::Breakpoint_origin& o = origin[i];
+      const std::size_t p = o.part, s = owner[p];
+      const std::size_t m = parts[p]->breakpoints().size() - 1;
+      const std::string where =
+          o.join ? internal::message("at the join of shape ", s, " (part ", part_index[p], ") with the next shape")
+          : o.index == 0 || o.index == m
+              ? internal::message("at the ", o.index == 0 ? "start" : "end", " of shape ", s, " (part ", part_index[p], ")")
+              : internal::message("at mark ", o.index - 1, " of shape ", s, " (part ", part_index[p], ")");
+      throw Invalid_input_error(internal::message(
+          fn, ": the merged knots stop increasing in floating point ", where,
+          ": each shape's knot intervals are scaled so that its first interval equals the previous shape's last one, "
+          "and the ratios of the end intervals (marks bunched at one end) multiply to ", CGAL::to_double(sigma[p]),
+          " by shape ", s, "; space the marks more evenly, or compute exactly (--exact, an exact kernel)"));
+    }
+  }
   FAIR_ASSERT_MSG(closed ? points.size() + 1 == knots.size() : points.size() == knots.size() + 2,
                   fn, ": ", points.size(), " control points for ", knots.size(), " breakpoints");
   // A closed design always has >= 3 control points (each part gives >= 2, the closing join >= 1),
@@ -205,7 +284,7 @@ Basic_shape_design_2<K> basic_shape_design(const std::vector<Basic_shape_2<K>>& 
   // All weights equal (polynomial shapes only): the constructor makes it a polynomial spline.
   Cubic_spline_2<K> spline(std::move(knots), std::move(points), std::move(weights), closed);
   Basic_shape_design_2<K> out{std::move(spline), std::move(joins), std::move(spans), 0.0};
-  out.merge_distance = options.merge_tolerance * std::sqrt(CGAL::to_double(size2));
+  out.merge_distance = merge_distance;
   return out;
 }
 

@@ -70,7 +70,17 @@ template <class FT>
 std::vector<FT> classic_cumulative_knots(const std::vector<FT>& h) {
   std::vector<FT> u(1, FT(0));
   u.reserve(h.size() + 1);
-  for (const FT& hi : h) u.push_back(u.back() + hi);
+  for (const FT& hi : h) {
+    u.push_back(u.back() + hi);
+    // In a floating FT a tiny interval after huge ones is lost in the sum (centripetal knots of
+    // far-apart points and one close pair: issue 29 #20): said here, at the point, instead of
+    // "breakpoints not increasing" from the spline.
+    if (!(u.back() > u[u.size() - 2]))
+      throw Invalid_input_error(message("knot spacing: the knot of point ", u.size() - 1, " does not exceed the one of point ",
+                                        u.size() - 2, " in this number type (interval ", CGAL::to_double(hi),
+                                        " after a knot sum of ", CGAL::to_double(u[u.size() - 2]),
+                                        "): the points are too unevenly spaced; use uniform knots or rescale"));
+  }
   return u;
 }
 

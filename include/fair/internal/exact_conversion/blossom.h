@@ -20,11 +20,14 @@
 #include <fair/Rational_bezier_2.h>
 #include <fair/internal/spline/bspline_form.h>
 
+#include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/number_utils.h>
 
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace fair {
@@ -65,6 +68,27 @@ std::array<Homogeneous<typename K::FT>, 4> homogeneous_cubic(const Rational_bezi
     h.swap(e);
   }
   return {{h[0], h[1], h[2], h[3]}};
+}
+
+/// In a floating FT the blossoms are convex combinations of the weights, positive when every
+/// weight is a normal positive double; a subnormal weight (5e-324) underflows to 0 in them and
+/// w x loses all its digits (issue 29 #9). Refused with the weight named: the curve does not
+/// change when all weights are multiplied by one factor, so the user can scale them up. An
+/// exact FT has no such limit.
+template <class K>
+void check_weights(const Rational_bezier_2<K>& c, const char* fn) {
+  typedef typename K::FT FT;
+  typedef typename CGAL::Algebraic_structure_traits<FT>::Is_exact Is_exact;
+  if constexpr (!Is_exact::value || std::is_floating_point<FT>::value) {
+    for (std::size_t i = 0; i < c.weights().size(); ++i) {
+      const double w = CGAL::to_double(c.weights()[i]);
+      if (!(w >= std::numeric_limits<double>::min()) || !std::isfinite(w))
+        throw Invalid_input_error(message(fn, ": weight ", i, " = ", w, " is ",
+                                          w > 0 ? "subnormal (below 2.2250738585072014e-308)" : "not a positive finite number",
+                                          ": the conversion's blossoms underflow in floating point; multiply all weights "
+                                          "by one factor (the curve stays the same) or use an exact kernel"));
+    }
+  }
 }
 
 /// The blossom (polar form) f^h[a, b, c] of the homogeneous cubic with coefficients b: three

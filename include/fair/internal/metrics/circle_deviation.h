@@ -35,11 +35,19 @@ std::vector<double> circle_deviation_candidates(const Piece& piece, const typena
   std::vector<double> ts{0.0, 1.0};
   if constexpr (is_bernstein_form(kind_of<Piece>)) {
     const Homogeneous_form h = homogeneous_exact(piece);
+    if (polynomial_bits(h.X) + polynomial_bits(h.Y) + polynomial_bits(h.W) > max_certified_polynomial_bits / 4) {
+      certified = false;  // the products below would exceed the cap anyway (features.h)
+      for (int k = 1; k < generic_deviation_samples; ++k) ts.push_back(double(k) / generic_deviation_samples);
+      return ts;
+    }
     const CGAL::Gmpq Cx = common::to_gmpq(center.x()), Cy = common::to_gmpq(center.y());
     const Bernstein_polynomial<CGAL::Gmpq> Bx = h.X - Cx * h.W, By = h.Y - Cy * h.W;
     const Bernstein_polynomial<CGAL::Gmpq> G =
         (Bx * Bx.derivative() + By * By.derivative()) * h.W - (Bx * Bx + By * By) * h.W.derivative();
-    if (!G.is_zero()) {
+    if (!G.is_zero() && polynomial_bits(G) > max_certified_polynomial_bits) {
+      certified = false;
+      for (int k = 1; k < generic_deviation_samples; ++k) ts.push_back(double(k) / generic_deviation_samples);
+    } else if (!G.is_zero()) {
       Bernstein_root_isolation iso(G);
       for (std::size_t k = 0; k < iso.number_of_roots(); ++k) ts.push_back(iso.root_approximation(k));
     } // else |c - C| is constant on the piece: the ends suffice

@@ -73,6 +73,31 @@ enum class Feature_kind {
 /// features of a fair piece, cheap enough for a report.
 constexpr int generic_feature_samples = 512;
 
+/// The sign changes of kappa (or dkappa/dt) of one piece on generic_feature_samples + 1 samples,
+/// continuing the walk's last sign (uncertified).
+template <class Piece>
+void sampled_features(const Piece& piece, std::size_t i, Feature_kind which, int& last, int& first,
+                      Feature_report& report) {
+  Piece_jet<Piece> jet(piece);
+  const int m = generic_feature_samples;
+  for (int k = 0; k <= m; ++k) {
+    const double t = double(k) / m;
+    const Jet j = jet(t);
+    const double v = which == Feature_kind::INFLECTION ? (j.x1 * j.y2 - j.y1 * j.x2) : j.curvature_derivative();
+    const int s = (v > 0) - (v < 0);
+    if (s != 0 && last != 0 && s != last) {
+      Isolating_interval I;
+      I.lower = CGAL::Gmpq(t);
+      I.upper = CGAL::Gmpq(t);
+      report.features.push_back(make_feature(piece, i, t, I, k == 0));
+    }
+    if (s != 0) {
+      if (first == 0) first = s;
+      last = s;
+    }
+  }
+}
+
 template <class Piece>
 Feature_report certified_features(const std::vector<Piece>& curve, Feature_kind which, const char* what) {
   check_curve(curve, what);
@@ -104,10 +129,23 @@ Feature_report certified_features(const std::vector<Piece>& curve, Feature_kind 
     int first = 0;         // first nonzero gap sign along the curve
     for (std::size_t i = 0; i < curve.size(); ++i) {
       const Homogeneous_form h = homogeneous_exact(curve[i]);
+      // Building D and N multiplies the form's polynomials: a form whose size is already a
+      // quarter of the cap gives polynomials beyond it (degree-40 random p/q: 24 s in the
+      // products alone), so it is sampled without them.
+      if (polynomial_bits(h.X) + polynomial_bits(h.Y) + polynomial_bits(h.W) > max_certified_polynomial_bits / 4) {
+        report.certified = false;
+        sampled_features(curve[i], i, which, last, first, report);
+        continue;
+      }
       const Bernstein_polynomial<CGAL::Gmpq> p =
           which == Feature_kind::INFLECTION ? curvature_sign_polynomial(h) : curvature_derivative_sign_polynomial(h);
       if (p.is_zero()) {
         report.degenerate_pieces.push_back(i);
+        continue;
+      }
+      if (polynomial_bits(p) > max_certified_polynomial_bits) {
+        report.certified = false;
+        sampled_features(curve[i], i, which, last, first, report);
         continue;
       }
       const Signed_roots s = signed_roots(p);

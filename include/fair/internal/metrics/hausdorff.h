@@ -1,18 +1,44 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
-// The discrete Hausdorff distance of hausdorff_distance() (Fairness_metrics.h): a curve sampled
-// into a polyline to a chord tolerance, and the exact point-to-polyline distance through a uniform
-// grid of the polyline's segments.
+// The Hausdorff distance of hausdorff_distance_bounds() (Fairness_metrics.h), by bounded
+// subdivision with certified bounds (doc/fairness_metrics.md, "Hausdorff distance"):
+//
+// 1. Each curve C becomes a polyline P whose vertices lie on C, with a certified e >= H(C, P).
+//    A Bernstein-form piece with control points P_0..P_n and weights w_i > 0 is within
+//        delta = max_i |P_i - L(i/n)|,   L(s) = (1 - s) P_0 + s P_n,
+//    of its chord, both ways: c(t) - L(s(t)) = sum B_i w_i (P_i - L(i/n)) / W(t) with
+//    s(t) = sum B_i w_i (i/n) / W(t), a convex combination, and s maps [0,1] onto [0,1]. The
+//    piece with the largest delta is halved (rational de Casteljau in affine form: convex
+//    combinations only, no overflow) until every delta <= tolerance / 8 or a cap is met.
+// 2. The directed distance h(P_A, P_B) of two polylines, by branch and bound over the segments
+//    s = [a0, a1] of P_A: with d = distance to P_B (1-Lipschitz),
+//        lower(s) = max(d(a0), d(a1)),
+//        upper(s) = min( max(|a0 - t|, |a1 - t|) over the nearest segments t of a0 and a1
+//                        (distance to one convex segment is convex along s),
+//                        (d(a0) + d(a1) + |s|) / 2 ),
+//    halving the segment with the largest upper bound until it is within tolerance / 2 of the
+//    largest lower bound. The convex bound is exact wherever one segment of P_B is nearest along
+//    s, so only the crossings of the medial axis of P_B are refined, each O(log(|s| / tolerance))
+//    times: the work does not grow like 1 / tolerance (a 10^6-long segment, issue 29 #1).
+//    Nearest segments come from a bounding-box tree over runs of consecutive segments.
+// 3. By the triangle inequality H(A, B) lies in [H_lower - e_A - e_B, H_upper + e_A + e_B].
+// Generic pieces (no Bernstein form) are sampled as before (bisection to a chord tolerance) and
+// the result is marked not certified. Distances are computed in double: the bounds are certified
+// up to a rounding allowance of 64 (n + 1) eps max|coordinate| that is added to e.
 
 #ifndef FAIR_INTERNAL_METRICS_HAUSDORFF_H
 #define FAIR_INTERNAL_METRICS_HAUSDORFF_H
 
+#include <fair/Errors.h>
 #include <fair/internal/metrics/pieces.h>
+
+#include <CGAL/number_utils.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <queue>
 #include <utility>
 #include <vector>
 
@@ -20,116 +46,329 @@ namespace fair {
 namespace internal {
 namespace metrics {
 
-/// Depth cap of the bisection of a parameter interval: 2^-40 of a quarter piece is far below any
-/// tolerance a caller can ask for, and it bounds the work on a piece singular at a point.
-constexpr int max_polyline_depth = 40;
-/// Largest midpoint sagitta of a polyline segment, as a fraction of the chord tolerance: keeps the
-/// polyline within about tolerance/4 of the curve, so that the distance is within `tolerance`.
-constexpr double polyline_sagitta_fraction = 0.25;
-/// Every piece is first split into this many parameter intervals, so that a closed loop piece (or a
-/// piece whose midpoint lies on its chord) is not mistaken for a short chord.
-constexpr int polyline_initial_splits = 4;
+/// Cap on the sub-pieces of one curve's polyline (step 1): a curve of total turning theta needs
+/// about theta sqrt(R / tolerance) of them, so 2^12 covers a full circle at tolerance 2.4e-6 R
+/// (a quarter circle at 1.5e-7 R); it bounds memory (kB) and the time (a capped pair of curves:
+/// about 0.2 s in release, under a second with the sanitizers).
+constexpr std::size_t max_hausdorff_segments = std::size_t(1) << 12;
+/// Cap on the halvings of polyline segments in step 2, per direction.
+constexpr std::size_t max_hausdorff_refinements = std::size_t(1) << 14;
+/// Depth cap of the halving of one piece: 2^-50 of a piece is below any tolerance in double.
+constexpr int max_hausdorff_depth = 50;
+/// Largest ratio of the weights of one rational piece: beyond it the convex combinations of
+/// step 1 lose all precision near an end (weights 5e-324, 1, 5e-324: issue 29 #13).
+constexpr double max_hausdorff_weight_ratio = 1e100;
+/// Largest coordinate magnitude: below DBL_MAX / 8 every difference and distance is finite.
+constexpr double max_hausdorff_coordinate = std::numeric_limits<double>::max() / 8;
 
-// Sampling of a piece into a polyline with chord <= h (recursive bisection, depth-capped).
-template <class Piece>
-void sample_polyline_piece(const Piece_jet<Piece>& jet, double t0, double t1, double x0, double y0, double x1, double y1,
-                           double h, int depth, std::vector<std::pair<double, double>>& out) {
-  const double tm = 0.5 * (t0 + t1);
-  const Jet m = jet(tm);
-  const double chord = std::hypot(x1 - x0, y1 - y0);
-  const double sag = std::hypot(m.x - 0.5 * (x0 + x1), m.y - 0.5 * (y0 + y1));
-  if (depth >= max_polyline_depth || (chord <= h && sag <= polyline_sagitta_fraction * h)) {
-    out.emplace_back(x1, y1);
-    return;
+typedef std::pair<double, double> Point_d;
+
+/// One sub-piece of a Bernstein-form piece in affine form: points and weights (max weight 1).
+struct Sub_piece {
+  std::size_t piece = 0;
+  double t0 = 0;  ///< where it starts in its piece (for ordering)
+  int depth = 0;
+  std::vector<double> x, y, w;
+  double delta = 0;  ///< max |P_i - L(i/n)|, the certified distance to the chord both ways
+};
+
+inline double chord_deviation(const Sub_piece& s) {
+  const std::size_t n = s.x.size() - 1;
+  double d = 0;
+  for (std::size_t i = 1; i < n; ++i) {
+    const double u = double(i) / double(n);
+    d = std::max(d, std::hypot(s.x[i] - ((1 - u) * s.x[0] + u * s.x[n]), s.y[i] - ((1 - u) * s.y[0] + u * s.y[n])));
   }
-  sample_polyline_piece(jet, t0, tm, x0, y0, m.x, m.y, h, depth + 1, out);
-  sample_polyline_piece(jet, tm, t1, m.x, m.y, x1, y1, h, depth + 1, out);
+  return d;
 }
 
-template <class Piece>
-std::vector<std::pair<double, double>> sample_polyline(const std::vector<Piece>& curve, double h) {
-  std::vector<std::pair<double, double>> out;
-  for (std::size_t i = 0; i < curve.size(); ++i) {
-    Piece_jet<Piece> jet(curve[i]);
-    const Jet a = jet(0.0), b = jet(1.0);
-    if (i == 0) out.emplace_back(a.x, a.y);
-    else if (out.back().first != a.x || out.back().second != a.y) out.emplace_back(a.x, a.y);
-    double tx = 0, px = a.x, py = a.y;
-    for (int q = 1; q <= polyline_initial_splits; ++q) {
-      const double tq = double(q) / polyline_initial_splits;
-      const Jet e = q == polyline_initial_splits ? b : jet(tq);
-      sample_polyline_piece(jet, tx, tq, px, py, e.x, e.y, h, 0, out);
-      tx = tq; px = e.x; py = e.y;
+/// Halves a sub-piece at t = 1/2 by the rational de Casteljau algorithm in affine form.
+inline std::pair<Sub_piece, Sub_piece> halve(const Sub_piece& s) {
+  const std::size_t m = s.x.size();
+  std::vector<double> x = s.x, y = s.y, w = s.w;
+  Sub_piece l, r;
+  l.piece = r.piece = s.piece;
+  l.depth = r.depth = s.depth + 1;
+  l.t0 = s.t0;
+  r.t0 = s.t0 + std::ldexp(1.0, -(s.depth + 1));
+  l.x.resize(m); l.y.resize(m); l.w.resize(m); r.x.resize(m); r.y.resize(m); r.w.resize(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    l.x[k] = x[0]; l.y[k] = y[0]; l.w[k] = w[0];
+    r.x[m - 1 - k] = x[m - 1 - k]; r.y[m - 1 - k] = y[m - 1 - k]; r.w[m - 1 - k] = w[m - 1 - k];
+    for (std::size_t i = 0; i + 1 < m - k; ++i) {
+      const double wn = 0.5 * (w[i] + w[i + 1]), a = 0.5 * w[i] / wn, b = 1 - a;
+      x[i] = a * x[i] + b * x[i + 1];
+      y[i] = a * y[i] + b * y[i + 1];
+      w[i] = wn;
     }
   }
+  for (Sub_piece* p : {&l, &r}) {
+    // Renormalise the weights (an exact power of two keeps them in range, the curve unchanged).
+    const double wmax = *std::max_element(p->w.begin(), p->w.end());
+    int e;
+    std::frexp(wmax, &e);
+    for (double& v : p->w) v = std::ldexp(v, -e);
+    p->delta = chord_deviation(*p);
+  }
+  return {l, r};
+}
+
+/// A polyline through points of a curve and a bound e of the Hausdorff distance between them.
+struct Certified_polyline {
+  std::vector<Point_d> vertices;
+  double error = 0;
+  bool converged = true;  ///< every sub-piece within the target (no cap met)
+  bool certified = true;  ///< e is a certified bound (Bernstein-form pieces)
+};
+
+template <class Piece>
+void sample_generic_piece(const Piece_jet<Piece>& jet, double t0, double t1, const Jet& a, const Jet& b, double h,
+                          int depth, std::vector<Point_d>& out, double& err) {
+  const double tm = 0.5 * (t0 + t1);
+  const Jet m = jet(tm, 1);
+  const double sag = std::hypot(m.x - 0.5 * (a.x + b.x), m.y - 0.5 * (a.y + b.y));
+  if (depth >= 24 || sag <= h) {
+    err = std::max(err, 2 * sag);  // an estimate only: a generic piece has no certificate
+    out.emplace_back(b.x, b.y);
+    return;
+  }
+  sample_generic_piece(jet, t0, tm, a, m, h, depth + 1, out, err);
+  sample_generic_piece(jet, tm, t1, m, b, h, depth + 1, out, err);
+}
+
+/// Step 1 for one curve: its polyline with e <= `target` unless a cap is met.
+template <class Piece>
+Certified_polyline certified_polyline(const std::vector<Piece>& curve, double target, const char* which) {
+  Certified_polyline out;
+  if constexpr (is_bernstein_form(kind_of<Piece>)) {
+    auto cmp = [](const Sub_piece& a, const Sub_piece& b) { return a.delta < b.delta; };
+    std::priority_queue<Sub_piece, std::vector<Sub_piece>, decltype(cmp)> open(cmp);
+    std::vector<Sub_piece> done;
+    double magnitude = 0;
+    std::size_t degree = 1;
+    for (std::size_t i = 0; i < curve.size(); ++i) {
+      std::vector<typename Piece::Point_2> cp;
+      std::vector<typename Piece::FT> w;
+      bernstein_form(curve[i], cp, w);
+      Sub_piece s;
+      s.piece = i;
+      double wmin = std::numeric_limits<double>::infinity(), wmax = 0;
+      for (std::size_t k = 0; k < cp.size(); ++k) {
+        s.x.push_back(CGAL::to_double(cp[k].x()));
+        s.y.push_back(CGAL::to_double(cp[k].y()));
+        s.w.push_back(CGAL::to_double(w[k]));
+        wmin = std::min(wmin, s.w.back());
+        wmax = std::max(wmax, s.w.back());
+        magnitude = std::max({magnitude, std::fabs(s.x.back()), std::fabs(s.y.back())});
+      }
+      if (!(magnitude <= max_hausdorff_coordinate))
+        throw Invalid_input_error(message("hausdorff_distance: ", which, ", piece ", i, ", has a coordinate ",
+                                          magnitude, " beyond ", max_hausdorff_coordinate,
+                                          " (DBL_MAX / 8), where distances may overflow double precision"));
+      if (!(wmin > 0) || !(wmax / wmin <= max_hausdorff_weight_ratio))
+        throw Invalid_input_error(message("hausdorff_distance: ", which, ", piece ", i, ", has weights from ", wmin,
+                                          " to ", wmax, "; their ratio must be at most ", max_hausdorff_weight_ratio));
+      for (double& v : s.w) v /= wmax;
+      degree = std::max(degree, s.x.size() - 1);
+      s.delta = s.x.size() > 2 ? chord_deviation(s) : 0.0;
+      open.push(std::move(s));
+    }
+    // Halve the worst sub-piece until all are within the target or a cap is met.
+    while (!open.empty() && open.top().delta > target) {
+      if (open.size() + done.size() >= max_hausdorff_segments) {
+        out.converged = false;
+        break;
+      }
+      Sub_piece s = open.top();
+      open.pop();
+      if (s.depth >= max_hausdorff_depth) {
+        out.converged = false;
+        done.push_back(std::move(s));
+        continue;
+      }
+      std::pair<Sub_piece, Sub_piece> h = halve(s);
+      open.push(std::move(h.first));
+      open.push(std::move(h.second));
+    }
+    while (!open.empty()) {
+      done.push_back(open.top());
+      open.pop();
+    }
+    std::sort(done.begin(), done.end(),
+              [](const Sub_piece& a, const Sub_piece& b) { return a.piece != b.piece ? a.piece < b.piece : a.t0 < b.t0; });
+    double err = 0;
+    for (const Sub_piece& s : done) {
+      err = std::max(err, s.delta);
+      const Point_d a(s.x.front(), s.y.front()), b(s.x.back(), s.y.back());
+      if (out.vertices.empty() || out.vertices.back() != a) out.vertices.push_back(a);
+      out.vertices.push_back(b);
+    }
+    // Rounding allowance of the double de Casteljau steps and chord deviations; a curve of
+    // straight pieces has its control points as the polyline, exactly (e = 0).
+    out.error = degree <= 1 ? 0.0 : err + 64 * double(degree + 1) * std::numeric_limits<double>::epsilon() * magnitude;
+  } else {
+    out.certified = false;
+    double err = 0;
+    for (std::size_t i = 0; i < curve.size(); ++i) {
+      Piece_jet<Piece> jet(curve[i]);
+      const Jet a = jet(0.0, 1), b = jet(1.0, 1);
+      if (out.vertices.empty() || out.vertices.back() != Point_d(a.x, a.y)) out.vertices.emplace_back(a.x, a.y);
+      Jet prev = a;
+      for (int q = 1; q <= 4; ++q) {
+        const Jet e = q == 4 ? b : jet(q / 4.0, 1);
+        sample_generic_piece(jet, (q - 1) / 4.0, q / 4.0, prev, e, target, 0, out.vertices, err);
+        prev = e;
+      }
+    }
+    out.error = err;
+  }
+  for (const Point_d& p : out.vertices)
+    if (!std::isfinite(p.first) || !std::isfinite(p.second))
+      throw Invalid_input_error(message("hausdorff_distance: ", which, " has a point (", p.first, ", ",
+                                        p.second, ") that is not finite"));
   return out;
 }
 
-inline double point_segment_distance(double px, double py, double ax, double ay, double bx, double by) {
-  const double dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
-  double u = l2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / l2 : 0.0;
+inline double point_segment_distance(const Point_d& p, const Point_d& a, const Point_d& b) {
+  const double dx = b.first - a.first, dy = b.second - a.second, l2 = dx * dx + dy * dy;
+  double u = l2 > 0 ? ((p.first - a.first) * dx + (p.second - a.second) * dy) / l2 : 0.0;
   u = std::min(1.0, std::max(0.0, u));
-  return std::hypot(px - (ax + u * dx), py - (ay + u * dy));
+  return std::hypot(p.first - (a.first + u * dx), p.second - (a.second + u * dy));
 }
 
-/// max over the points of `a` of the distance to the polyline `b`, with a uniform grid.
-inline double directed_polyline_distance(const std::vector<std::pair<double, double>>& a,
-                                         const std::vector<std::pair<double, double>>& b) {
-  if (b.size() == 1) {
-    double best = 0;
-    for (const auto& p : a) best = std::max(best, std::hypot(p.first - b[0].first, p.second - b[0].second));
+/// Nearest-segment queries on a polyline through a bounding-box tree over runs of consecutive
+/// segments (a polyline is spatially coherent in its own order): a node's box is skipped when it
+/// cannot hold a segment nearer than the best found, the nearer child is visited first. Exact;
+/// O(log n) per query on a fair curve, and, unlike a uniform grid, not slowed down where the
+/// segments cluster (the tip of a hairpin: a fuzz finding of issue 29).
+class Polyline_grid {
+public:
+  explicit Polyline_grid(const std::vector<Point_d>& v) : v_(v) {
+    segments_ = v.size() > 1 ? v.size() - 1 : 1;
+    box_.resize(4 * segments_);
+    build(1, 0, segments_);
+  }
+
+  /// Distance from p to segment s.
+  double segment_distance(const Point_d& p, std::size_t s) const {
+    return point_segment_distance(p, v_[s], v_.size() == 1 ? v_[0] : v_[s + 1]);
+  }
+
+  /// The distance from p to the polyline and the index of a nearest segment.
+  std::pair<double, std::size_t> nearest(const Point_d& p) const {
+    std::pair<double, std::size_t> best(std::numeric_limits<double>::infinity(), 0);
+    visit(1, 0, segments_, p, best);
     return best;
   }
-  double xmin = b[0].first, xmax = xmin, ymin = b[0].second, ymax = ymin;
-  for (const auto& p : b) {
-    xmin = std::min(xmin, p.first); xmax = std::max(xmax, p.first);
-    ymin = std::min(ymin, p.second); ymax = std::max(ymax, p.second);
-  }
-  const std::size_t segs = b.size() - 1;
-  const double extent = std::max(xmax - xmin, ymax - ymin);
-  const double side = std::max(1.0, std::ceil(std::sqrt(double(segs))));
-  const double cell = extent > 0 ? extent / side : 1.0;
-  const long nx = std::max(1L, long(std::floor((xmax - xmin) / cell)) + 1), ny = std::max(1L, long(std::floor((ymax - ymin) / cell)) + 1);
-  std::vector<std::vector<std::size_t>> grid(std::size_t(nx * ny));
-  auto cx = [&](double x) { return std::min(nx - 1, std::max(0L, long(std::floor((x - xmin) / cell)))); };
-  auto cy = [&](double y) { return std::min(ny - 1, std::max(0L, long(std::floor((y - ymin) / cell)))); };
-  for (std::size_t s = 0; s < segs; ++s) {
-    const long i0 = cx(std::min(b[s].first, b[s + 1].first)), i1 = cx(std::max(b[s].first, b[s + 1].first));
-    const long j0 = cy(std::min(b[s].second, b[s + 1].second)), j1 = cy(std::max(b[s].second, b[s + 1].second));
-    for (long i = i0; i <= i1; ++i)
-      for (long j = j0; j <= j1; ++j) grid[std::size_t(j * nx + i)].push_back(s);
-  }
-  // The nonempty cells; for each query they are visited in increasing order of their distance to
-  // the query point, stopping as soon as that lower bound exceeds the best distance found: exact
-  // (the true minimum over all segments) and O(C log C) per query for C nonempty cells.
-  std::vector<long> cells;
-  for (long c = 0; c < nx * ny; ++c)
-    if (!grid[std::size_t(c)].empty()) cells.push_back(c);
-  std::vector<std::pair<double, long>> order(cells.size());
-  double result = 0;
-  for (const auto& p : a) {
-    for (std::size_t k = 0; k < cells.size(); ++k) {
-      const long i = cells[k] % nx, j = cells[k] / nx;
-      const double x0 = xmin + double(i) * cell, y0 = ymin + double(j) * cell;
-      const double dx = std::max({0.0, x0 - p.first, p.first - (x0 + cell)});
-      const double dy = std::max({0.0, y0 - p.second, p.second - (y0 + cell)});
-      order[k] = std::make_pair(std::hypot(dx, dy), cells[k]);
-    }
-    std::sort(order.begin(), order.end());
-    double best = std::numeric_limits<double>::infinity();
-    for (const auto& o : order) {
-      // Segments are registered in every cell their bounding box meets (the last cells are clamped
-      // to include the box edges), so the cell's lower bound holds for the segment parts inside it.
-      if (o.first > best) break;
-      for (std::size_t s : grid[std::size_t(o.second)])
-        best = std::min(best, point_segment_distance(p.first, p.second, b[s].first, b[s].second, b[s + 1].first,
-                                                     b[s + 1].second));
-    }
-    result = std::max(result, best);
-  }
-  return result;
-}
 
+private:
+  struct Box {
+    double x0, y0, x1, y1;
+    double distance(const Point_d& p) const {
+      const double dx = std::max({0.0, x0 - p.first, p.first - x1}), dy = std::max({0.0, y0 - p.second, p.second - y1});
+      return std::hypot(dx, dy);
+    }
+  };
+  static constexpr std::size_t leaf_size = 4;
+
+  const Point_d& end(std::size_t s) const { return v_.size() == 1 ? v_[0] : v_[s + 1]; }
+
+  void build(std::size_t node, std::size_t lo, std::size_t hi) {
+    Box b{v_[lo].first, v_[lo].second, v_[lo].first, v_[lo].second};
+    if (hi - lo <= leaf_size) {
+      for (std::size_t s = lo; s < hi; ++s)
+        for (const Point_d* q : {&v_[s], &end(s)}) {
+          b.x0 = std::min(b.x0, q->first); b.x1 = std::max(b.x1, q->first);
+          b.y0 = std::min(b.y0, q->second); b.y1 = std::max(b.y1, q->second);
+        }
+    } else {
+      const std::size_t mid = lo + (hi - lo) / 2;
+      build(2 * node, lo, mid);
+      build(2 * node + 1, mid, hi);
+      const Box &l = box_[2 * node], &r = box_[2 * node + 1];
+      b = Box{std::min(l.x0, r.x0), std::min(l.y0, r.y0), std::max(l.x1, r.x1), std::max(l.y1, r.y1)};
+    }
+    box_[node] = b;
+  }
+
+  void visit(std::size_t node, std::size_t lo, std::size_t hi, const Point_d& p, std::pair<double, std::size_t>& best) const {
+    if (box_[node].distance(p) > best.first) return;
+    if (hi - lo <= leaf_size) {
+      for (std::size_t s = lo; s < hi; ++s) {
+        const double d = segment_distance(p, s);
+        if (d < best.first) best = {d, s};
+      }
+      return;
+    }
+    const std::size_t mid = lo + (hi - lo) / 2;
+    const double dl = box_[2 * node].distance(p), dr = box_[2 * node + 1].distance(p);
+    if (dl <= dr) {
+      visit(2 * node, lo, mid, p, best);
+      visit(2 * node + 1, mid, hi, p, best);
+    } else {
+      visit(2 * node + 1, mid, hi, p, best);
+      visit(2 * node, lo, mid, p, best);
+    }
+  }
+
+  const std::vector<Point_d>& v_;
+  std::size_t segments_ = 1;
+  std::vector<Box> box_;
+};
+
+/// Bounds of the directed distance h(P_A, P_B) of two polylines (step 2).
+struct Directed_bounds {
+  double lower = 0, upper = 0;
+  bool converged = true;
+};
+
+inline Directed_bounds directed_polyline_bounds(const std::vector<Point_d>& a, const Polyline_grid& b, double gap) {
+  struct Node {
+    Point_d p0, p1;
+    double d0, d1;
+    std::size_t s0, s1;
+    double upper;
+    bool operator<(const Node& o) const { return upper < o.upper; }
+  };
+  Directed_bounds out;
+  std::vector<std::pair<double, std::size_t>> near(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    near[i] = b.nearest(a[i]);
+    out.lower = std::max(out.lower, near[i].first);
+  }
+  auto make = [&](const Point_d& p0, const Point_d& p1, const std::pair<double, std::size_t>& n0,
+                  const std::pair<double, std::size_t>& n1) {
+    Node n{p0, p1, n0.first, n1.first, n0.second, n1.second, 0};
+    const double len = std::hypot(p1.first - p0.first, p1.second - p0.second);
+    n.upper = std::min({std::max(b.segment_distance(p0, n.s0), b.segment_distance(p1, n.s0)),
+                        std::max(b.segment_distance(p0, n.s1), b.segment_distance(p1, n.s1)),
+                        0.5 * (n.d0 + n.d1 + len)});
+    n.upper = std::max(n.upper, std::max(n.d0, n.d1));
+    return n;
+  };
+  std::priority_queue<Node> open;
+  for (std::size_t i = 0; i + 1 < a.size(); ++i) {
+    const Node n = make(a[i], a[i + 1], near[i], near[i + 1]);
+    if (n.upper > out.lower + gap) open.push(n);
+  }
+  std::size_t refinements = 0;
+  while (!open.empty() && open.top().upper > out.lower + gap) {
+    if (refinements++ >= max_hausdorff_refinements) {
+      out.converged = false;
+      break;
+    }
+    const Node n = open.top();
+    open.pop();
+    const Point_d m(0.5 * (n.p0.first + n.p1.first), 0.5 * (n.p0.second + n.p1.second));
+    const std::pair<double, std::size_t> nm = b.nearest(m);
+    out.lower = std::max(out.lower, nm.first);
+    const Node l = make(n.p0, m, {n.d0, n.s0}, nm), r = make(m, n.p1, nm, {n.d1, n.s1});
+    if (l.upper > out.lower + gap) open.push(l);
+    if (r.upper > out.lower + gap) open.push(r);
+  }
+  out.upper = std::max(out.lower, open.empty() ? out.lower : open.top().upper);
+  return out;
+}
 
 } // namespace metrics
 } // namespace internal

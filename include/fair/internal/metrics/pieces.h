@@ -229,6 +229,22 @@ Homogeneous_form homogeneous_exact(const P& piece) {
   return h;
 }
 
+/// Cap on the size of the exact polynomial of one piece (D or N of the
+/// features, the critical-point polynomial of the circle deviation), in bits summed over the
+/// numerators and denominators of its Bernstein coefficients: root isolation costs grow with the
+/// degree times this size, and a degree-40 piece with random 12-digit p/q coordinates took 16 s
+/// (issue 29 #4). Beyond the cap the piece's features are found by sampling (certified = false,
+/// reported); the program's own exact curves stay far below it (doc/fairness_metrics.md).
+constexpr std::size_t max_certified_polynomial_bits = 60000;
+
+/// The size of an exact Bernstein polynomial in bits (see max_certified_polynomial_bits).
+inline std::size_t polynomial_bits(const Bernstein_polynomial<CGAL::Gmpq>& p) {
+  std::size_t bits = 0;
+  for (const CGAL::Gmpq& c : p.coefficients())
+    bits += mpz_sizeinbase(mpq_numref(c.mpq()), 2) + mpz_sizeinbase(mpq_denref(c.mpq()), 2);
+  return bits;
+}
+
 } // namespace metrics
 } // namespace internal
 } // namespace fair

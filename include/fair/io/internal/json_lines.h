@@ -6,9 +6,12 @@
 // general-purpose JSON library does not provide. Writing uses nlohmann-json
 // (fair/io/write_json.h).
 //
-// Grammar: RFC 8259, with numbers checked by fair::io::parse_decimal (so NaN,
-// Infinity and out-of-range numbers get a precise message). Nesting is capped at 64 levels so
-// that hostile input cannot exhaust the stack.
+// Grammar: RFC 8259, strictly: a number token must match the RFC's grammar (no "01", "1.", ".5",
+// "+1") and is then converted by fair::io::parse_decimal (so NaN, Infinity and out-of-range
+// numbers get a precise message); duplicate member names in one object are refused; a UTF-8
+// byte-order mark (which RFC 8259 forbids a writer to add) is refused by name, not reported as
+// an invisible character inside a value. Nesting is capped at 64 levels so that hostile input
+// cannot exhaust the stack.
 
 #ifndef FAIR_IO_INTERNAL_JSON_LINES_H
 #define FAIR_IO_INTERNAL_JSON_LINES_H
@@ -20,6 +23,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstddef>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,6 +43,7 @@ public:
 
   /// Parses the whole text as one JSON value; throws Parse_error on any problem.
   Json_value parse() {
+    if (has_byte_order_mark(s_)) throw Parse_error(file_, 1, byte_order_mark_message);
     skip_space();
     if (i_ == s_.size()) throw Parse_error(file_, 0, "the file is empty, expected JSON");
     Json_value v = value(0);
@@ -84,10 +89,16 @@ private:
       ++i_;
       skip_space();
       if (i_ < s_.size() && s_[i_] == '}') { ++i_; return v; }
+      std::set<std::string> keys;
       for (;;) {
         skip_space();
         if (i_ == s_.size() || s_[i_] != '"') fail("expected a quoted member name in an object");
+        const std::size_t key_line = line_;
         std::string key = string_contents();
+        // RFC 8259 leaves duplicate names to the reader; two "points" would otherwise be read as
+        // the first one silently (issue 29 #18), so they are refused.
+        if (!keys.insert(key).second)
+          throw Parse_error(file_, key_line, "duplicate member \"" + key + "\" in an object");
         skip_space();
         if (i_ == s_.size() || s_[i_] != ':') fail("expected ':' after member name \"" + key + "\"");
         ++i_;
@@ -133,6 +144,9 @@ private:
     if (token == "null") return v;
     // parse_decimal throws with the precise reason (NaN, infinite, garbage, range).
     parse_decimal(token, file_, line_, "number");
+    if (!is_json_number_text(token))
+      fail("number " + quoted(token) +
+           " is not a JSON number (RFC 8259: no leading '+', no leading zeros, digits on both sides of '.')");
     v.kind = Json_value::NUMBER;
     v.text = token;
     return v;

@@ -6,8 +6,12 @@
 // and a missing integer part such as ".5") or, for users of exact kernels, an exact rational
 // "p/q" with integer p and q. Decimal numbers are converted to the nearest double (correct
 // rounding, locale independent: std::from_chars), then to FT, so every kernel sees the same
-// value. A rational is converted exactly when FT is an exact field type (Gmpq, EPECK's FT) and
-// to the correctly rounded quotient of p and q otherwise (exact when |p|, |q| < 2^53).
+// value. A rational is converted exactly when FT is an exact field type (Gmpq, EPECK's FT); its
+// double is the correctly rounded value of the exact quotient p/q (computed as a GMP rational,
+// so that p and q beyond the double range, such as 10^310 / (3 10^310), are read as what they
+// are: issue 29 #10, #11).
+// Inside JSON, a number token follows RFC 8259 exactly (is_json_number_text); the looser
+// decimal grammar above is for the fields of CSV and number files and for JSON strings.
 
 #ifndef FAIR_IO_INTERNAL_NUMBER_PARSING_H
 #define FAIR_IO_INTERNAL_NUMBER_PARSING_H
@@ -16,12 +20,15 @@
 #include <fair/io/parsing.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
+#include <CGAL/Gmpq.h>
 #include <CGAL/number_utils.h>
 
 #include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <limits>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -95,6 +102,80 @@ FT integer_from_digits(const std::string& digits) {
   return digits[0] == '-' ? -value : value;
 }
 
+/// True when `text` starts with the UTF-8 byte-order mark EF BB BF.
+inline bool has_byte_order_mark(const std::string& text) {
+  return text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF &&
+         static_cast<unsigned char>(text[1]) == 0xBB && static_cast<unsigned char>(text[2]) == 0xBF;
+}
+
+/// What a file starting with a byte-order mark is told (every reader refuses it by name: an
+/// invisible mark would otherwise end up inside the first field, "'0' is not a number").
+constexpr const char* byte_order_mark_message =
+    "the file starts with a UTF-8 byte-order mark (bytes EF BB BF); save it as plain UTF-8 without the mark";
+
+/// RFC 8259 number: -?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?. Refuses what the looser
+/// decimal grammar of the other files accepts: "01", "1.", ".5", "+1".
+inline bool is_json_number_text(const std::string& s) {
+  std::size_t i = 0;
+  if (i < s.size() && s[i] == '-') ++i;
+  if (i == s.size()) return false;
+  if (s[i] == '0') ++i;
+  else if (s[i] >= '1' && s[i] <= '9') while (i < s.size() && is_digit(s[i])) ++i;
+  else return false;
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    const std::size_t start = i;
+    while (i < s.size() && is_digit(s[i])) ++i;
+    if (i == start) return false;
+  }
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    const std::size_t start = i;
+    while (i < s.size() && is_digit(s[i])) ++i;
+    if (i == start) return false;
+  }
+  return i == s.size();
+}
+
+/// How a rational rounds to double.
+enum class Rational_rounding { FINITE, OVERFLOW, UNDERFLOW };
+
+/// The double nearest to q (ties to even), subnormals included. `status` is OVERFLOW when q
+/// rounds beyond the largest double, UNDERFLOW when q != 0 rounds to zero (the value is then
+/// +-inf or +-0). mpq_get_d truncates towards zero, so q lies between that double c and its
+/// neighbour n away from zero; the exact midpoint of c and n decides.
+inline double nearest_double(const CGAL::Gmpq& q, Rational_rounding& status) {
+  status = Rational_rounding::FINITE;
+  const int sign = mpq_sgn(q.mpq());
+  if (sign == 0) return 0.0;
+  const CGAL::Gmpq a = sign < 0 ? -q : q;
+  const double c = mpq_get_d(a.mpq()); // truncated: c <= a
+  double r;
+  if (!std::isfinite(c)) {
+    r = std::numeric_limits<double>::infinity();
+  } else if (CGAL::Gmpq(c) == a) {
+    r = c;
+  } else {
+    const double n = std::nextafter(c, std::numeric_limits<double>::infinity());
+    // The midpoint of c and n; for c = DBL_MAX, n = inf: DBL_MAX + 2^970 (half an ulp).
+    const CGAL::Gmpq upper = std::isfinite(n) ? CGAL::Gmpq(n) : CGAL::Gmpq(c) + CGAL::Gmpq(std::ldexp(1.0, 971));
+    const CGAL::Gmpq mid = (CGAL::Gmpq(c) + upper) / 2;
+    const int cmp = mpq_cmp(a.mpq(), mid.mpq());
+    bool up = cmp > 0;
+    if (cmp == 0) {
+      // Ties to even: the neighbour whose last mantissa bit is 0 (inf counts as even).
+      std::uint64_t bits;
+      std::memcpy(&bits, &c, sizeof bits);
+      up = (bits & 1) != 0;
+    }
+    r = up ? n : c;
+  }
+  if (!std::isfinite(r)) status = Rational_rounding::OVERFLOW;
+  else if (r == 0) status = Rational_rounding::UNDERFLOW;
+  return sign < 0 ? -r : r;
+}
+
 template <class T, class = void>
 struct Lazy_exact_type {
   typedef void type;
@@ -146,6 +227,11 @@ inline double parse_decimal(const std::string& text, const std::string& file, st
   return value;
 }
 
+/// Cap on the digits of the numerator and of the denominator of a "p/q" number: far beyond what
+/// the program writes (an exact curve of fair-curves has rationals of some hundreds of digits;
+/// a cap of 10^5 digits keeps one number's GMP work and memory in the milliseconds and kB).
+constexpr std::size_t max_rational_digits = 100000;
+
 inline Parsed_number parse_number(const std::string& text, const std::string& file,
                                   std::size_t line, const char* what) {
   Parsed_number out;
@@ -164,16 +250,25 @@ inline Parsed_number parse_number(const std::string& text, const std::string& fi
   if (zero_q)
     throw Parse_error(file, line,
                       std::string(what) + " " + quoted(text) + " has a zero denominator");
-  const double pd = parse_decimal(p, file, line, what), qd = parse_decimal(q, file, line, what);
-  // IEEE division is correctly rounded, so the quotient is the nearest double whenever p and
-  // q are exactly representable (|p|, |q| < 2^53).
-  out.value = pd / qd;
-  if (!std::isfinite(out.value) || (out.value == 0 && p.find_first_not_of("+-0") != std::string::npos))
-    throw Parse_error(file, line, std::string(what) + " " + quoted(text) +
-                                      " is outside the range of double precision");
+  if (p.size() > max_rational_digits || q.size() > max_rational_digits)
+    throw Parse_error(file, line, fair::internal::message(what, " ", quoted(text), " has more than ",
+                                                          max_rational_digits, " digits in its numerator or denominator"));
   out.rational = true;
   out.numerator = p[0] == '+' ? p.substr(1) : p;
   out.denominator = q;
+  // The exact quotient, then its nearest double: p and q may each be far beyond the double range
+  // while p/q is an ordinary number (the program's own exact output has such digits).
+  CGAL::Gmpq exact;
+  mpq_set_str(exact.mpq(), (out.numerator + "/" + out.denominator).c_str(), 10);
+  mpq_canonicalize(exact.mpq());
+  internal::Rational_rounding status;
+  out.value = internal::nearest_double(exact, status);
+  if (status == internal::Rational_rounding::OVERFLOW)
+    throw Parse_error(file, line, std::string(what) + " " + quoted(text) +
+                                      " is too large: it overflows double precision");
+  if (status == internal::Rational_rounding::UNDERFLOW)
+    throw Parse_error(file, line, std::string(what) + " " + quoted(text) +
+                                      " is too small: it underflows to zero in double precision");
   return out;
 }
 

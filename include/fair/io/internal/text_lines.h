@@ -4,12 +4,14 @@
 // and constraint files): lines split at '\n', '#' starts a comment, blank lines are skipped,
 // fields are separated by commas or, on a line without a comma, by blanks, whitespace around a
 // field is ignored, and a control byte (NUL, ...) is refused as "not a text file". Every field
-// that should be a number goes through the one strict parser, fair::io::parse_number.
+// that should be a number goes through the one strict parser, fair::io::parse_number. A UTF-8
+// byte-order mark at the start is refused by name.
 
 #ifndef FAIR_IO_INTERNAL_TEXT_LINES_H
 #define FAIR_IO_INTERNAL_TEXT_LINES_H
 
 #include <fair/Errors.h>
+#include <fair/io/parsing.h>
 
 #include <cstddef>
 #include <sstream>
@@ -73,6 +75,7 @@ struct Text_line {
 /// Parse_error(file, line) on a control byte. Linear in the size of the text.
 inline std::vector<Text_line> data_lines(const std::string& text, const std::string& file) {
   std::vector<Text_line> out;
+  if (has_byte_order_mark(text)) throw Parse_error(file, 1, byte_order_mark_message);
   std::size_t start = 0, number = 0;
   while (start < text.size()) {
     std::size_t end = text.find('\n', start);
