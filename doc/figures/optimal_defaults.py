@@ -2,7 +2,9 @@
 # Draws doc/figures/optimal_defaults.svg (doc/optimal_curves.md, "Defaults"): the optimal curve
 # through one hand-drawn Quick, Draw! stroke (test/data/optimal/quickdraw_stroke.csv) at the old
 # defaults (beta = beta_0 = 1) and at lambda = 0.3, 0.5, 0.7 (the defaults now), 0.9, from the
-# polygons that `fair-curves optimal -o` writes. Usage: optimal_defaults.py FAIR_CURVES > out.svg
+# polygons that `fair-curves optimal -o` writes. Usage: optimal_defaults.py FAIR_CURVES > out.svg,
+# or optimal_defaults.py --json OLD L03 L05 L07 L09 > out.svg with those five JSON files (any file
+# with the "polygon" member; the extent ratio is computed here as in the report).
 import json, subprocess, sys, tempfile, os
 
 tool = sys.argv[1]
@@ -12,24 +14,34 @@ runs = [('old defaults: beta = beta0 = 1', ['--length-weight', '1', '--curvature
         ('lambda = 0.3', ['--lambda', '0.3']), ('lambda = 0.5', ['--lambda', '0.5']),
         ('lambda = 0.7 (defaults)', []), ('lambda = 0.9', ['--lambda', '0.9'])]
 points = [tuple(map(float, l.split(','))) for l in open(points_file) if l.strip()]
+def extent_ratio(poly):
+    gx = sum(p[0] for p in points) / len(points); gy = sum(p[1] for p in points) / len(points)
+    r = lambda q: ((q[0] - gx) ** 2 + (q[1] - gy) ** 2) ** 0.5
+    return max(1.0, max(map(r, poly)) / max(map(r, points)))
 panels = []
-for title, args in runs:
+if tool == '--json':
+    for (title, _), f in zip(runs, sys.argv[2:]):
+        poly = [tuple(p) for p in json.load(open(f))['polygon']]
+        panels.append((title, poly, {'extent_ratio': extent_ratio(poly), 'status': 'converged'}))
+for title, args in ([] if tool == '--json' else runs):
     with tempfile.TemporaryDirectory() as d:
         out = os.path.join(d, 'c.json')
         subprocess.run([tool, 'optimal', points_file, '-o', out] + args, check=False, capture_output=True)
         j = json.load(open(out))
         panels.append((title, [tuple(p) for p in j['polygon']], j['report']))
-# one common scale: the largest curve's bounding box
-xs = [p[0] for _, poly, _ in panels for p in poly]; ys = [p[1] for _, poly, _ in panels for p in poly]
-x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
+# each panel at its own scale (the bounding box of its curve and the points): the extent ratio in
+# the caption says how large the curve is against its points
 size, pad = 260.0, 20.0
-s = (size - 2 * pad) / max(x1 - x0, y1 - y0)
-def xy(p, k):
-    return (k * size + pad + (p[0] - x0) * s, 40 + pad + (y1 - p[1]) * s)
+def frame(poly):
+    xs = [p[0] for p in poly + points]; ys = [p[1] for p in poly + points]
+    x0, y1 = min(xs), max(ys)
+    s = (size - 2 * pad) / max(max(xs) - x0, y1 - min(ys))
+    return lambda p, k: (k * size + pad + (p[0] - x0) * s, 40 + pad + (y1 - p[1]) * s)
 w = size * len(panels)
 svg = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" font-size="11">' % (w, size + 50),
        '<rect width="100%" height="100%" fill="white"/>']
 for k, (title, poly, report) in enumerate(panels):
+    xy = frame(poly)
     svg.append('<text x="%.1f" y="16">%s</text>' % (k * size + 8, title))
     svg.append('<text x="%.1f" y="31" fill="#555">extent ratio %.2f, %s</text>' % (k * size + 8, report['extent_ratio'], report['status']))
     inp = ' '.join('%.2f,%.2f' % xy(p, k) for p in points)

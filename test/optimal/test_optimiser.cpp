@@ -38,7 +38,7 @@ const double pi = 3.14159265358979323846;
 // The raw weights of eq. 5 (lambda = -1): the oracles below are stated for them. The defaults are
 // the lambda design at fair::default_optimal_lambda (issue 25 §1; test_real_data.cpp).
 Optimal_curve_options raw_weights() {
-  Optimal_curve_options o = raw_weights();
+  Optimal_curve_options o{};
   o.lambda = -1;
   return o;
 }
