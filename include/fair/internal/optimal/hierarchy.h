@@ -109,6 +109,11 @@ inline std::size_t subdivide(const Level_problem& p, std::vector<Vec2>& c, doubl
     return a + b > 0 ? 2 * std::abs(phi[v]) / (a + b) : 0.0;
   };
   const double ratio = curvature_resolution_ratio, below = curvature_resolution_floor;
+  // Only with a curvature term (beta_0 > 0: the lambda design and the raw weights with a curvature
+  // weight): the derivative energies alone make kappa smooth by themselves, and their Newton levels
+  // (k = 4: condition ~ n^10) gain nothing from the extra vertices.
+  bool curvature_term = false;
+  for (double b0 : p.f.curvature_weight) curvature_term = curvature_term || b0 > 0;
   for (std::size_t j = 0; j < edges; ++j) {
     const double l = length[j];
     const double e = std::max(edge_error(l, phi[j]), edge_error(l, phi[(j + 1) % n]));
@@ -118,7 +123,7 @@ inline std::size_t subdivide(const Level_problem& p, std::vector<Vec2>& c, doubl
     // q ~ 10^4), which the sagitta test above accepts; the spline through such a polygon must make
     // the spike with a C2 cubic and rings (two inflections around every point). An edge whose
     // end curvatures differ by more than `ratio` is split while its sagitta is above eps_max / below.
-    if (!resolve && four_point && ratio > 0 && e > eps_max / below) {
+    if (!resolve && curvature_term && e > eps_max / below) {
       const double k0 = curvature_at(j), k1 = curvature_at((j + 1) % n);
       resolve = std::max(k0, k1) > ratio * std::min(k0, k1);
     }
