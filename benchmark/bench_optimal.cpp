@@ -56,6 +56,7 @@ void hierarchy(benchmark::State& state) {
   fair::Optimal_curve_options o;
   o.closed = true;
   o.resolution = static_cast<double>(state.range(0)) * 1e6;
+  o.lambda = -1;  // the raw weights of eq. 5
   o.curvature_weight = 0.01;
   std::size_t vertices = 0, levels = 0;
   for (auto _ : state) {

@@ -47,6 +47,7 @@ BENCHMARK(BM_occt_batten)->Unit(benchmark::kMillisecond);
 // The same batten: beta = 0, beta_0 = 1, the tangents (cos a, +-sin a), rho = 500 and 1000.
 void BM_optimal_batten(benchmark::State& state) {
   fair::Optimal_curve_options o;
+  o.lambda = -1;  // the raw weights of eq. 5
   o.length_weight = 0;
   o.curvature_weight = 1;
   o.resolution = static_cast<double>(state.range(0));

@@ -71,18 +71,16 @@ public:
     curvatures_ = std::move(r.curvatures);
     report_ = std::move(r.report);
     try {
-      spline_ = fit_cubic_spline_runs<K>(polygon_, options_.closed, corner_vertices());
+      fit_spline();
     } catch (const Invalid_input_error&) {
       // A failed solve may stop on a collapsed free edge (solver.h: CAPPED below 1e-12 of the
       // extent) that the mapping back (hierarchy.h) rounds to a zero chord, which the fit refuses.
       // Without throw_on_failure a failed solve does not throw (doc/concepts.md): the curve keeps
       // its polygon, without spline() and pieces(); status() says why.
       if (report_.status == Optimal_curve_status::CONVERGED) throw;
+      spline_ = Spline{{}, {}, 0.0};
+      pieces_.clear();
       return;
-    }
-    for (const Cubic_spline_2<K>& run : spline_.splines) {
-      std::vector<Piece> q = run.polynomial_pieces();
-      pieces_.insert(pieces_.end(), q.begin(), q.end());
     }
   }
 
@@ -104,7 +102,10 @@ public:
     return v;
   }
   /// The C2 cubic spline through every polygon vertex (chordal breakpoints; C2 runs between the
-  /// corners, G0 at them; spline().max_distance: its distance to the polygon).
+  /// corners, G0 at them; spline().max_distance: its distance to the polygon):
+  /// fit_cubic_spline_runs(polygon(), is_closed(), corner_vertices()). It keeps the curve's shape
+  /// because the hierarchy resolves the curvature profile, not only the sagitta (hierarchy.h,
+  /// issue 25 §3).
   const Spline& spline() const { return spline_; }
   /// The cubic pieces of spline(), run after run: one per polygon edge.
   const std::vector<Piece>& pieces() const { return pieces_; }
@@ -129,6 +130,16 @@ public:
   double energy() const { return report_.energy; }
 
 private:
+  /// spline_ and pieces_: the C2 cubic through every vertex, run by run between the corners.
+  void fit_spline() {
+    spline_ = fit_cubic_spline_runs<K>(polygon_, options_.closed, corner_vertices());
+    pieces_.clear();
+    for (const Cubic_spline_2<K>& run : spline_.splines) {
+      std::vector<Piece> q = run.polynomial_pieces();
+      pieces_.insert(pieces_.end(), q.begin(), q.end());
+    }
+  }
+
   std::vector<Point_2> points_;
   Optimal_curve_options options_;
   std::vector<Point_2> polygon_;

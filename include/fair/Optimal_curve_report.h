@@ -40,10 +40,21 @@ struct Optimal_curve_report {
   std::size_t iterations = 0;
   double gradient_norm = 0;
   std::vector<Optimal_curve_level> levels;
+  /// How far the curve swings out of its data (issue 25 §2; internal/optimal/shape_check.h): the
+  /// largest distance of a polygon vertex from the centroid of the input points over the largest
+  /// distance of an input point from it (>= 1; a balloon 4 times the data's size: ~4). JSON
+  /// "extent_ratio".
+  double extent_ratio = 1;
+  /// Certified self-intersections (pairs of non-adjacent edges that meet, exact predicates on the
+  /// double coordinates) of the optimal polygon (JSON "self_intersections") and of the input
+  /// polygon (JSON "input_self_intersections"): a curve with more crossings than its input makes
+  /// loops the data do not force.
+  std::size_t self_intersections = 0, input_self_intersections = 0;
   /// Member by member (the report a Solve_error carries equals the curve's report()).
   friend bool operator==(const Optimal_curve_report& a, const Optimal_curve_report& b) {
     return a.status == b.status && a.energy == b.energy && a.iterations == b.iterations &&
-           a.gradient_norm == b.gradient_norm && a.levels == b.levels;
+           a.gradient_norm == b.gradient_norm && a.levels == b.levels && a.extent_ratio == b.extent_ratio &&
+           a.self_intersections == b.self_intersections && a.input_self_intersections == b.input_self_intersections;
   }
   friend bool operator!=(const Optimal_curve_report& a, const Optimal_curve_report& b) { return !(a == b); }
 };
@@ -66,12 +77,13 @@ inline std::ostream& operator<<(std::ostream& out, const Optimal_curve_level& l)
 }
 
 /// One line: "Optimal_curve_report{converged, energy 12.5, iterations 31, gradient 1e-09,
-/// 6 levels, last level{...}}".
+/// 6 levels, last level{...}, extent ratio 1.02, self-intersections 0 (input 0)}".
 inline std::ostream& operator<<(std::ostream& out, const Optimal_curve_report& r) {
   out << "Optimal_curve_report{" << r.status << ", energy " << r.energy << ", iterations " << r.iterations
       << ", gradient " << r.gradient_norm << ", " << r.levels.size() << (r.levels.size() == 1 ? " level" : " levels");
   if (!r.levels.empty()) out << ", last " << r.levels.back();
-  return out << "}";
+  return out << ", extent ratio " << r.extent_ratio << ", self-intersections " << r.self_intersections << " (input "
+             << r.input_self_intersections << ")}";
 }
 
 } // namespace fair

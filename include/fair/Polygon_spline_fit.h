@@ -48,11 +48,39 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <utility>
 #include <vector>
 
 namespace fair {
+
+namespace internal {
+namespace spline {
+/// A power of two near the extent of p (the largest coordinate difference from p[0]), so that the
+/// fits compute on p / scale, of extent ~1: chord lengths, their squares and the fifth powers of
+/// the quintic's system neither overflow nor underflow (issue 29 #6, #7, #20: at 1e80 the
+/// quintic's system was "not positive definite", at 1e-160 the cubic failed its own C2 check, at
+/// 1e155 a control point became NaN). Division by a power of two is exact (no subnormal results:
+/// the scale is at most the extent), so the breakpoints and control points are those of p times
+/// 1/scale exactly, scaled back exactly. 1 when p has no extent or scaling would overflow.
+inline double fit_scale(const std::vector<optimal::Vec2>& p) {
+  double e = 0, a = 0;
+  for (const optimal::Vec2& q : p)
+    for (int k = 0; k < 2; ++k) {
+      e = std::max(e, std::abs(q[k] - p[0][k]));
+      a = std::max(a, std::abs(q[k]));
+    }
+  if (!(e > 0) || !std::isfinite(e)) return 1;
+  const double scale = std::ldexp(1.0, std::ilogb(e));
+  return a / scale < 1e300 ? scale : 1;
+}
+inline std::vector<optimal::Vec2> scaled(std::vector<optimal::Vec2> p, double factor) {
+  for (optimal::Vec2& q : p) q = {{q[0] * factor, q[1] * factor}};
+  return p;
+}
+}  // namespace spline
+}  // namespace internal
 
 /// A C2 cubic spline through every vertex and its measured distance to the polygon.
 template <class K>
@@ -80,7 +108,9 @@ Polygon_spline_fit<K> fit_cubic_spline(const std::vector<typename K::Point_2>& p
   using namespace internal::spline;
   typedef typename K::FT FT;
   const char* fn = "fair::fit_cubic_spline";
-  const std::vector<Vec2> p = polygon_to_double<K>(polygon, closed, fn);
+  const std::vector<Vec2> raw = polygon_to_double<K>(polygon, closed, fn);
+  const double scale = fit_scale(raw);  // computed on raw / scale, mapped back exactly
+  const std::vector<Vec2> p = scaled(raw, 1 / scale);
   std::vector<double> t;
   std::vector<Vec2> control;
   // Closed: the periodic interpolant's control points directly (internal/spline/polygon_fit.h),
@@ -103,13 +133,13 @@ Polygon_spline_fit<K> fit_cubic_spline(const std::vector<typename K::Point_2>& p
     control.clear();
     for (const Kd::Point_2& d : c.spline().control_points()) control.push_back(Vec2{{d.x(), d.y()}});
   }
-  const double distance = internal::optimal::max_chord_distance(bezier_pieces(t, control, closed));
+  const double distance = scale * internal::optimal::max_chord_distance(bezier_pieces(t, control, closed));
   std::vector<FT> breakpoints;
   breakpoints.reserve(t.size());
-  for (double x : t) breakpoints.push_back(FT(x));
+  for (double x : t) breakpoints.push_back(FT(x * scale));
   std::vector<typename K::Point_2> points;
   points.reserve(control.size());
-  for (const Vec2& v : control) points.push_back(to_point<K>(v));
+  for (const Vec2& v : control) points.push_back(to_point<K>(Vec2{{v[0] * scale, v[1] * scale}}));
   Cubic_spline_2<K> spline(std::move(breakpoints), std::move(points), closed);
   spline.check_finite_pieces(fn);
   return Polygon_spline_fit<K>{std::move(spline), distance};
@@ -198,12 +228,16 @@ Polygon_quintic_fit<K> fit_quintic_spline(const std::vector<typename K::Point_2>
   using internal::spline::polygon_to_double;
   using internal::spline::to_point;
   const char* fn = "fair::fit_quintic_spline";
-  const std::vector<Vec2> p = polygon_to_double<K>(polygon, closed, fn);
+  const std::vector<Vec2> raw = polygon_to_double<K>(polygon, closed, fn);
+  const double scale = internal::spline::fit_scale(raw);  // as in fit_cubic_spline
+  const std::vector<Vec2> p = internal::spline::scaled(raw, 1 / scale);
   const std::vector<double> t = chord_breakpoints(p, closed, fn);
   std::vector<Vec2> m, s;
   quintic_derivatives(p, t, closed, m, s);
-  const std::vector<std::array<Vec2, 6>> b = quintic_bezier_pieces(p, t, m, s);
-  Polygon_quintic_fit<K> out{{}, max_chord_distance(b)};
+  std::vector<std::array<Vec2, 6>> b = quintic_bezier_pieces(p, t, m, s);
+  Polygon_quintic_fit<K> out{{}, scale * max_chord_distance(b)};
+  for (std::array<Vec2, 6>& piece : b)
+    for (Vec2& v : piece) v = {{v[0] * scale, v[1] * scale}};
   out.pieces.reserve(b.size());
   const std::size_t n = polygon.size();
   for (std::size_t i = 0; i < b.size(); ++i) {

@@ -35,6 +35,14 @@ typedef fair_test::SC_double K;
 typedef K::Point_2 P;
 const double pi = 3.14159265358979323846;
 
+// The raw weights of eq. 5 (lambda = -1): the oracles below are stated for them. The defaults are
+// the lambda design at fair::default_optimal_lambda (issue 25 §1; test_real_data.cpp).
+Optimal_curve_options raw_weights() {
+  Optimal_curve_options o{};
+  o.lambda = -1;
+  return o;
+}
+
 double polygon_length(const std::vector<P>& c, bool closed) {
   double s = 0;
   const std::size_t e = closed ? c.size() : c.size() - 1;
@@ -82,7 +90,7 @@ TYPED_TEST_SUITE(OptimiserKernels, fair_test::All_kernels);
 TYPED_TEST(OptimiserKernels, InterpolationPointsAreTheInputPoints) {
   typedef typename TypeParam::Point_2 Point;
   const std::vector<Point> p = {Point(0, 0), Point(1, 2), Point(3, 2.5), Point(4, 0)};
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   o.resolution = 100;
   const Optimal_curve_2<TypeParam> c(p, o);
   ASSERT_EQ(c.interpolation_indices().size(), p.size());
@@ -120,7 +128,7 @@ struct Circle_run {
   double error, h, energy;
 };
 Circle_run solve_on_circle(const std::vector<P>& p, double R, double cx, double cy, double rho) {
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   o.closed = true;
   o.resolution = rho;
   const double L0 = polygon_length(p, true);
@@ -173,7 +181,7 @@ TEST(OptimiserOracle, RectangularElastica) {
   double e_error[2], l_error[2];
   const double rho[2] = {2000, 8000};
   for (int t = 0; t < 2; ++t) {
-    Optimal_curve_options o;
+    Optimal_curve_options o = raw_weights();
     o.length_weight = 0;
     o.curvature_weight = 1;
     o.resolution = rho[t];
@@ -203,7 +211,7 @@ TEST(OptimiserOracle, BorderlineElasticaAndItsEulerLagrangeResidual) {
   };
   const double S = 1.2;
   const std::vector<P> p = {point(-S), point(0), point(S)};
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   o.resolution = 2000;
   const double L0 = polygon_length(p, false);
   o.length_weight = 1;
@@ -305,7 +313,7 @@ TEST(OptimiserStructure, CollinearPointsGiveTheSegment) {
 }
 
 TEST(OptimiserStructure, LambdaZeroGivesTheInputPolygon) {
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   o.lambda = 0;
   const Optimal_curve_2<K> c(wave, o);
   EXPECT_EQ(c.report().status, Optimal_curve_status::CONVERGED);
@@ -323,7 +331,7 @@ TEST(OptimiserStructure, RigidMotionsAndScalingCommuteWithTheSolve) {
   };
   std::vector<P> moved;
   for (const P& q : wave) moved.push_back(map(q));
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   o.tolerance = 1e-14;
   o.constraints = {tangent(1, 1, 0.2)};
   Optimal_curve_options om = o;
@@ -338,7 +346,7 @@ TEST(OptimiserStructure, RigidMotionsAndScalingCommuteWithTheSolve) {
 
 TEST(OptimiserStructure, ReversalGivesTheSameCurve) {
   std::vector<P> r(wave.rbegin(), wave.rend());
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   o.tolerance = 1e-14;  // solve to the rounding floor: positions to ~1e-8
   const Optimal_curve_2<K> c(wave, o), d(r, o);
   ASSERT_EQ(c.polygon().size(), d.polygon().size());
@@ -349,7 +357,7 @@ TEST(OptimiserStructure, ReversalGivesTheSameCurve) {
 
 TEST(OptimiserStructure, SymmetricDataGiveASymmetricCurve) {
   const std::vector<P> p = {P(-3, 0), P(-1, 2), P(0, 1), P(1, 2), P(3, 0)};  // mirror x -> -x
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   o.tolerance = 1e-14;
   const Optimal_curve_2<K> c(p, o);
   const std::size_t n = c.polygon().size();
@@ -375,7 +383,7 @@ K::Vector_2 bisector(const std::vector<P>& q, std::size_t j) {
 
 TEST(OptimiserConstraints, SingleNormalHoldsExactlyOnEveryLevel) {
   const std::vector<P> p = {P(0, 0), P(1, 1), P(2, 0), P(3, 1)};
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   Point_constraint n = tangent(1, -1, 1, Point_constraint_kind::NORMAL);  // left normal (-1,1): tangent (1,1)
   o.constraints = {n};
   const Optimal_curve_2<K> full(p, o);
@@ -401,7 +409,7 @@ TEST(OptimiserConstraints, InteriorTangentSweepConvergesAndNeverDiverges) {
   std::size_t converged = 0, total = 0;
   for (std::size_t i = 1; i <= 3; ++i)
     for (int deg = -90; deg <= 90; deg += 15) {
-      Optimal_curve_options o;
+      Optimal_curve_options o = raw_weights();
       const double a = deg * pi / 180;
       o.constraints = {tangent(i, std::cos(a), std::sin(a))};
       const Optimal_curve_2<K> c(wave, o);
@@ -453,7 +461,7 @@ TEST(OptimiserStructure, ExactKernelPointsAreReproducedExactly) {
 
 TEST(OptimiserConstraints, CornerKeepsBothTangentsAndZeroCurvature) {
   const std::vector<P> p = {P(0, 0), P(1, 1), P(2, 0), P(1, -1)};
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   o.closed = true;
   Point_constraint corner = tangent(1, 1, 0, Point_constraint_kind::CORNER);
   corner.outgoing = {{0, -1}};
@@ -474,7 +482,7 @@ TEST(OptimiserConstraints, CornerKeepsBothTangentsAndZeroCurvature) {
 // whose flat side holds the points has int kappa^2 = 2 pi / r for any radius r: no finite
 // minimiser, the curve inflates; reported as DIVERGING, not as converged or capped.
 TEST(OptimiserConstraints, PureBendingThroughCollinearPointsDiverges) {
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   o.closed = true;
   o.length_weight = 0;
   const Optimal_curve_2<K> c({P(0, 0), P(1, 0), P(2, 0)}, o);
@@ -498,7 +506,7 @@ TEST(OptimiserConstraints, PureBendingThroughCollinearPointsDiverges) {
 // A level cap ends CAPPED: reported, or with throw_on_failure thrown with the same report; a
 // CONVERGED solve never throws.
 TEST(OptimiserConstraints, CappedSolveIsReportedOrThrown) {
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   o.max_levels = 1;
   const Optimal_curve_2<K> c(wave, o);
   ASSERT_EQ(c.status(), Optimal_curve_status::CAPPED);
@@ -529,7 +537,7 @@ TEST(OptimiserConstraints, CappedSolveIsReportedOrThrown) {
 // one C2 run between corners; pieces() its cubic pieces, run after run.
 TEST(OptimiserConstraints, SplineIsTheFitOfThePolygonBetweenCorners) {
   for (const bool closed : {false, true}) {
-    Optimal_curve_options o;
+    Optimal_curve_options o = raw_weights();
     o.closed = closed;
     o.resolution = 100;
     Point_constraint corner = tangent(2, 1, 0, Point_constraint_kind::CORNER);
@@ -562,7 +570,7 @@ TEST(OptimiserConstraints, SplineIsTheFitOfThePolygonBetweenCorners) {
 TEST(OptimiserLambda, FamilyHasMonotoneLength) {
   double previous = 0;
   for (int i = 0; i <= 10; ++i) {
-    Optimal_curve_options o;
+    Optimal_curve_options o = raw_weights();
     o.lambda = 0.1 * i;
     o.resolution = 200;
     const Optimal_curve_2<K> c(wave, o);
@@ -577,11 +585,11 @@ TEST(OptimiserLambda, FamilyHasMonotoneLength) {
 // lambda, which is the plain weighted functional; and a larger q pulls the curve towards the
 // polygon (shorter), monotonically.
 TEST(OptimiserLambda, FixedQIsThePlainWeightedFunctional) {
-  Optimal_curve_options fixed;
+  Optimal_curve_options fixed = raw_weights();
   fixed.lambda = 0.25;
   fixed.lambda_length_scale = 400;
   fixed.resolution = 200;
-  Optimal_curve_options plain;
+  Optimal_curve_options plain = raw_weights();
   plain.length_weight = 400 * 0.75;
   plain.curvature_weight = 0.25;
   plain.resolution = 200;
@@ -605,7 +613,7 @@ TEST(OptimiserLambda, FixedQIsThePlainWeightedFunctional) {
 
 TEST(OptimiserLambda, LocalLambdaChangesOnlyNearbySegments) {
   const std::vector<P> p = {P(0, 0), P(1, 1.5), P(2, 0), P(3, 1.5), P(4, 0), P(5, 1.5), P(6, 0), P(7, 1.5)};
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   o.segment_lambda.assign(p.size() - 1, 0.5);
   o.resolution = 200;
   const Optimal_curve_2<K> base(p, o);
@@ -652,7 +660,7 @@ TEST(OptimiserDerivative, FirstDerivativeEnergyMakesKappaPrimeContinuous) {
       hi = std::max(hi, across / beside);
     }
   };
-  Optimal_curve_options o0;
+  Optimal_curve_options o0 = raw_weights();
   o0.resolution = 1000;
   const Optimal_curve_2<K> c0(wave, o0);
   Optimal_curve_options o1 = o0;
@@ -675,7 +683,7 @@ TEST(OptimiserDerivative, FirstDerivativeEnergyMakesKappaPrimeContinuous) {
 TEST(OptimiserDerivative, HigherDerivativeEnergiesConvergeWithScaledLengthTerm) {
   const double L0 = polygon_length(wave, false);
   for (int k = 2; k <= 4; ++k) {
-    Optimal_curve_options o;
+    Optimal_curve_options o = raw_weights();
     o.resolution = 200;
     o.length_weight = 0.03 * std::pow(L0, 2 * k + 2);
     o.curvature_weight = 0;
@@ -687,7 +695,7 @@ TEST(OptimiserDerivative, HigherDerivativeEnergiesConvergeWithScaledLengthTerm) 
 }
 
 TEST(OptimiserSolver, ConjugateGradientReachesNoLowerEnergyAndNeedsMoreSteps) {
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   o.resolution = 200;
   const Optimal_curve_2<K> newton(wave, o);
   o.solver = fair::Optimal_curve_solver::CONJUGATE_GRADIENT;
@@ -718,7 +726,7 @@ void expect_error(const std::vector<P>& p, const Optimal_curve_options& o, const
 }
 
 TEST(OptimiserErrors, BadPointsAndOptions) {
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   expect_error<fair::Invalid_input_error>({P(0, 0)}, o, "at least 2");
   o.closed = true;
   expect_error<fair::Invalid_input_error>({P(0, 0), P(1, 0)}, o, "at least 3");
@@ -750,7 +758,7 @@ TEST(OptimiserErrors, BadPointsAndOptions) {
 }
 
 TEST(OptimiserErrors, BadConstraints) {
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   o.constraints = {tangent(7, 1, 0)};
   expect_error<fair::Invalid_input_error>(wave, o, "point 7 is out of range");
   o.constraints = {tangent(1, 0, 0)};
@@ -810,7 +818,7 @@ Optimal_curve_status check_real_set(const kappa_real::Point_set& s, double lambd
   for (const kappa_real::Xy& q : s.points) p.push_back({{q.x, q.y}});
   std::vector<io::Vec2> reversed(p.rbegin(), p.rend());
   if (s.closed) std::rotate(reversed.begin(), reversed.end() - 1, reversed.end());  // starts at p_0 again
-  Optimal_curve_options o;
+  Optimal_curve_options o = raw_weights();
   o.closed = s.closed;
   o.lambda = lambda;
   const io::Solve_result r = io::solve_optimal_curve(p, o), b = io::solve_optimal_curve(reversed, o);

@@ -72,6 +72,7 @@ TEST(Occt_batten, FreeLengthElasticaMatchesOptimalCurve) {
     }
 
     fair::Optimal_curve_options o;
+    o.lambda = -1;  // the raw weights of eq. 5
     o.length_weight = 0;
     o.curvature_weight = 1;
     o.resolution = rho;

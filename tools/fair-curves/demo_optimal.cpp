@@ -152,6 +152,7 @@ void add_optimal_cases(fair_curves::Gallery& gallery) {
       "(fair::Optimal_curve_2, hierarchical Newton), delivered as the C2 cubic spline through the optimal polygon "
       "(fair::fit_cubic_spline_runs: C2, G0 at corners). The figures of Gumhold's paper, recomputed; see doc/optimal_curves.md.");
   fair::Optimal_curve_options base;
+  base.lambda = -1;  // the paper's figures state their weights: the raw weights of eq. 5 unless lambda is set
 
   fair::Optimal_curve_options normal = base;
   normal.lambda = 0.5;

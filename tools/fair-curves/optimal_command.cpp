@@ -61,6 +61,9 @@ fair::Optimal_curve_options curve_options(const Optimal_command_options& o) {
     throw CLI::ValidationError(!o.lambda.empty() ? "--lambda" : "--lambda-file",
                                "the lambda design sets beta and beta_0 (eq. 10): drop --length-weight/--curvature-weight");
   if (!o.lambda.empty()) options.lambda = ranged_option(o.lambda, "--lambda", 0, 1, "a lambda in [0, 1]");
+  // The defaults are the lambda design at fair::default_optimal_lambda (issue 25 §1); the raw
+  // weights of eq. 5 when one of them is given, or with --lambda-file (segment_lambda).
+  if (!o.length_weight.empty() || !o.curvature_weight.empty() || !o.lambda_file.empty()) options.lambda = -1;
   if (!o.length_weight.empty())
     options.length_weight = ranged_option(o.length_weight, "--length-weight", 0, inf, "a weight >= 0");
   if (!o.curvature_weight.empty())
@@ -81,7 +84,8 @@ fair::Optimal_curve_options curve_options(const Optimal_command_options& o) {
   if (!o.tangents.empty() && !o.normals.empty())
     throw CLI::ValidationError("--tangents", "--tangents and --normals exclude each other (give a normal as a tangent)");
   if (!o.resolution.empty())
-    options.resolution = ranged_option(o.resolution, "--resolution", 1e-300, inf, "a resolution > 0 (pixels)");
+    options.resolution = ranged_option(o.resolution, "--resolution", 1e-300, fair::max_optimal_resolution,
+                                       "a resolution in (0, 1e10] (pixels per extent; the cap: doc/optimal_curves.md)");
   if (!fair::io::try_parse_spelling(o.solver, options.solver))
     throw CLI::ValidationError("--solver", "expected " + fair::io::spellings_list<fair::Optimal_curve_solver>() +
                                                ", got '" + o.solver + "'");
@@ -124,6 +128,13 @@ std::string summary(const Optimal_command_options& o, const fair::Optimal_curve_
     << curve.polygon().size() << " vertices in " << r.levels.size() << " levels, " << r.iterations
     << " iterations, energy " << format_number(r.energy, 10) << ", spline fit within " << format_number(fit_distance, 3)
     << "; " << r.status << "\n";
+  // Never a silent "converged" on a balloon (issue 25 §2): say when the curve swings out of its
+  // data or crosses itself where the input polygon does not.
+  if (r.extent_ratio > 1.5 || r.self_intersections > r.input_self_intersections)
+    s << o.input << ": warning: the curve reaches " << format_number(r.extent_ratio, 3)
+      << " times the extent of its points and has " << r.self_intersections << " self-intersection"
+      << (r.self_intersections == 1 ? "" : "s") << " (the input polygon " << r.input_self_intersections
+      << "): not a fair curve for these data and weights\n";
   return s.str();
 }
 
@@ -172,10 +183,10 @@ void register_optimal_command(CLI::App& app) {
                  "(+ derivative terms) ds on an adaptive polygon, delivered with its C2 cubic spline");
   sub->add_option("input", options->input, "the point file (.csv, .txt or .json)")->required();
   sub->add_flag("--closed", options->closed, "closed curve (also set by JSON \"closed\")");
-  sub->add_option("--lambda", options->lambda, "the trade-off of eq. 10 in [0, 1] (0: the polygon, 1: int kappa^2)");
+  sub->add_option("--lambda", options->lambda, "the trade-off of eq. 10 in [0, 1] (0: the polygon, 1: int kappa^2; default 0.7 unless --length-weight or --curvature-weight is given)");
   sub->add_option("--lambda-file", options->lambda_file, "one lambda_i in [0, 1] per input segment, one a line");
-  sub->add_option("--length-weight", options->length_weight, "beta of eq. 5 (>= 0, default 1)");
-  sub->add_option("--curvature-weight", options->curvature_weight, "beta_0 of eq. 5 (>= 0, default 1)");
+  sub->add_option("--length-weight", options->length_weight, "beta of eq. 5 (>= 0, default 1): the raw weights instead of the lambda design");
+  sub->add_option("--curvature-weight", options->curvature_weight, "beta_0 of eq. 5 (>= 0, default 1): the raw weights instead of the lambda design");
   sub->add_option("--curvature-exponent", options->curvature_exponent, "alpha_0 of eq. 5 (>= 1, default 2)");
   sub->add_option("--derivative-weight", options->derivative_weights,
                   "K:BK[:AK]: the weight beta_K and exponent alpha_K (default 2) of the kappa^(K) term of eq. 5, K in 1..4 (repeatable)");

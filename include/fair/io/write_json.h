@@ -250,7 +250,8 @@ inline nlohmann::json to_json(const Kappa_curve_report& r) {
 
 /// An optimal curve's solve report: {"status": "converged" | "diverging" | "capped", "energy",
 /// "iterations", "gradient_norm", "levels": [{"vertices", "iterations", "energy",
-/// "gradient_norm", "status"}, ...]} (one level per polygon of the hierarchy, coarse to fine).
+/// "gradient_norm", "status"}, ...]} (one level per polygon of the hierarchy, coarse to fine),
+/// "extent_ratio", "self_intersections", "input_self_intersections" (issue 25 §2).
 inline nlohmann::json to_json(const Optimal_curve_report& r) {
   nlohmann::json levels = nlohmann::json::array();
   for (const Optimal_curve_level& l : r.levels)
@@ -260,7 +261,10 @@ inline nlohmann::json to_json(const Optimal_curve_report& r) {
                         {"energy", r.energy},
                         {"iterations", r.iterations},
                         {"gradient_norm", r.gradient_norm},
-                        {"levels", std::move(levels)}};
+                        {"levels", std::move(levels)},
+                        {"extent_ratio", r.extent_ratio},
+                        {"self_intersections", r.self_intersections},
+                        {"input_self_intersections", r.input_self_intersections}};
 }
 
 /// A Cardinal spline's report: {"status": "optimal" | "given_alpha" | "no_optimum", "alpha" (the

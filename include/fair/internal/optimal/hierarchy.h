@@ -18,6 +18,7 @@
 #include <fair/Optimal_curve_options.h>
 #include <fair/Optimal_curve_report.h>
 #include <fair/internal/optimal/constraints.h>
+#include <fair/internal/optimal/fair_reference.h>
 #include <fair/internal/optimal/functional.h>
 #include <fair/internal/optimal/lambda.h>
 #include <fair/internal/optimal/solver.h>
@@ -39,6 +40,7 @@ struct Solve_result {
   Optimal_curve_report report{Status::CAPPED, 0, 0, 0, {}};
   std::vector<double> eta;  // per segment, when the lambda design ran (eq. 11)
   bool eta_reference_guarded = false;  // lambda = 1 diverged: eta from the lambda = 0.99 curve
+  bool eta_from_spline = false;  // the lambda = 1 (0.99) curve was not fair: eta from the C2 spline (fair_reference.h)
 };
 
 /// The extent that rho refers to: twice the largest distance of a vertex from the vertices'
@@ -71,6 +73,10 @@ inline std::vector<double> turning_angles(const std::vector<Vec2>& c, bool close
 /// approximates (file comment).
 inline double edge_error(double l, double phi) { return 0.5 * l * std::tan(0.25 * std::abs(phi)); }
 
+/// The curvature-profile refinement of subdivide (issue 25 §3): an edge whose end curvatures differ
+/// by more than this factor is split while its sagitta exceeds eps_max / curvature_resolution_floor.
+constexpr double curvature_resolution_ratio = 2, curvature_resolution_floor = 8;
+
 /// Splits the edges whose error exceeds eps_max at their midpoints; updates the interpolation
 /// indices and the constraint vertices. Returns the number of edges split.
 inline std::size_t subdivide(const Level_problem& p, std::vector<Vec2>& c, double eps_max,
@@ -95,9 +101,33 @@ inline std::size_t subdivide(const Level_problem& p, std::vector<Vec2>& c, doubl
   const std::vector<double> phi = p.ghosts() ? p.strip(turning_angles(p.extend(c), closed), n) : turning_angles(c, closed);
   std::vector<unsigned char> split(edges, 0);
   std::size_t count = 0;
+  std::vector<double> length(edges);
+  for (std::size_t j = 0; j < edges; ++j) length[j] = vec::norm(vec::sub(c[(j + 1) % n], c[j]));
+  // The discrete curvature |phi_v| / (mean length of the edges at v) (0 at open ends).
+  auto curvature_at = [&](std::size_t v) {
+    const double a = closed || v > 0 ? length[(v + edges - 1) % edges] : 0, b = closed || v < edges ? length[v % edges] : 0;
+    return a + b > 0 ? 2 * std::abs(phi[v]) / (a + b) : 0.0;
+  };
+  const double ratio = curvature_resolution_ratio, below = curvature_resolution_floor;
+  // Only with a curvature term (beta_0 > 0: the lambda design and the raw weights with a curvature
+  // weight): the derivative energies alone make kappa smooth by themselves, and their Newton levels
+  // (k = 4: condition ~ n^10) gain nothing from the extra vertices.
+  bool curvature_term = false;
+  for (double b0 : p.f.curvature_weight) curvature_term = curvature_term || b0 > 0;
   for (std::size_t j = 0; j < edges; ++j) {
-    const double l = vec::norm(vec::sub(c[(j + 1) % n], c[j]));
-    if (std::max(edge_error(l, phi[j]), edge_error(l, phi[(j + 1) % n])) > eps_max) { split[j] = 1; ++count; }
+    const double l = length[j];
+    const double e = std::max(edge_error(l, phi[j]), edge_error(l, phi[(j + 1) % n]));
+    bool resolve = e > eps_max;
+    // The curvature profile resolved too (issue 25 §3): at lambda < 1 the curvature of the
+    // minimiser peaks at the input points and decays over L0 / sqrt(q) (a fraction of an edge at
+    // q ~ 10^4), which the sagitta test above accepts; the spline through such a polygon must make
+    // the spike with a C2 cubic and rings (two inflections around every point). An edge whose
+    // end curvatures differ by more than `ratio` is split while its sagitta is above eps_max / below.
+    if (!resolve && curvature_term && e > eps_max / below) {
+      const double k0 = curvature_at(j), k1 = curvature_at((j + 1) % n);
+      resolve = std::max(k0, k1) > ratio * std::min(k0, k1);
+    }
+    if (resolve) { split[j] = 1; ++count; }
   }
   if (count == 0) return 0;
   std::vector<Vec2> d;
@@ -183,6 +213,8 @@ inline void check_solve_input(const std::vector<Vec2>& p, const Optimal_curve_op
   require(lambda_design || derivative || o.length_weight > 0 || o.curvature_weight > 0, fn,
           ": every weight is zero (length_weight = curvature_weight = 0, no derivative_weight): F = 0 has no minimiser");
   require(std::isfinite(o.resolution) && o.resolution > 0, fn, ": resolution = ", o.resolution, " must be > 0");
+  require(o.resolution <= max_optimal_resolution, fn, ": resolution = ", o.resolution, " exceeds the cap ",
+          max_optimal_resolution, " (fair::max_optimal_resolution; doc/optimal_curves.md)");
   require(std::isfinite(o.tolerance) && o.tolerance > 0, fn, ": tolerance = ", o.tolerance, " must be > 0");
   require(o.max_vertices >= 1, fn, ": max_vertices = ", o.max_vertices, " must be >= 1");
   require(o.max_levels >= 1 && o.max_iterations_per_level >= 1, fn, ": max_levels = ", o.max_levels,
@@ -238,6 +270,11 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
     r.report.gradient_norm = out.gradient_norm;
     overall = worse(overall, out.status);
     if (out.status == Status::DIVERGING) break;
+    // A Newton level that hit its iteration cap makes the solve CAPPED whatever follows; refining
+    // it further only multiplies the work (issue 29 #19: 100 random points with a kappa' term took
+    // 10.6 s through capped levels of thousands of vertices). Stop there (the paper's CG, kept for
+    // comparison, runs its levels to the end).
+    if (out.status == Status::CAPPED && !s.conjugate_gradient) break;
     std::vector<Vec2> d = c;
     std::vector<std::size_t> interpolation = r.interpolation_indices;
     std::vector<Placed_constraint> moved = placed;
@@ -272,14 +309,21 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
   for (const Vec2& p : points) { cx += p[0] / static_cast<double>(points.size()); cy += p[1] / static_cast<double>(points.size()); }
   double r = 0;
   for (const Vec2& p : points) r = std::max(r, std::max(std::abs(p[0] - cx), std::abs(p[1] - cy)));
-  if (!(r > 0 && std::isfinite(r) && std::isfinite(cx) && std::isfinite(cy))) return solve_normalised(points, o);
+  // What a designer must know about the shape (issue 25 §2, shape_check.h), on the polygon returned.
+  auto with_shape = [&](Solve_result res) {
+    res.report.extent_ratio = extent_ratio(res.polygon, points);
+    res.report.self_intersections = count_self_intersections(res.polygon, o.closed);
+    res.report.input_self_intersections = count_self_intersections(points, o.closed);
+    return res;
+  };
+  if (!(r > 0 && std::isfinite(r) && std::isfinite(cx) && std::isfinite(cy))) return with_shape(solve_normalised(points, o));
   const double scale = std::ldexp(1.0, std::ilogb(r));  // exact: a power of two
   std::vector<Vec2> q(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) q[i] = {{(points[i][0] - cx) / scale, (points[i][1] - cy) / scale}};
   for (std::size_t i = 0; i + 1 < q.size() || (o.closed && i < q.size()); ++i) {
     const Vec2& a = q[i];
     const Vec2& b = q[(i + 1) % q.size()];
-    if (a[0] == b[0] && a[1] == b[1]) return solve_normalised(points, o);  // distinct only before rounding: solve as given
+    if (a[0] == b[0] && a[1] == b[1]) return with_shape(solve_normalised(points, o));  // distinct only before rounding: solve as given
   }
   Solve_result res = solve_normalised(q, o);
   for (Vec2& v : res.polygon) v = {{v[0] * scale + cx, v[1] * scale + cy}};
@@ -287,7 +331,7 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
   for (double& k : res.curvatures) k /= scale;
   res.report.energy *= scale;
   for (Optimal_curve_level& l : res.report.levels) l.energy *= scale;
-  return res;
+  return with_shape(std::move(res));
 }
 
 /// solve_optimal_curve after its checks and normalisation: the lambda design (eqs. 10-12) and the
@@ -324,13 +368,22 @@ inline Solve_result solve_normalised(const std::vector<Vec2>& points, const Opti
     reference = solve_normalised(points, ref);
     guarded = true;
   }
+  // eta from a fair reference only (fair_reference.h): the lambda = 1 curve when it is fair,
+  // else the C2 spline through the points.
+  const bool fair_reference = reference.report.status != Status::DIVERGING &&
+                              is_fair_shape(reference.polygon, o.closed, points, count_self_intersections(points, o.closed));
+  const std::vector<double> spline_lengths = fair_reference ? std::vector<double>() : spline_segment_lengths(points, o.closed);
   std::vector<double> eta(segments);
   for (std::size_t i = 0; i < segments; ++i) {
-    const std::size_t a = reference.interpolation_indices[i];
-    const std::size_t b = i + 1 < m ? reference.interpolation_indices[i + 1] : reference.polygon.size();
     double length = 0;
-    for (std::size_t v = a; v < b; ++v)
-      length += vec::norm(vec::sub(reference.polygon[(v + 1) % reference.polygon.size()], reference.polygon[v]));
+    if (fair_reference) {
+      const std::size_t a = reference.interpolation_indices[i];
+      const std::size_t b = i + 1 < m ? reference.interpolation_indices[i + 1] : reference.polygon.size();
+      for (std::size_t v = a; v < b; ++v)
+        length += vec::norm(vec::sub(reference.polygon[(v + 1) % reference.polygon.size()], reference.polygon[v]));
+    } else {
+      length = spline_lengths[i];
+    }
     const double chord = vec::norm(vec::sub(points[(i + 1) % m], points[i]));
     eta[i] = std::min(1.0, chord / length);
   }
@@ -340,9 +393,11 @@ inline Solve_result solve_normalised(const std::vector<Vec2>& points, const Opti
   });
   r.eta = eta;
   r.eta_reference_guarded = guarded;
+  r.eta_from_spline = !fair_reference;
   // eta is only as good as the reference curve it was measured on: a reference that did not
   // converge (after the guard) makes the whole solve no better than it (reviewer finding 8).
-  r.report.status = worse(r.report.status, reference.report.status);
+  // A reference replaced by the spline (not fair) does not count.
+  if (fair_reference) r.report.status = worse(r.report.status, reference.report.status);
   return r;
 }
 
