@@ -163,6 +163,20 @@ Svg_numbers svg_numbers(const std::string& svg) {
       out.ys.push_back(std::stod(pair.substr(comma + 1)));
     }
   }
+  // the comb's teeth: one path per comb and kind, "M x,y L x,y ..."
+  const std::regex path_d(" d=\"([^\"]*)\"");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), path_d); it != std::sregex_iterator(); ++it) {
+    std::string d = (*it)[1].str();
+    std::replace(d.begin(), d.end(), 'M', ' ');
+    std::replace(d.begin(), d.end(), 'L', ' ');
+    std::istringstream in(d);
+    std::string pair;
+    while (in >> pair) {
+      const std::size_t comma = pair.find(',');
+      out.xs.push_back(std::stod(pair.substr(0, comma)));
+      out.ys.push_back(std::stod(pair.substr(comma + 1)));
+    }
+  }
   const std::regex attr("\\b(cx|x|x1|x2|cy|y|y1|y2)=\"(-?[0-9.]+)\"");
   for (auto it = std::sregex_iterator(svg.begin(), svg.end(), attr); it != std::sregex_iterator(); ++it) {
     const std::string name = (*it)[1].str();
@@ -212,10 +226,15 @@ TEST(Svg, FigureIsFiniteInsideItsViewBoxAndEscaped) {
   expect_clean_svg(svg);
   EXPECT_NE(svg.find("parabola &lt;&amp;&gt;"), std::string::npos);
   EXPECT_EQ(svg.find("<&>"), std::string::npos);
-  // The curve of 25 samples, the control polygon, 25 teeth and one comb envelope.
-  const std::regex polyline("<polyline");
-  EXPECT_EQ(std::distance(std::sregex_iterator(svg.begin(), svg.end(), polyline), std::sregex_iterator()),
-            1 + 1 + 25 + 1);
+  // The curve of 25 samples, the control polygon and one comb envelope as polylines; the 25
+  // teeth as one path of 25 "M base L tip" (issue 29 #21: one element per comb, not per tooth),
+  // none clipped (the parabola's curvature ranges over a factor 5.2, its 95th percentile is
+  // within 1.1 of the largest).
+  const std::regex polyline("<polyline"), path("<path "), move("M[0-9.]+,[0-9.]+L");
+  EXPECT_EQ(std::distance(std::sregex_iterator(svg.begin(), svg.end(), polyline), std::sregex_iterator()), 1 + 1 + 1);
+  EXPECT_EQ(std::distance(std::sregex_iterator(svg.begin(), svg.end(), path), std::sregex_iterator()), 1);
+  EXPECT_EQ(std::distance(std::sregex_iterator(svg.begin(), svg.end(), move), std::sregex_iterator()), 25);
+  EXPECT_EQ(svg.find("#c0392b"), std::string::npos);  // no clipped tooth, no red mark
 }
 
 TEST(Svg, ScaleInvariantAndRobustToHugeAndTinyCoordinates) {
@@ -249,17 +268,55 @@ TEST(Svg, RefusesNonFiniteInput) {
   EXPECT_NE(fair::io::Svg_figure().str().find("</svg>"), std::string::npos);
 }
 
-TEST(Svg, CombScaleIsChosenFromTheLargestCurvature) {
+TEST(Svg, CombScaleIsChosenFromThe95thPercentileOfCurvature) {
   typedef SC_double K;
   const std::vector<fair::Bezier_2<K>> curve = {unit_parabola<K>()};
   const fair::Sampled_curve s = fair::sample_curve(curve, 16);
+  // Bounding box [-1,1] x [0,1]: diagonal sqrt(5). The reference curvature is the 95th
+  // percentile of |kappa| over the 17 samples, the sample of rank floor(0.95 * 16) = 15 of the
+  // sorted magnitudes (an independent sort, not nth_element), drawn as 0.1 of the diagonal.
+  std::vector<double> k;
+  for (const fair::Curve_sample& x : s.samples) k.push_back(std::abs(x.curvature));
+  std::sort(k.begin(), k.end());
+  ASSERT_LT(k[15], k[16]);  // below the maximum 2 at the vertex
   fair::io::Svg_figure f;
-  // Bounding box [-1,1] x [0,1]: diagonal sqrt(5); kappa max = 2 at the vertex.
-  EXPECT_NEAR(f.add_curvature_comb(s), 0.15 * std::sqrt(5.0) / 2, 1e-15);
+  EXPECT_NEAR(f.add_curvature_comb(s), 0.1 * std::sqrt(5.0) / k[15], 1e-15);
   EXPECT_EQ(f.add_curvature_comb(s, 0.25), 0.25);  // an explicit scale is kept
   const std::vector<fair::Bezier_2<K>> line = {
       fair::Bezier_2<K>(std::vector<K::Point_2>{K::Point_2(0, 0), K::Point_2(1, 1)})};
   EXPECT_EQ(f.add_curvature_comb(fair::sample_curve(line, 4)), 0.0);  // straight: no comb
+}
+
+// Issue 25 §5: one curvature spike among 99 samples of curvature 1 does not shrink the comb; its
+// tooth is clipped at twice the reference length and marked (red path, red dot at the tip).
+TEST(Svg, CombClipsAndMarksTheTeethOfCurvatureSpikes) {
+  fair::Sampled_curve s;
+  for (int i = 0; i <= 100; ++i) {
+    fair::Curve_sample x;
+    x.x = i, x.y = 0, x.nx = 0, x.ny = 1, x.t = i / 100.0, x.arc_length = i;
+    x.curvature = i == 50 ? -1000 : 1;
+    s.samples.push_back(x);
+  }
+  s.piece_start = {0, 100};
+  fair::io::Svg_figure f;
+  // Diagonal 100 (the samples' box is the segment [0,100] x {0}): the tooth of kappa = 1 is 10 long.
+  const double scale = f.add_curvature_comb(s);
+  EXPECT_NEAR(scale, 10.0, 1e-12);
+  EXPECT_EQ(f.clipped_teeth(), 1u);
+  const std::string svg = f.str();
+  expect_clean_svg(svg);
+  const std::regex red_path("<path fill=\"none\" stroke=\"#c0392b\""), red_dot("<circle[^>]*fill=\"#c0392b\"");
+  EXPECT_EQ(std::distance(std::sregex_iterator(svg.begin(), svg.end(), red_path), std::sregex_iterator()), 1);
+  EXPECT_EQ(std::distance(std::sregex_iterator(svg.begin(), svg.end(), red_dot), std::sregex_iterator()), 1);
+  // The figure's box holds the clipped tip at y = +20 (kappa < 0: the tooth points along +n) and
+  // the other tips at y = -10, not the unclipped 10000: the curve fills the picture's width, and
+  // its height is the aspect ratio of a 100 x 30 box, at least 0.35 of the width.
+  const Svg_numbers n = svg_numbers(svg);
+  EXPECT_NEAR(n.height, std::round(720 * 0.35), 1);
+  // An explicit scale clips too: kappa = 1 at scale 25 is 25 long, beyond 2 * 10 = 20: all clipped.
+  fair::io::Svg_figure g;
+  EXPECT_EQ(g.add_curvature_comb(s, 25.0), 25.0);
+  EXPECT_EQ(g.clipped_teeth(), 101u);
 }
 
 TEST(Svg, CurvaturePlotHasOnePolylinePerPieceAndJoinMarks) {

@@ -178,9 +178,9 @@ void run_cardinal_in(const Cardinal_options& o) {
     c.title = o.input + ": Cardinal spline, alpha = " + fair_curves::format_number(CGAL::to_double(r.curve->alpha()), 6);
     c.title_in_figure = true;
     c.input_points = fair::io::to_xy(r.data.points);
-    const fair_curves::Curve_figures f = fair_curves::make_curve_figures(r.curve->pieces(), c);
-    svg_text = f.curve_svg;
-    plot_text = f.curvature_svg;
+    fair_curves::Curve_figures f = fair_curves::make_curve_figures(r.curve->pieces(), c);
+    svg_text = std::move(f.curve_svg);
+    plot_text = std::move(f.curvature_svg);
   }
   fair_curves::write_outputs(cardinal_report(r, o), o.json_out, json_text, {{o.svg_out, svg_text}, {o.plot_out, plot_text}});
   if (r.curve->status() == fair::Cardinal_spline_status::NO_OPTIMUM) {

@@ -16,6 +16,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -62,12 +63,12 @@ void run_csr(const Csr_command_options& o) {
     json_text = s.str();
   }
   if (!o.svg_out.empty() || !o.plot_out.empty()) {
-    const fair_curves::Curve_figures f = fair_curves::csr_figures(
+    fair_curves::Curve_figures f = fair_curves::csr_figures(
         csr, o.input + ": csr-spline, " + fair::to_string(spacing) + " knots, max distance to samples " +
                  fair_curves::format_number(max_distance, 3),
         true);
-    svg_text = f.curve_svg;
-    plot_text = f.curvature_svg;
+    svg_text = std::move(f.curve_svg);
+    plot_text = std::move(f.curvature_svg);
   }
   std::ostringstream report;
   report << "csr: " << data.points.size() << " samples, " << (closed ? "closed" : "open") << ", " << pieces.size()

@@ -19,10 +19,11 @@ namespace fair_curves {
 
 template <class K>
 Curve_figures csr_figures(const fair::Csr_spline_2<K>& csr, const std::string& title, bool title_in_figure) {
-  Curve_case c;
-  c.title = title;
-  c.control_polygons = false;
-  Curve_figures f = make_curve_figures(csr.pieces(), c);
+  // Sampled once here (not through make_curve_figures, whose own curve figure would be drawn and
+  // thrown away: issue 29 #21, the memory of --svg).
+  Curve_figures f;
+  f.sampled = fair::sample_curve(csr.pieces(), Curve_case().samples_per_piece);
+  f.curvature_svg = fair::io::curvature_plot_svg(f.sampled);
   fair::io::Svg_figure figure;
   if (title_in_figure) figure.set_title(title);
   std::vector<fair::io::Xy> polygon = fair::io::to_xy(csr.spline().control_points());

@@ -40,8 +40,9 @@ void run_demo(const Demo_options& o) {
   fair_curves::Gallery gallery(
       "fair: demo gallery",
       "Fair interpolating planar curves, computed by the fair library. Each case shows the curve with its control "
-      "polygons (grey, dashed), its curvature comb (orange, teeth pointing away from the centre of curvature), the "
-      "input points (black) and marked points (red), then its signed curvature against arc length (piece joins "
+      "polygons (grey, dashed), its curvature comb (orange, teeth pointing away from the centre of curvature; the "
+      "95th percentile of |curvature| drawn as a tenth of the figure's diagonal, a tooth longer than twice that "
+      "clipped and marked red with a dot), the input points (black) and marked points (red), then its signed curvature against arc length (piece joins "
       "dashed), and a table of measured figures.");
   // A failing method must not take the whole gallery down: its error is shown in the page and
   // on stderr, the other sections are written, and the exit code is 1.

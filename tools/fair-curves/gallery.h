@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // fair_curves::Gallery (the page of `fair-curves demo`): an HTML page (index.html) of curve figures, in sections, one <figure>
-// per case with its SVG images, a caption and a table of measured figures (name / value).
+// per case with its SVG images, a caption, a table of measured figures (name / value) and,
+// optionally, a table of several columns (one row per method, say).
 // The SVG images are written next to index.html (DIR/figures/<case>-<k>.svg) and linked, or
 // inlined into the page. The page is self-contained: no scripts, no external style sheets.
 
@@ -28,6 +29,9 @@ struct Gallery_case {
   std::vector<std::pair<std::string, std::string>> images;
   /// The measured figures: (name, value) rows of the case's table.
   std::vector<std::pair<std::string, std::string>> measurements;
+  /// A table of several columns (e.g. one row per method): the first row is the header; empty:
+  /// none. Shown after the measurements.
+  std::vector<std::vector<std::string>> table;
 };
 
 class Gallery {
@@ -105,6 +109,16 @@ public:
           for (const auto& m : c.measurements)
             out += "<tr><td>" + xml_escape(m.first) + "</td><td class=\"value\">" +
                    xml_escape(m.second) + "</td></tr>\n";
+          out += "</table>\n";
+        }
+        if (!c.table.empty()) {
+          out += "<table>\n";
+          for (std::size_t r = 0; r < c.table.size(); ++r) {
+            out += "<tr>";
+            for (const std::string& cell : c.table[r])
+              out += (r == 0 ? "<th>" : "<td class=\"value\">") + xml_escape(cell) + (r == 0 ? "</th>" : "</td>");
+            out += "</tr>\n";
+          }
           out += "</table>\n";
         }
         out += "</figure>\n";
