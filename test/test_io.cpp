@@ -568,7 +568,7 @@ TEST(IoCurveJson, EveryMalformedCurveGivesParseErrorAtItsLine) {
 }
 
 // family_to_json writes what each family has, through the one writer of pieces: a curve with a
-// report and a B-spline (as optimal curves and csr-splines have) gets "status", "report" and
+// report and a NURBS (nurbs(), as every family has) gets "status", "report" and
 // "bspline" beside "method", "closed", "points" and "pieces".
 struct Reporting_spline_curve {
   typedef SC_double K;
@@ -579,6 +579,7 @@ struct Reporting_spline_curve {
   std::vector<fair::Bezier_2<K>> pieces() const { return s.polynomial_pieces(); }
   bool is_closed() const { return s.is_closed(); }
   const fair::Cubic_spline_2<K>& spline() const { return s; }
+  fair::Nurbs_curve_2<K> nurbs() const { return s.nurbs(); }
   const fair::Optimal_curve_report& report() const { return r; }
 };
 struct Plain_curve {
@@ -603,7 +604,7 @@ TEST(IoCurveJson, FamilyToJsonWritesWhatTheFamilyHas) {
   EXPECT_EQ(j["points"][1], nlohmann::json::array({5.0, 1.0}));
   EXPECT_EQ(j["status"], "converged");
   EXPECT_EQ(j["report"], fair::io::to_json(c.r));
-  EXPECT_EQ(j["bspline"], fair::io::spline_to_json(c.s));
+  EXPECT_EQ(j["bspline"], fair::io::nurbs_to_json(c.s.nurbs()));
   EXPECT_EQ(j["extra"], 1);
   ASSERT_EQ(j["pieces"].size(), 2u);
   EXPECT_EQ(j["pieces"], fair::io::curve_to_json(c.pieces())["pieces"]);

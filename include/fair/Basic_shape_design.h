@@ -25,6 +25,7 @@
 #include <fair/Parametric_curve_spline.h>
 #include <fair/Rational_bezier_2.h>
 #include <fair/Rational_quadratic_bezier_2.h>
+#include <fair/internal/nurbs/assembly.h>
 
 #include <cstddef>
 #include <string>
@@ -134,6 +135,14 @@ public:
   const std::string& kind() const { return kind_; }
   const Point_2& source() const { return parts_.front().control_points().front(); }
   const Point_2& target() const { return parts_.back().control_points().back(); }
+  /// The shape in the exchange form (fair/Nurbs_curve_2.h; doc/nurbs.md): its parts' NURBS joined
+  /// end to start, each keeping its breakpoints (shifted to follow the previous part), knots of
+  /// multiplicity 3 where two parts meet (C0 there: a split circle arc is only G1 in this
+  /// parameter), rational parts' weights scaled by one constant each so that they agree at the
+  /// joins. One part: that part's nurbs(). Exact. O(number of control points).
+  Nurbs_curve_2<K> nurbs() const {
+    return internal::nurbs::spline_runs_nurbs<K>(parts_, false, "Basic_shape_2::nurbs");
+  }
 
 private:
   std::vector<Spline> parts_;
@@ -147,6 +156,9 @@ struct Basic_shape_design_2 {
   std::vector<Shape_join> joins;  ///< in order; for a closed design the closing join is last
   std::vector<Shape_span> spans;  ///< one per part, in order
   double merge_distance = 0;      ///< merge_tolerance * D, the absolute threshold used
+  /// spline.nurbs(): the merged design in the exchange form (degree 3, single interior knots,
+  /// clamped when open, periodic when closed; fair/Nurbs_curve_2.h).
+  Nurbs_curve_2<K> nurbs() const { return spline.nurbs(); }
 };
 
 /// The ONE C^2 spline of the shapes (Fig. 9), open (clamped at the first shape's start and the

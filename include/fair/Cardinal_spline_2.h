@@ -33,6 +33,7 @@
 #include <fair/internal/cardinal/optimum.h>
 #include <fair/internal/classic/common.h>
 #include <fair/internal/common/input_checks.h>
+#include <fair/internal/nurbs/assembly.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/number_utils.h>
@@ -221,6 +222,15 @@ public:
   /// curve on n+1 points, N for a closed one on N points.
   const std::vector<Piece>& pieces() const { return pieces_; }
   std::size_t number_of_pieces() const { return pieces_.size(); }
+  /// The curve in the exchange form (fair/Nurbs_curve_2.h; doc/nurbs.md, "Cardinal_spline_2"):
+  /// degree 3 on the uniform knots 0, 1, ..., n (the parameter of eqs. 1-2: segment i at u = i + t),
+  /// interior knots of multiplicity 2 (the segments are C1 there, not C2). Closed: the periodic
+  /// form. Exactly the pieces in an exact kernel. O(n).
+  Nurbs_curve_2<K> nurbs() const {
+    std::vector<FT> t;
+    for (std::size_t i = 0; i <= pieces_.size(); ++i) t.push_back(FT(static_cast<int>(i)));
+    return internal::nurbs::hermite_cubic_nurbs<K>(pieces_, t, options_.closed, "Cardinal_spline_2::nurbs");
+  }
   bool is_closed() const { return options_.closed; }
   const Cardinal_spline_options& options() const { return options_; }
   /// The alpha used and why, the auxiliary points, the energy of eq. 10.

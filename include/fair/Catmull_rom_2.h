@@ -37,6 +37,7 @@
 #include <fair/Knot_spacing.h>
 #include <fair/internal/classic/common.h>
 #include <fair/internal/common/input_checks.h>
+#include <fair/internal/nurbs/assembly.h>
 
 #include <cstddef>
 #include <utility>
@@ -124,6 +125,12 @@ public:
   /// The cubic Bezier pieces; piece i runs from point i to point i+1 (mod n when closed).
   const std::vector<Piece>& pieces() const { return pieces_; }
   std::size_t number_of_pieces() const { return pieces_.size(); }
+  /// The curve in the exchange form (fair/Nurbs_curve_2.h; doc/nurbs.md, "Catmull_rom_2"): degree
+  /// 3 on knots() (piece i on [u_i, u_{i+1}]), interior knots of multiplicity 2 (C1 in u, not C2).
+  /// Closed: the periodic form. Exactly the pieces in an exact kernel. O(n).
+  Nurbs_curve_2<K> nurbs() const {
+    return internal::nurbs::hermite_cubic_nurbs<K>(pieces_, knots_, options_.closed, "Catmull_rom_2::nurbs");
+  }
   const std::vector<Point_2>& points() const { return points_; }
   /// The knots u_0 = 0 < u_1 < ... (one more than the number of pieces).
   const std::vector<FT>& knots() const { return knots_; }

@@ -104,6 +104,9 @@ public:
     return pieces_.get([this] { return spline_.polynomial_pieces(); });
   }
   std::size_t number_of_pieces() const { return spline_.number_of_pieces(); }
+  /// spline().nurbs(): the C2 cubic in the exchange form (fair/Nurbs_curve_2.h): knots the
+  /// breakpoints parameters(), single inside, clamped when open, periodic when closed.
+  Nurbs_curve_2<K> nurbs() const { return spline_.nurbs(); }
   bool is_closed() const { return options_.closed; }
   /// The samples q_i, as given (the spline approximates them: distances_to_samples()).
   const std::vector<Point_2>& points() const { return samples_; }

@@ -118,6 +118,9 @@ public:
   /// count when periodic), with local parameter t = (u - u_i) / h_i. Their end points are the
   /// data points themselves, so the curve interpolates exactly in every kernel.
   const std::vector<Piece>& pieces() const { return pieces_; }
+  /// spline().nurbs(): the C2 cubic in the exchange form (fair/Nurbs_curve_2.h): single interior
+  /// knots, clamped when open, periodic when closed; its pieces are pieces() (doc/nurbs.md).
+  Nurbs_curve_2<K> nurbs() const { return spline_.nurbs(); }
   std::size_t number_of_pieces() const { return pieces_.size(); }
   /// The interpolated points.
   const std::vector<Point_2>& points() const { return points_; }

@@ -99,6 +99,9 @@ public:
   /// The cubic Bezier pieces; piece i spans the knot interval [i, i+1], from near p_i to near
   /// p_{i+1} (exactly, where the fourth difference vanishes).
   const std::vector<Piece>& pieces() const { return pieces_; }
+  /// spline().nurbs(): the C2 cubic in the exchange form (fair/Nurbs_curve_2.h): single interior
+  /// knots, clamped when open, periodic when closed; its pieces are pieces() (doc/nurbs.md).
+  Nurbs_curve_2<K> nurbs() const { return (*spline_).nurbs(); }
   /// The result as the library's spline (uniform integer breakpoints; clamped form when open,
   /// periodic when closed), whose pieces are pieces().
   const Cubic_spline_2<K>& spline() const { return *spline_; }

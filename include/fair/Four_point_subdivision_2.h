@@ -49,6 +49,7 @@
 #include <fair/Errors.h>
 #include <fair/internal/classic/common.h>
 #include <fair/internal/common/input_checks.h>
+#include <fair/internal/nurbs/assembly.h>
 
 #include <CGAL/number_utils.h>
 
@@ -194,6 +195,12 @@ public:
   /// The segments of polyline() as degree-1 Bezier pieces (closed: the last one closes it).
   const std::vector<Piece>& pieces() const { return pieces_; }
   std::size_t number_of_pieces() const { return pieces_.size(); }
+  /// The polyline of pieces() in the exchange form (fair/Nurbs_curve_2.h; doc/nurbs.md): degree 1,
+  /// segment j on [j, j + 1] (knots at the segment indices, single inside: C0), control points the
+  /// polyline's vertices; closed: the periodic form. Exact in every kernel. O(n).
+  Nurbs_curve_2<K> nurbs() const {
+    return internal::nurbs::bezier_pieces_nurbs<K>(pieces_, options_.closed, "Four_point_subdivision_2::nurbs");
+  }
   /// refine(options().rounds), computed once.
   const std::vector<Point_2>& polyline() const { return polyline_; }
   bool is_closed() const { return options_.closed; }

@@ -34,6 +34,7 @@
 #include <fair/internal/kappa/pieces.h>
 #include <fair/internal/kappa/problem_setup.h>
 #include <fair/internal/kappa/solver.h>
+#include <fair/internal/nurbs/assembly.h>
 
 #include <cstddef>
 #include <utility>
@@ -118,6 +119,14 @@ public:
   /// open one (from points().front() to points().back()).
   const std::vector<Piece>& pieces() const { return pieces_; }
   std::size_t number_of_pieces() const { return pieces_.size(); }
+  /// The curve in the exchange form (fair/Nurbs_curve_2.h; doc/nurbs.md, "Kappa_curve_2"): degree 2,
+  /// piece j on [j, j + 1] (knots at the piece indices, each interior one of multiplicity 2: C0 in
+  /// u, G1 and |kappa|-continuous by construction), control points P_{j,0}, P_{j,1}, ... with weights
+  /// 1 at the joins and w_j between; rational unless every w_j is 1. Closed: the periodic form.
+  /// point(j + t) is piece(j).point(t); exactly the pieces in an exact kernel. O(n).
+  Nurbs_curve_2<K> nurbs() const {
+    return internal::nurbs::bezier_pieces_nurbs<K>(pieces_, opt_.closed, "Kappa_curve_2::nurbs");
+  }
   /// Piece j. \throws Precondition_error if j >= number_of_pieces().
   const Piece& piece(std::size_t j) const {
     internal::require(j < pieces_.size(), "Kappa_curve_2::piece: index ", j, " >= ", pieces_.size());

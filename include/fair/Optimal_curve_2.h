@@ -109,6 +109,15 @@ public:
   /// The cubic pieces of spline(), run after run: one per polygon edge.
   const std::vector<Piece>& pieces() const { return pieces_; }
   std::size_t number_of_pieces() const { return pieces_.size(); }
+  /// spline() in the exchange form (fair/Nurbs_curve_2.h; doc/nurbs.md, "Optimal_curve_2"):
+  /// degree 3, the chordal breakpoints of the runs (each run's shifted to start where the previous
+  /// one ends), single knots inside a run and knots of multiplicity 3 at the corners (C0); closed:
+  /// the periodic form (seam at the first corner, or C2 without corners). Its pieces are pieces().
+  /// \throws Precondition_error for a curve without pieces (a failed solve, see status()).
+  Nurbs_curve_2<K> nurbs() const {
+    internal::require(!pieces_.empty(), "Optimal_curve_2::nurbs: the curve has no spline (status ", report_.status, ")");
+    return spline_.nurbs(options_.closed);
+  }
   bool is_closed() const { return options_.closed; }
   const Optimal_curve_options& options() const { return options_; }
   const Optimal_curve_report& report() const { return report_; }

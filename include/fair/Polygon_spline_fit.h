@@ -22,8 +22,8 @@
 // Cubic_interpolating_spline_2. max_distance is measured on the spline's own pieces.
 //
 // Corners (fit_cubic_spline_runs): one C2 run between consecutive corners, G0 there, so that
-// the CORNER constraints of an optimal curve survive in the spline; io::spline_runs_to_json
-// writes the runs as one NURBS with triple knots at the corners.
+// the CORNER constraints of an optimal curve survive in the spline; Polygon_spline_runs::nurbs
+// is the runs as one NURBS with triple knots at the corners.
 //
 // max_distance: the largest distance from a point of the spline to the polygon, measured piece
 // by piece against the polygon edge the piece replaces (32 samples per piece refined by golden
@@ -38,6 +38,7 @@
 #include <fair/Errors.h>
 #include <fair/Knot_spacing.h>
 #include <fair/internal/common/input_checks.h>
+#include <fair/internal/nurbs/assembly.h>
 #include <fair/internal/optimal/spline_fit.h>
 #include <fair/internal/spline/polygon_fit.h>
 
@@ -132,6 +133,13 @@ struct Polygon_spline_runs {
       out.insert(out.end(), p.begin(), p.end());
     }
     return out;
+  }
+  /// The runs as one NURBS (fair/Nurbs_curve_2.h; doc/nurbs.md): degree 3, single knots inside a
+  /// run, multiplicity 3 at the corners (C0), each run's breakpoints shifted to start where the
+  /// previous run ends; `closed` (the polygon's): the periodic form, its seam at the first corner
+  /// (C0 there), or the one periodic run. \throws Precondition_error without runs.
+  Nurbs_curve_2<K> nurbs(bool closed) const {
+    return internal::nurbs::spline_runs_nurbs<K>(splines, closed, "fair::Polygon_spline_runs::nurbs");
   }
 };
 

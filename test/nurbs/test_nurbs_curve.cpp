@@ -121,7 +121,7 @@ TYPED_TEST(Nurbs_curve, PiecesAreTheCurve) {
         const auto t = q<K>(s, 4);
         EXPECT_TRUE(same<K>(c.pieces()[j].point(t), cox_de_boor(c, b[j] + (b[j + 1] - b[j]) * t), 1e-12));
       }
-      if (j > 0) EXPECT_TRUE(c.pieces()[j].source() == c.pieces()[j - 1].target()); // bit for bit
+      if (j > 0) { EXPECT_TRUE(c.pieces()[j].source() == c.pieces()[j - 1].target()); } // bit for bit
     }
   }
 }

@@ -423,48 +423,54 @@ TEST(Optimal_fit_runs, CornersAreKeptAndTheirTangentsConverge) {
   }
 }
 
-// The stitched NURBS of spline_runs_to_json: #knots = #control points + 4, knot multiplicity 3
-// at the corner, and de Boor's algorithm on it reproduces the middle of every piece.
+// The stitched NURBS of Polygon_spline_runs::nurbs, as the "bspline" member writes it
+// (io::nurbs_to_json): #knots = #control points + 4, knot multiplicity 3 at the corner, and de
+// Boor's algorithm on the written numbers reproduces the middle of every piece. A closed polygon
+// with corners is the periodic form whose seam is the first corner (C0 there).
 TEST(Optimal_fit_runs, StitchedNurbsReproducesThePieces) {
   const std::vector<Pd> p = runs::lens(6);
   const auto fit = fair::fit_cubic_spline_runs<Kd>(p, true, {0, 6});
-  const nlohmann::json j = fair::io::spline_runs_to_json(fit.splines, true);
-  EXPECT_TRUE(j["clamped"].get<bool>());
+  const fair::Nurbs_curve_2<Kd> nurbs = fit.nurbs(true);
+  const nlohmann::json j = fair::io::nurbs_to_json(nurbs);
   EXPECT_TRUE(j["closed"].get<bool>());
+  EXPECT_EQ(j["degree"], 3);
+  EXPECT_FALSE(j.contains("weights"));
   std::vector<double> u;
   for (const auto& x : j["knots"]) u.push_back(x.get<double>());
   std::vector<std::array<double, 2>> d;
   for (const auto& x : j["control_points"]) d.push_back({{x[0].get<double>(), x[1].get<double>()}});
   ASSERT_EQ(u.size(), d.size() + 4);
-  std::vector<double> t;
-  for (const auto& x : j["breakpoints"]) t.push_back(x.get<double>());
+  const std::vector<double> t = nurbs.breakpoints();
   const auto pieces = fit.pieces();
   ASSERT_EQ(t.size(), pieces.size() + 1);
-  ASSERT_EQ(j["corners"].size(), 2u);
-  const std::size_t corner = j["corners"][0].get<std::size_t>();
+  ASSERT_EQ(fit.splines.size(), 2u);
+  const std::size_t corner = fit.splines[0].number_of_pieces();  // the second corner's breakpoint
   EXPECT_EQ(corner, 6u);
   EXPECT_EQ(std::count(u.begin(), u.end(), t[corner]), 3) << "C0 at the corner: multiplicity 3";
+  EXPECT_EQ(std::count(u.begin(), u.end(), t[0]), 3) << "C0 at the seam, the first corner: multiplicity 3";
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const auto expected = d2(pieces[i].point(0.5));
     const auto got = runs::de_boor(u, d, 0.5 * (t[i] + t[i + 1]));
     EXPECT_NEAR(got[0], expected[0], 1e-12) << "piece " << i;
     EXPECT_NEAR(got[1], expected[1], 1e-12) << "piece " << i;
   }
-  // A closed polygon with one corner: one open run from the corner round to itself, still written
-  // as a closed curve whose corner is its start.
+  // A closed polygon with one corner: one open run from the corner round to itself, written as a
+  // closed curve whose corner is its seam.
   const auto one = fair::fit_cubic_spline_runs<Kd>(p, true, {3});
   ASSERT_EQ(one.splines.size(), 1u);
   EXPECT_EQ(one.first_vertex.front(), 3u);
-  const nlohmann::json j1 = fair::io::spline_runs_to_json(one.splines, true);
+  const fair::Nurbs_curve_2<Kd> n1 = one.nurbs(true);
+  const nlohmann::json j1 = fair::io::nurbs_to_json(n1);
   EXPECT_TRUE(j1["closed"].get<bool>());
-  EXPECT_TRUE(j1["clamped"].get<bool>());
-  ASSERT_EQ(j1["corners"].size(), 1u);
-  EXPECT_EQ(j1["corners"][0].get<std::size_t>(), 0u);
+  EXPECT_EQ(std::count(n1.knots().begin(), n1.knots().end(), n1.domain().first), 3) << "the corner is the seam";
   EXPECT_EQ(j1["knots"].size(), j1["control_points"].size() + 4);
-  // One run (no corners): the plain spline_to_json.
+  // One run (no corners): the periodic spline's own NURBS, single knots (C2 at the seam too).
   const auto whole = fair::fit_cubic_spline_runs<Kd>(p, true, {});
   ASSERT_EQ(whole.splines.size(), 1u);
-  EXPECT_FALSE(fair::io::spline_runs_to_json(whole.splines, true)["clamped"].get<bool>());
+  const fair::Nurbs_curve_2<Kd> nw = whole.nurbs(true);
+  EXPECT_TRUE(nw.is_closed());
+  EXPECT_EQ(std::count(nw.knots().begin(), nw.knots().end(), nw.domain().first), 1);
+  EXPECT_EQ(fair::io::nurbs_to_json(nw), fair::io::nurbs_to_json(whole.splines.front().nurbs()));
 }
 
 TYPED_TEST(Optimal_fit, SplineRunsOfOpenPolygonsAndBadCorners) {

@@ -121,7 +121,7 @@ void run(const Shapes_options& o) {
     std::ostringstream out;
     nlohmann::json extra = report_json(f, d, o.exact);
     extra["convexity"] = convexity_json(convexity);
-    extra["bspline"] = fair::io::spline_to_json(d.spline);
+    extra["bspline"] = fair::io::nurbs_to_json(d.nurbs());
     // The design's points are its marked points, shape after shape.
     std::vector<typename K::Point_2> points;
     for (const auto& shape_marks : f.marked_points) points.insert(points.end(), shape_marks.begin(), shape_marks.end());

@@ -16,6 +16,7 @@
 #include <fair/Errors.h>
 #include <fair/Rational_bezier_2.h>
 #include <fair/io/parsing.h>
+#include <fair/io/read_nurbs.h>  // the "bspline" member: fair::io::read_nurbs
 
 #include <cstddef>
 #include <string>

@@ -4,7 +4,7 @@
 // See doc/io.md. The one curve JSON of every method (curve_to_json with the method, the input
 // points and the pieces): {"format": "fair-curve", "version": 1, "method", "closed", "points",
 // "pieces": [{"degree", "control_points", "weights"?}, ...]} plus the method's members
-// ("bspline" where the family has one, "status" and "report" for the solver families).
+// ("bspline": the NURBS of the curve, nurbs_to_json; "status" and "report" for the solver families).
 //
 // A coordinate is written as the JSON number of its nearest double (shortest text that reads
 // back to the same double). In an exact kernel a coordinate that is not exactly a double is
@@ -20,6 +20,7 @@
 #include <fair/Cardinal_spline_report.h>
 #include <fair/Errors.h>
 #include <fair/Kappa_curve_report.h>
+#include <fair/Nurbs_curve_2.h>
 #include <fair/Optimal_curve_report.h>
 #include <fair/io/enum_names.h>
 
@@ -274,85 +275,44 @@ nlohmann::json to_json(const Cardinal_spline_report<K>& r) {
                         {"energy", number_to_json(r.energy, "energy")}};
 }
 
-/// The "bspline" member of the curve format: {"degree": 3, "closed": ..., "knots": [...],
-/// "control_points": [[x, y], ...], "weights": [...]} — the NURBS form of the spline
-/// (Cubic_spline_2::knot_vector() and its control points: clamped when open, the unclamped
-/// periodic form when closed, so that #knots = #control points + 4 either way; "clamped" says
-/// which), plus "breakpoints" (t_0 .. t_m). Exact kernels write "p/q" strings for non-double values.
+/// The "bspline" member of the curve format, the one writer of every family's NURBS
+/// (Nurbs_curve_2, fair/Nurbs_curve_2.h; every family's nurbs()):
+///   {"degree": p, "closed": c, "knots": [u_0, ..., u_{n+p}] (the full vector, multiplicities
+///    written out), "control_points": [[x, y], ... n ...], "weights": [w_0, ..., w_{n-1}]}
+/// with "weights" only when the curve is rational (is_rational()). Open curves are clamped, a
+/// closed one is in the periodic form (the last p control points repeat the first p), so
+/// #knots = #control points + p + 1 either way. Exact kernels write "p/q" strings for values that
+/// are not doubles. fair::io::read_nurbs (fair/io/read_nurbs.h) reads it back, exactly.
 template <class K>
-nlohmann::json spline_to_json(const Cubic_spline_2<K>& spline) {
-  nlohmann::json knots = nlohmann::json::array(), breakpoints = nlohmann::json::array(),
-                 control = nlohmann::json::array(), weights = nlohmann::json::array();
-  for (const auto& u : spline.knot_vector()) knots.push_back(number_to_json(u, "knot"));
-  for (const auto& t : spline.breakpoints()) breakpoints.push_back(number_to_json(t, "breakpoint"));
-  const auto points = spline.knot_vector_control_points();
-  for (std::size_t i = 0; i < points.size(); ++i)
-    control.push_back(point_to_json(points[i], fair::internal::message("spline control point ", i)));
-  for (const auto& w : spline.knot_vector_weights()) weights.push_back(number_to_json(w, "spline weight"));
-  return nlohmann::json{{"degree", 3},           {"closed", spline.is_closed()}, {"clamped", !spline.is_closed()},
-                        {"knots", std::move(knots)},
-                        {"control_points", std::move(control)}, {"weights", std::move(weights)},
-                        {"breakpoints", std::move(breakpoints)}};
-}
-
-/// The "bspline" member for splines joined with G0 (fair::fit_cubic_spline_runs: C2 runs between
-/// corners): one clamped NURBS of degree 3 whose interior knot at each join has multiplicity 3
-/// (C0 there; the runs' control points follow one another, the join's shared once). Run r + 1's
-/// parameter is shifted to start where run r ends. "closed" says whether the last run ends where
-/// the first starts (a closed polygon); the form is always clamped ("clamped": true), so
-/// #knots = #control points + 4 still holds. "breakpoints" lists every distinct breakpoint and
-/// "corners" the indices into "breakpoints" of the joins (a closed curve's start, 0, included).
-/// One run of an open curve, or one periodic run: spline_to_json of it.
-template <class K>
-nlohmann::json spline_runs_to_json(const std::vector<Cubic_spline_2<K>>& runs, bool closed) {
-  fair::internal::require(!runs.empty(), "fair::io::spline_runs_to_json: no runs");
-  // One run is the spline itself, unless it is the open run of a closed polygon with one corner.
-  if (runs.size() == 1 && (runs.front().is_closed() || !closed)) return spline_to_json(runs.front());
-  nlohmann::json knots = nlohmann::json::array(), breakpoints = nlohmann::json::array(),
-                 control = nlohmann::json::array(), weights = nlohmann::json::array(),
-                 corners = nlohmann::json::array();
-  typename K::FT offset(0);
-  for (std::size_t r = 0; r < runs.size(); ++r) {
-    const Cubic_spline_2<K>& s = runs[r];
-    fair::internal::require(!s.is_closed(), "fair::io::spline_runs_to_json: run ", r, " is periodic");
-    const std::vector<typename K::FT> u = s.knot_vector();
-    const std::vector<typename K::Point_2> d = s.knot_vector_control_points();
-    const std::vector<typename K::FT> w = s.knot_vector_weights();
-    const std::vector<typename K::FT>& t = s.breakpoints();
-    if (r > 0) {
-      offset = offset - t.front();
-      knots.erase(knots.size() - 1);  // the previous run's end knot: multiplicity 4 -> 3
-      corners.push_back(breakpoints.size() - 1);
-    }
-    for (std::size_t i = (r > 0 ? 4 : 0); i < u.size(); ++i) knots.push_back(number_to_json(offset + u[i], "knot"));
-    for (std::size_t i = (r > 0 ? 1 : 0); i < t.size(); ++i)
-      breakpoints.push_back(number_to_json(offset + t[i], "breakpoint"));
-    for (std::size_t i = (r > 0 ? 1 : 0); i < d.size(); ++i) {
-      control.push_back(point_to_json(d[i], fair::internal::message("run ", r, " spline control point ", i)));
-      weights.push_back(number_to_json(w[i], "spline weight"));
-    }
-    offset = offset + t.back();
+nlohmann::json nurbs_to_json(const Nurbs_curve_2<K>& curve) {
+  nlohmann::json knots = nlohmann::json::array(), control = nlohmann::json::array();
+  for (std::size_t k = 0; k < curve.knots().size(); ++k)
+    knots.push_back(number_to_json(curve.knots()[k], fair::internal::message("knot ", k)));
+  const auto& points = curve.control_points();
+  for (std::size_t k = 0; k < points.size(); ++k)
+    control.push_back(point_to_json(points[k], fair::internal::message("bspline control point ", k)));
+  nlohmann::json out{{"degree", curve.degree()},
+                     {"closed", curve.is_closed()},
+                     {"knots", std::move(knots)},
+                     {"control_points", std::move(control)}};
+  if (curve.is_rational()) {
+    nlohmann::json weights = nlohmann::json::array();
+    for (std::size_t k = 0; k < curve.weights().size(); ++k)
+      weights.push_back(number_to_json(curve.weights()[k], fair::internal::message("bspline weight ", k)));
+    out["weights"] = std::move(weights);
   }
-  if (closed) corners.push_back(0);
-  return nlohmann::json{{"degree", 3},
-                        {"closed", closed},
-                        {"clamped", true},
-                        {"knots", std::move(knots)},
-                        {"control_points", std::move(control)},
-                        {"weights", std::move(weights)},
-                        {"breakpoints", std::move(breakpoints)},
-                        {"corners", std::move(corners)}};
+  return out;
 }
 
 /// The curve format (curve_to_json) of the spline's pieces plus its "bspline" member
-/// (spline_to_json) and the members of `extra`.
+/// (nurbs_to_json of spline.nurbs()) and the members of `extra`.
 template <class K>
 nlohmann::json spline_curve_to_json(const Cubic_spline_2<K>& spline,
                                     const nlohmann::json& extra = nlohmann::json::object()) {
   nlohmann::json out = curve_to_json(spline.pieces(), extra);
   fair::internal::require(!out.contains("bspline"), "fair::io::spline_curve_to_json: extra member \"bspline\" would ",
                           "overwrite the spline");
-  out["bspline"] = spline_to_json(spline);
+  out["bspline"] = nurbs_to_json(spline.nurbs());
   return out;
 }
 
@@ -362,23 +322,19 @@ template <class C, class = void>
 struct Has_report : std::false_type {};
 template <class C>
 struct Has_report<C, std::void_t<decltype(std::declval<const C&>().report())>> : std::true_type {};
+/// A curve with the exchange form (every family of the library: nurbs()).
 template <class C, class = void>
-struct Has_spline : std::false_type {};
+struct Has_nurbs : std::false_type {};
 template <class C>
-struct Has_spline<C, std::void_t<decltype(std::declval<const C&>().spline())>> : std::true_type {};
-/// Splines joined at corners (fair::Polygon_spline_runs: the member `splines`).
-template <class S, class = void>
-struct Is_spline_runs : std::false_type {};
-template <class S>
-struct Is_spline_runs<S, std::void_t<decltype(std::declval<const S&>().splines)>> : std::true_type {};
+struct Has_nurbs<C, std::void_t<decltype(std::declval<const C&>().nurbs())>> : std::true_type {};
 
 } // namespace internal
 
 /// The curve JSON of a curve of any family (doc/concepts.md): curve_to_json(method,
-/// curve.is_closed(), curve.points(), curve.pieces(), extra, piece_extra) plus, where the family
-/// has them, "bspline" (of curve.spline(): spline_to_json, or spline_runs_to_json for splines
-/// joined at corners) and "status" and "report" (to_json(curve.report())). The one writer of
-/// every family's pieces and B-spline, so that the program cannot disagree with itself.
+/// curve.is_closed(), curve.points(), curve.pieces(), extra, piece_extra) plus "bspline"
+/// (nurbs_to_json(curve.nurbs()), for every family that has nurbs() and pieces) and, for the
+/// solver families, "status" and "report" (to_json(curve.report())). The one writer of every
+/// family's pieces and B-spline, so that the program cannot disagree with itself.
 template <class Curve>
 nlohmann::json family_to_json(const Curve& curve, const std::string& method,
                               const nlohmann::json& extra = nlohmann::json::object(),
@@ -390,13 +346,9 @@ nlohmann::json family_to_json(const Curve& curve, const std::string& method,
     members["status"] = spelling(curve.report().status);
     members["report"] = to_json(curve.report());
   }
-  if constexpr (internal::Has_spline<Curve>::value) {
-    typedef std::decay_t<decltype(curve.spline())> Spline;
-    if constexpr (internal::Is_spline_runs<Spline>::value)
-      members["bspline"] = spline_runs_to_json(curve.spline().splines, curve.is_closed());
-    else
-      members["bspline"] = spline_to_json(curve.spline());
-  }
+  // (a failed optimal solve may leave a curve without pieces, and so without a NURBS)
+  if constexpr (internal::Has_nurbs<Curve>::value)
+    if (!curve.pieces().empty()) members["bspline"] = nurbs_to_json(curve.nurbs());
   for (auto it = extra.begin(); it != extra.end(); ++it) {
     fair::internal::require(!members.contains(it.key()), "fair::io::family_to_json: extra member \"", it.key(),
                             "\" would overwrite a member of the curve");
