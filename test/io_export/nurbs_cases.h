@@ -32,58 +32,11 @@ struct Has_nurbs : std::false_type {};
 template <class C>
 struct Has_nurbs<C, std::void_t<decltype(std::declval<const C&>().nurbs())>> : std::true_type {};
 
-template <class C, class = void>
-struct Has_spline_nurbs : std::false_type {};
-template <class C>
-struct Has_spline_nurbs<C, std::void_t<decltype(std::declval<const C&>().spline().nurbs())>> : std::true_type {};
-
-/// The C0 NURBS of Bezier pieces (every interior knot of multiplicity p; closed: the periodic
-/// form), for a family whose nurbs() is not there yet (issue 26: i26a adds them family by family).
-template <class K, class PieceRange>
-fair::Nurbs_curve_2<K> nurbs_of_pieces(const PieceRange& pieces, bool closed) {
-  typedef typename K::FT FT;
-  std::vector<typename K::Point_2> P;
-  std::vector<FT> w, u;
-  const std::size_t m = pieces.size(), p = pieces.front().degree();
-  FT scale(1);
-  for (std::size_t j = 0; j < m; ++j) {
-    const auto cp = pieces[j].control_points();
-    std::vector<FT> pw(cp.size(), FT(1));
-    if constexpr (!std::is_same<std::decay_t<decltype(pieces[j])>, fair::Bezier_2<K>>::value) pw = pieces[j].weights();
-    if (j > 0) scale = w.back() / pw[0];  // joint weights equal: scale the piece's weights
-    for (std::size_t i = (j == 0 ? 0 : 1); i <= p; ++i) {
-      P.push_back(cp[i]);
-      w.push_back(pw[i] * scale);
-    }
-  }
-  if (!closed) {
-    for (std::size_t i = 0; i <= p; ++i) u.push_back(FT(0));
-    for (std::size_t j = 1; j < m; ++j)
-      for (std::size_t i = 0; i < p; ++i) u.push_back(FT(int(j)));
-    for (std::size_t i = 0; i <= p; ++i) u.push_back(FT(int(m)));
-    return fair::Nurbs_curve_2<K>(p, u, P, w);
-  }
-  // closed: the last point is the first
-  P.pop_back();
-  const FT last = w.back();
-  w.pop_back();
-  // (the test's pieces have end weights 1: kappa's (1, w, 1) and polynomial pieces)
-  if (last != w.front()) throw fair::Precondition_error("nurbs_of_pieces: the seam weights differ");
-  for (std::size_t i = 0; i < p; ++i) {
-    P.push_back(P[i]);
-    w.push_back(w[i]);
-  }
-  u.push_back(FT(-1));
-  for (std::size_t j = 0; j <= m + 1; ++j)
-    for (std::size_t i = 0; i < p; ++i) u.push_back(FT(int(j)));
-  return fair::Nurbs_curve_2<K>(p, u, P, w, true);
-}
-
+/// The curve's exchange form: every family has nurbs() (issue 26).
 template <class K, class Curve>
 fair::Nurbs_curve_2<K> nurbs_of(const Curve& c) {
-  if constexpr (Has_nurbs<Curve>::value) return c.nurbs();
-  else if constexpr (Has_spline_nurbs<Curve>::value) return c.spline().nurbs();
-  else return nurbs_of_pieces<K>(c.pieces(), c.is_closed());
+  static_assert(Has_nurbs<Curve>::value, "every family has nurbs()");
+  return c.nurbs();
 }
 
 template <class K>
