@@ -15,9 +15,10 @@ packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libpng-dev)
 # Test-only dependencies (never of the library): FreeType and Debian's DejaVu fonts for the glyph
 # outlines of the real-data tests; OpenCASCADE's FairCurve_Batten (and the TBB its CMake config
-# needs) as the peer of the optimal curves.
+# needs) as the peer of the optimal curves; python3-ezdxf, the independent reader of the DXF
+# drawings (test/io_export/check_dxf.py).
 test_packages=(libfreetype-dev fonts-dejavu-core libocct-modeling-algorithms-dev libocct-modeling-data-dev
-               libocct-foundation-dev libtbb-dev)
+               libocct-foundation-dev libtbb-dev python3-ezdxf)
 # Benchmark-only: Eigen 3, the peer of bench_linear_algebra (doc/linear_algebra.md).
 bench_packages=(libeigen3-dev)
 # The sanitizer stage compiles with clang: its ASan+UBSan build of a CGAL test takes half the CPU

@@ -182,7 +182,8 @@ void run_cardinal_in(const Cardinal_options& o) {
     svg_text = std::move(f.curve_svg);
     plot_text = std::move(f.curvature_svg);
   }
-  fair_curves::write_outputs(cardinal_report(r, o), o.json_out, json_text, {{o.svg_out, svg_text}, {o.plot_out, plot_text}});
+  fair_curves::write_outputs(cardinal_report(r, o), o.json_out, json_text,
+                             fair_curves::export_files(r.curve->nurbs(), {{o.svg_out, svg_text}, {o.plot_out, plot_text}}));
   if (r.curve->status() == fair::Cardinal_spline_status::NO_OPTIMUM) {
     std::cerr << "fair-curves cardinal: " << o.input
               << ": eq. 18 has no positive optimum, the curve is Catmull-Rom (alpha = 1/2; outputs written; exit code "
@@ -220,6 +221,7 @@ void register_cardinal_command(CLI::App& app) {
   sub->add_option("-o,--output", options->json_out, "write the curve as JSON ('-' for stdout)");
   sub->add_option("--svg", options->svg_out, "draw the curve with its curvature comb");
   sub->add_option("--plot", options->plot_out, "plot the curvature against arc length");
+  fair_curves::add_export_options(sub);
   sub->callback([options] { run_cardinal(*options); });
 }
 FAIR_CURVES_COMMAND(register_cardinal_command)

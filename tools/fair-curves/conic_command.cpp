@@ -54,7 +54,8 @@ void run_conic(const Conic_options& o) {
     svg_text = f.curve_svg;
     plot_text = f.curvature_svg;
   }
-  write_outputs(conic_text(piece, report), o.json_out, json_text, {{o.svg_out, svg_text}, {o.plot_out, plot_text}});
+  write_outputs(conic_text(piece, report), o.json_out, json_text,
+                export_files(fair::Nurbs_curve_2<Kernel>(2, {0, 0, 0, 1, 1, 1}, piece.control_points(), piece.weights()), {{o.svg_out, svg_text}, {o.plot_out, plot_text}}));
 }
 
 } // namespace
@@ -72,6 +73,7 @@ void register_conic_command(CLI::App& app) {
   sub->add_option("--svg", options->svg_out, "write a figure of the arc (control polygon, comb, extrema)");
   sub->add_option("--plot", options->plot_out, "write the curvature against arc length plot");
   sub->add_option("--samples", options->samples, "samples for the figures (default 128)");
+  fair_curves::add_export_options(sub);
   sub->callback([options] { run_conic(*options); });
 }
 FAIR_CURVES_COMMAND(register_conic_command)

@@ -74,7 +74,8 @@ void run_csr(const Csr_command_options& o) {
   report << "csr: " << data.points.size() << " samples, " << (closed ? "closed" : "open") << ", " << pieces.size()
          << " cubic pieces, " << fair::to_string(spacing) << " knots\n";
   report << "max distance to samples = " << fair_curves::format_number(max_distance, 10) << "\n";
-  fair_curves::write_outputs(report.str(), o.json_out, json_text, {{o.svg_out, svg_text}, {o.plot_out, plot_text}});
+  fair_curves::write_outputs(report.str(), o.json_out, json_text,
+                             fair_curves::export_files(csr.nurbs(), {{o.svg_out, svg_text}, {o.plot_out, plot_text}}));
 }
 
 } // namespace
@@ -91,6 +92,7 @@ void register_csr_command(CLI::App& app) {
                   "write the spline as JSON: pieces, \"bspline\", samples, distances ('-': only JSON on stdout)");
   sub->add_option("--svg", options->svg_out, "draw the curve, its B-spline control polygon, the samples and the curvature comb");
   sub->add_option("--plot", options->plot_out, "plot the curvature against arc length");
+  fair_curves::add_export_options(sub);
   sub->callback([options] { run_csr(*options); });
 }
 FAIR_CURVES_COMMAND(register_csr_command)

@@ -177,7 +177,7 @@ void run_kappa(const Kappa_command_options& o) {
   const fair::Kappa_curve_2<Kernel> curve(data.points, options);
   const std::string json_text = o.json_out.empty() ? std::string() : curve_json(o, curve);
   const std::string svg_text = o.svg_out.empty() ? std::string() : curve_svg(o, data, curve);
-  write_outputs(summary(o, curve), o.json_out, json_text, {{o.svg_out, svg_text}});
+  write_outputs(summary(o, curve), o.json_out, json_text, export_files(curve.nurbs(), {{o.svg_out, svg_text}}));
   if (curve.report().status == fair::Kappa_curve_status::UNSOLVED) {
     std::cerr << "fair-curves kappa: " << o.input << ": " << unsolved_line(curve)
               << (o.allow_unsolved ? "" : " (exit code 3; --allow-unsolved to exit 0)") << '\n';
@@ -206,6 +206,7 @@ void register_kappa_command(CLI::App& app) {
                 "exit 0 even when the solve is unsolved (default: exit code 3, outputs still written)");
   sub->add_option("-o,--output", options->json_out, "write the pieces and the report as JSON ('-': only JSON on stdout)");
   sub->add_option("--svg", options->svg_out, "draw the curve, its control polygons and curvature comb");
+  fair_curves::add_export_options(sub);
   sub->callback([options, clamp] {
     options->clamp_given = clamp->count() > 0;
     run_kappa(*options);

@@ -166,7 +166,8 @@ void run_optimal(const Optimal_command_options& o) {
     c.control_polygons = false;
     svg_text = make_curve_figures(curve.pieces(), c).curve_svg;
   }
-  write_outputs(summary(o, curve, n, curve.spline().max_distance), o.json_out, json_text, {{o.svg_out, svg_text}});
+  write_outputs(summary(o, curve, n, curve.spline().max_distance), o.json_out, json_text,
+                export_files(curve.nurbs(), {{o.svg_out, svg_text}}));
   if (curve.report().status != fair::Optimal_curve_status::CONVERGED) {
     std::cerr << "fair-curves optimal: " << o.input << ": the solve is " << curve.report().status
               << " (outputs written; exit code " << not_converged_exit_code << ")\n";
@@ -197,6 +198,7 @@ void register_optimal_command(CLI::App& app) {
   sub->add_option("--solver", options->solver, "newton (default) or cg (the paper's conjugate gradients)");
   sub->add_option("-o,--output", options->json_out, "write the curve and the report as JSON ('-': only JSON on stdout)");
   sub->add_option("--svg", options->svg_out, "draw the spline through the optimal polygon and its curvature comb");
+  fair_curves::add_export_options(sub);
   sub->callback([options] { run_optimal(*options); });
 }
 FAIR_CURVES_COMMAND(register_optimal_command)

@@ -137,7 +137,8 @@ void run(const Shapes_options& o) {
                                                      " basic shapes, C2 cubic spline");
     svg_text = stack_svg(figures.curve_svg, figures.curvature_svg);
   }
-  write_outputs(report_text(f, d, o.exact) + convexity_text(convexity), o.json_out, json_text, {{o.svg_out, svg_text}});
+  write_outputs(report_text(f, d, o.exact) + convexity_text(convexity), o.json_out, json_text,
+                export_files(d.nurbs(), {{o.svg_out, svg_text}}));
 }
 
 } // namespace
@@ -153,6 +154,7 @@ void register_shapes_command(CLI::App& app) {
   sub->add_option("-o,--output", options->json_out,
                   "write the spline (pieces and \"bspline\") and the join report as JSON ('-': only JSON on stdout)");
   sub->add_option("--svg", options->svg_out, "draw the curve, its control polygon, the marks and its curvature plot");
+  fair_curves::add_export_options(sub);
   sub->callback([options] {
     if (options->exact) run<CGAL::Exact_predicates_exact_constructions_kernel>(*options);
     else run<fair_curves::Kernel>(*options);

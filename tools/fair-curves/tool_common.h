@@ -7,6 +7,7 @@
 #ifndef FAIR_CURVES_TOOL_COMMON_H
 #define FAIR_CURVES_TOOL_COMMON_H
 
+#include "export_options.h"
 #include "gallery.h"
 
 #include <fair/Cubic_spline_2.h>
