@@ -18,3 +18,16 @@ run(${CMAKE_COMMAND} -S ${FAIR_SOURCE_DIR}/test/consumer -B ${SCRATCH}/build
 run(${CMAKE_COMMAND} --build ${SCRATCH}/build)
 run(${SCRATCH}/build/consumer)
 message(STATUS "consumer output: ${out}")
+
+# The occt component (fair::occt), where this build installed it (OpenCASCADE was found): a
+# second consumer that asks for it with find_package(fair REQUIRED COMPONENTS occt).
+file(GLOB_RECURSE occt_targets ${SCRATCH}/prefix/fairOcctTargets.cmake)
+if(occt_targets)
+  run(${CMAKE_COMMAND} -S ${FAIR_SOURCE_DIR}/test/consumer/occt -B ${SCRATCH}/build-occt
+      -DCMAKE_PREFIX_PATH=${SCRATCH}/prefix -DCMAKE_BUILD_TYPE=Release)
+  run(${CMAKE_COMMAND} --build ${SCRATCH}/build-occt)
+  run(${SCRATCH}/build-occt/consumer_occt)
+  message(STATUS "occt consumer output: ${out}")
+else()
+  message(STATUS "fair::occt not installed (no OpenCASCADE at build time): no occt consumer")
+endif()
