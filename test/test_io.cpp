@@ -117,7 +117,7 @@ static void expect_nearest_double(double v, const CGAL::Gmpq& q) {
   ASSERT_TRUE(std::isfinite(v));
   const CGAL::Gmpq d = CGAL::abs(CGAL::Gmpq(v) - q);
   for (const double w : {std::nextafter(v, -INFINITY), std::nextafter(v, INFINITY)})
-    if (std::isfinite(w)) EXPECT_LE(d, CGAL::abs(CGAL::Gmpq(w) - q)) << v;
+    if (std::isfinite(w)) { EXPECT_LE(d, CGAL::abs(CGAL::Gmpq(w) - q)) << v; }
 }
 
 TEST(IoNumbers, RationalsBeyondTheDoubleRangeAreReadExactlyThenRounded) {

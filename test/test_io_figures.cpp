@@ -347,10 +347,10 @@ TEST(Gallery, WritesIndexWithSectionsFiguresAndTables) {
   fair_curves::Gallery g("Test <gallery>", "intro & more");
   g.add_section("First", "one");
   const std::string svg = parabola_figure<SC_double>(1);
-  g.add_case({"parabola", "caption <b>", {{"curve", svg}, {"curvature plot", svg}}, {{"length", "2.96"}}});
-  g.add_case({"again", "", {{"curve", svg}}, {}});
+  g.add_case({"parabola", "caption <b>", {{"curve", svg}, {"curvature plot", svg}}, {{"length", "2.96"}}, {}});
+  g.add_case({"again", "", {{"curve", svg}}, {}, {}});
   g.add_section("Second");
-  g.add_case({"third", "c", {{"curve", svg}}, {{"a", "1"}, {"b", "2"}}});
+  g.add_case({"third", "c", {{"curve", svg}}, {{"a", "1"}, {"b", "2"}}, {}});
   EXPECT_EQ(g.case_count(), 3u);
   EXPECT_EQ(g.section_count(), 2u);
   const std::string html = g.html(false);

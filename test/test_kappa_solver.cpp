@@ -1102,7 +1102,7 @@ TEST(KappaDensityLimit, InflectedCurveAgainstTheAnalyticEstimate) {
     }
     // From 1000 points on most of the curve is beyond the limit and inside the estimate's domain
     // (by the analytic estimate: 832 of 1000 points; at 300, 90 of 104 in the domain).
-    if (n >= 1000) EXPECT_GT(beyond, n / 2) << "n = " << n;
+    if (n >= 1000) { EXPECT_GT(beyond, n / 2) << "n = " << n; }
     EXPECT_LT(ambiguous, n / 20) << "n = " << n;  // within 0.1 of the limit: either way
   }
   // A uniformly sampled circle has kappa_s = 0: nothing is beyond the limit, however dense.

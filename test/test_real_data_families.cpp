@@ -279,7 +279,7 @@ TEST(RealDataFamilies, ShapeOfEveryFamilyOnEveryCurve) {
     }
   }
   // Issue 25 §3 medians over every curve, for the families that hold them (the optimal curve's
-  // spline at the base defaults does not: its medians are printed, issue 25 §3 is its fix).
+  // spline at its defaults does not: its medians are printed, issue 25 §3 is its fix).
   for (const std::string& method : fair_curves::family_methods()) {
     const double mi = median(inflections[method]), me = median(extrema[method]);
     std::cout << "[families] " << method << ": " << inflections[method].size() << " curves, median inflections/point "

@@ -10,6 +10,7 @@
 
 #include <fair/Errors.h>
 #include <fair/internal/common/exact_conversion.h>
+#include <fair/internal/common/polygon_crossings.h>
 
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
@@ -23,21 +24,7 @@ namespace fair {
 namespace internal {
 namespace conic {
 
-/// Exact orientation of three double points: an interval filter (directed rounding, so an
-/// underflowing or overflowing product widens the interval instead of faking a sign), then the
-/// exact determinant over CGAL::Gmpq of the exact dyadic values when the filter fails.
-inline CGAL::Orientation exact_orientation_of_doubles(double x0, double y0, double x1, double y1, double x2,
-                                                      double y2) {
-  {
-    typedef CGAL::Interval_nt<false> I;
-    CGAL::Protect_FPU_rounding<true> guard;
-    const I d = (I(x1) - I(x0)) * (I(y2) - I(y0)) - (I(y1) - I(y0)) * (I(x2) - I(x0));
-    if (d.inf() > 0) return CGAL::LEFT_TURN;
-    if (d.sup() < 0) return CGAL::RIGHT_TURN;
-  }
-  const CGAL::Gmpq X0(x0), Y0(y0), X1(x1), Y1(y1), X2(x2), Y2(y2);
-  return CGAL::sign((X1 - X0) * (Y2 - Y0) - (Y1 - Y0) * (X2 - X0));
-}
+using common::exact_orientation_of_doubles;
 
 /// Exact orientation of p0, p1, p2 in kernel K: exact_orientation_of_doubles for a floating
 /// kernel; otherwise an interval filter on enclosures of the exact coordinates, then

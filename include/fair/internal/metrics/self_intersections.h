@@ -35,6 +35,7 @@
 
 #include <fair/Curve_traits.h>
 #include <fair/Errors.h>
+#include <fair/internal/common/polygon_crossings.h>
 #include <fair/internal/metrics/pieces.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -299,33 +300,15 @@ Self_intersection_report self_intersections(const std::vector<Piece>& pieces, bo
   return search.report;
 }
 
-/// Crossings of the polygon through `points` (closed: with its closing edge), by exact
-/// predicates: two non-consecutive edges that meet, and two consecutive edges that overlap (the
-/// polygon doubling back), each count once.
+/// Crossings of the polygon through `points` (closed: with its closing edge), certified on the
+/// points rounded to double (`common::polygon_crossings`): two non-consecutive edges that meet,
+/// and two consecutive edges that overlap (the polygon doubling back), each count once.
 template <class Point>
 std::size_t polygon_self_intersections(const std::vector<Point>& points, bool closed) {
-  typedef self_intersection_detail::Epick E;
-  std::vector<E::Segment_2> s;
-  const std::size_t n = points.size();
-  for (std::size_t i = 0; i + 1 < n + (closed ? 1 : 0); ++i) {
-    const Point &p = points[i], &q = points[(i + 1) % n];
-    s.emplace_back(E::Point_2(CGAL::to_double(p.x()), CGAL::to_double(p.y())),
-                   E::Point_2(CGAL::to_double(q.x()), CGAL::to_double(q.y())));
-  }
-  std::size_t crossings = 0;
-  const std::size_t m = s.size();
-  for (std::size_t i = 0; i < m; ++i)
-    for (std::size_t j = i + 1; j < m; ++j) {
-      const bool consecutive = j == i + 1 || (closed && i == 0 && j == m - 1);
-      if (!consecutive) crossings += CGAL::do_intersect(s[i], s[j]) ? 1 : 0;
-      else {
-        // consecutive edges share an end point; they meet elsewhere only when collinear and folding back
-        const E::Segment_2 &a = j == i + 1 ? s[i] : s[j], &b = j == i + 1 ? s[j] : s[i];
-        crossings += CGAL::collinear(a.source(), a.target(), b.target()) &&
-                             (a.target() - a.source()) * (b.target() - b.source()) < 0 ? 1 : 0;
-      }
-    }
-  return crossings;
+  std::vector<common::Xy> p;
+  p.reserve(points.size());
+  for (const Point& q : points) p.push_back({{CGAL::to_double(q.x()), CGAL::to_double(q.y())}});
+  return common::polygon_crossings(p, closed);
 }
 
 } // namespace metrics
