@@ -8,6 +8,7 @@
 // rational); derivatives against Rational_bezier_2 and a cubic's constant third derivative;
 // the curvature of an exact circle; bad input.
 
+#include "cox_de_boor.h"
 #include "test_support.h"
 
 #include <fair/Cubic_spline_2.h>
@@ -21,41 +22,13 @@
 
 namespace {
 
+using fair_test::cox_de_boor;
 using fair_test::q;
 using fair_test::same;
 
 template <class K>
 class Nurbs_curve : public ::testing::Test {};
 TYPED_TEST_SUITE(Nurbs_curve, fair_test::All_kernels);
-
-// N_{k,p}(x) by the Cox-de Boor recursion with the convention 0/0 = 0; half-open spans, except
-// that x = u_n (the domain's end) belongs to the last non-empty span.
-template <class FT>
-FT basis(const std::vector<FT>& u, std::size_t k, std::size_t p, const FT& x, std::size_t n) {
-  if (p == 0) {
-    if (u[k] < u[k + 1] && !(x < u[k]) && x < u[k + 1]) return FT(1);
-    if (x == u[n] && u[k] < u[k + 1] && u[k + 1] == u[n]) return FT(1);
-    return FT(0);
-  }
-  FT v(0);
-  if (u[k + p] != u[k]) v = v + (x - u[k]) / (u[k + p] - u[k]) * basis(u, k, p - 1, x, n);
-  if (u[k + p + 1] != u[k + 1]) v = v + (u[k + p + 1] - x) / (u[k + p + 1] - u[k + 1]) * basis(u, k + 1, p - 1, x, n);
-  return v;
-}
-
-template <class K>
-typename K::Point_2 cox_de_boor(const fair::Nurbs_curve_2<K>& c, const typename K::FT& x) {
-  typedef typename K::FT FT;
-  FT X(0), Y(0), W(0);
-  const std::size_t n = c.number_of_control_points();
-  for (std::size_t k = 0; k < n; ++k) {
-    const FT b = basis(c.knots(), k, c.degree(), x, n) * c.weights()[k];
-    X = X + b * c.control_points()[k].x();
-    Y = Y + b * c.control_points()[k].y();
-    W = W + b;
-  }
-  return typename K::Point_2(X / W, Y / W);
-}
 
 // A random open curve: degree p, interior knots k/4 with multiplicities 1..p, clamped or not.
 template <class K>
