@@ -180,7 +180,8 @@ public:
     internal::require(m + 1 <= (end ? p_ + 1 : p_), "fair::Nurbs_curve_2::with_knot_inserted: the knot ",
                       CGAL::to_double(x), " has multiplicity ", m, " already (at most ", end ? p_ + 1 : p_, ")");
     std::vector<FT> u = u_;
-    std::vector<Homogeneous> H = homogeneous();
+    int e = 0;
+    std::vector<Homogeneous> H = homogeneous(e);
     if (closed_) {
       // reduce to the first period's span: u_p <= x < u_{p+N}
       const FT x0 = x == u_[P_.size()] ? u_[p_] : x;
@@ -188,7 +189,7 @@ public:
     } else {
       internal::nurbs::insert_knot_open(p_, u, H, internal::nurbs::find_span(p_, P_.size(), u_, x), x);
     }
-    return from_homogeneous(p_, std::move(u), H, closed_, weight_exponent());
+    return from_homogeneous(p_, std::move(u), H, closed_, e);
   }
 
 private:
@@ -204,23 +205,7 @@ private:
     return b[0];
   }
 
-  // 2^e * x in a floating-point FT (exact: a change of exponent); x itself in an exact FT, where
-  // nothing overflows and e is always 0.
-  static FT scaled(const FT& x, int e) {
-    if constexpr (std::is_floating_point<FT>::value) {
-      return std::ldexp(x, e);
-    } else {
-      (void)e;
-      return x;
-    }
-  }
-  // The exponent e with 2^-e m in [1/2, 1] for m > 0 finite (0 in an exact FT or for m = 0).
-  static int normalising_exponent(double m) {
-    if (!std::is_floating_point<FT>::value || !(m > 0) || !std::isfinite(m)) return 0;
-    int e = 0;
-    const double f = std::frexp(m, &e); // m = f 2^e, f in [1/2, 1)
-    return f == 0.5 ? e - 1 : e;
-  }
+  static FT scaled(const FT& x, int e) { return internal::nurbs::scaled_by_power_of_two(x, e); }
 
   // c - ORIGIN and its derivatives up to `order` with respect to u = u_i + h t on the piece b, t
   // in [0, 1] (file comment of derivatives()). In a floating-point FT the coordinates are scaled
@@ -234,7 +219,7 @@ private:
     double m = 0;
     for (std::size_t j = 0; j <= q; ++j)
       m = std::max({m, std::fabs(CGAL::to_double(b.control_point(j).x())), std::fabs(CGAL::to_double(b.control_point(j).y()))});
-    const int e = normalising_exponent(m);
+    const int e = internal::nurbs::normalising_exponent<FT>(m);
     // homogeneous coefficients, then their derivatives evaluated at t (scaled by 1 / h^k)
     std::vector<std::vector<FT>> A(3, std::vector<FT>(q + 1));
     for (std::size_t j = 0; j <= q; ++j) {
@@ -308,22 +293,12 @@ private:
     return Located{&pieces()[j], (u - u_[i]) / h, h};
   }
 
-  // (w x, w y, w) with the weights scaled by 2^-weight_exponent() (file comment: w <= 1, so w x
-  // cannot overflow; exact).
+  // (w x, w y, w) with the weights scaled by 2^-e (file comment: w <= 1, so w x cannot
+  // overflow; exact); e is 0 in an exact FT.
+  std::vector<Homogeneous> homogeneous(int& e) const { return internal::nurbs::homogeneous_points(P_, w_, e); }
   std::vector<Homogeneous> homogeneous() const {
-    const int e = weight_exponent();
-    std::vector<Homogeneous> H;
-    H.reserve(P_.size());
-    for (std::size_t k = 0; k < P_.size(); ++k) {
-      const FT w = scaled(w_[k], -e);
-      H.push_back(Homogeneous{w * P_[k].x(), w * P_[k].y(), w});
-    }
-    return H;
-  }
-  int weight_exponent() const {
-    double m = 0;
-    for (const FT& w : w_) m = std::max(m, CGAL::to_double(w));
-    return normalising_exponent(m);
+    int e = 0;
+    return homogeneous(e);
   }
 
   // The curve of homogeneous control points H whose weights are scaled by 2^-e (homogeneous()):
