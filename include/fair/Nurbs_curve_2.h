@@ -15,7 +15,11 @@
 //  - closed (is_closed()): the periodic, unclamped form that every standard B-spline evaluator
 //    reads: the last p control points (and weights) repeat the first p, and the knot intervals
 //    repeat with period N = n - p (u_{k+N} - u_k = u_n - u_p), so the curve is as smooth at
-//    u_p = u_n as its knot multiplicities say elsewhere. N >= p.
+//    u_p = u_n as its knot multiplicities say elsewhere. N >= p. The seam has one weight: a
+//    closed loop of rational pieces is one NURBS only when the pieces, each scaled by a constant
+//    to agree at every join, come back to the same weight, i.e. when the product of their
+//    end-weight ratios w_p / w_0 is 1 (internal/nurbs/assembly.h refuses the others: a p-th root
+//    and a new parameter would be needed; doc/nurbs.md §7).
 //
 // Exactness: construction, pieces(), point, derivatives, knot insertion and the conversions use
 // +, -, *, / of FT only, so in an exact kernel (EPECK, Simple_cartesian<Gmpq>) pieces() *are*
