@@ -156,8 +156,8 @@ public:
   /// Signed curvature at u in double: c' x c'' / |c'|^3 of the span's piece in its own parameter
   /// t = (u - u_i) / h, which is the curvature in u (it does not depend on the parametrisation),
   /// without the factors 1/h and 1/h^2 of the derivatives in u that overflowed on spans of length
-  /// 1e-300 (review finding 4). In double the piece's coordinates are scaled by a power of two 2^-e
-  /// first (the largest into [1/2, 1]) and kappa by 2^-e after (kappa(s c) = kappa(c) / s), exactly,
+  /// 1e-300 (review finding 4). In double a piece with a |coordinate| above 2^500 is scaled by a
+  /// power of two 2^-e first (the largest into [1/2, 1]) and kappa by 2^-e after (kappa(s c) = kappa(c) / s), exactly,
   /// so finite control points near DBL_MAX give kappa too; then internal/common/curvature.h.
   /// \throws Precondition_error where the tangent vanishes or |kappa| overflows double.
   double curvature(const FT& u) const {
@@ -212,18 +212,23 @@ private:
   static FT scaled(const FT& x, int e) { return internal::nurbs::scaled_by_power_of_two(x, e); }
 
   // c - ORIGIN and its derivatives up to `order` with respect to u = u_i + h t on the piece b, t
-  // in [0, 1] (file comment of derivatives()). In a floating-point FT the coordinates are scaled
-  // by 2^-e first, e bringing the largest |coordinate| of the piece into [1/2, 1], and the results
+  // in [0, 1] (file comment of derivatives()). In a floating-point FT whose largest |coordinate|
+  // of the piece is above 2^500 the coordinates are scaled by 2^-e first, e bringing it into
+  // [1/2, 1], and the results
   // back by 2^e (exact): the differences of the coefficients cannot overflow where the results
   // are finite; the weights are at most 1 already (homogeneous()). With `exponent`, the results
   // stay scaled by 2^-e and *exponent = e (curvature() scales kappa instead: |c'|^3 could overflow).
   static std::vector<Vector_2> jet(const Piece& b, const FT& t, std::size_t order, const FT& h,
                                    int* exponent = nullptr) {
     const std::size_t q = b.degree();
-    double m = 0;
-    for (std::size_t j = 0; j <= q; ++j)
-      m = std::max({m, std::fabs(CGAL::to_double(b.control_point(j).x())), std::fabs(CGAL::to_double(b.control_point(j).y()))});
-    const int e = internal::nurbs::normalising_exponent<FT>(m);
+    int e = 0;
+    if constexpr (std::is_floating_point<FT>::value) {
+      double m = 0;
+      for (std::size_t j = 0; j <= q; ++j)
+        m = std::max({m, std::fabs(b.control_point(j).x()), std::fabs(b.control_point(j).y())});
+      // only where a difference could overflow: below, nothing changes, not even a subnormal
+      if (m > 0x1p500) e = internal::nurbs::normalising_exponent<FT>(m);
+    }
     // homogeneous coefficients, then their derivatives evaluated at t (scaled by 1 / h^k)
     std::vector<std::vector<FT>> A(3, std::vector<FT>(q + 1));
     for (std::size_t j = 0; j <= q; ++j) {
