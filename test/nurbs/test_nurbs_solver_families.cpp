@@ -134,6 +134,14 @@ TYPED_TEST(Nurbs_solver_families, OnePeriodicRunAskedOpenIsOpened) {
   knots.insert(knots.end(), 4, FT(7));
   EXPECT_EQ(open.knots(), knots);
   expect_nurbs_is_pieces(open, s.pieces(), "one periodic run, opened");
+  // a rational periodic run opens the same way (weights: the same up to one factor per piece)
+  const std::vector<FT> w{FT(1), FT(3) / FT(2), FT(1) / FT(2), FT(2), FT(1), FT(5) / FT(4)};
+  const fair::Cubic_spline_2<K> r(t, hexagon<K>(), w, true);
+  const fair::Nurbs_curve_2<K> ro = fair::Polygon_spline_runs<K>{{r}, {0}, 0.0}.nurbs(false);
+  EXPECT_FALSE(ro.is_closed());
+  EXPECT_TRUE(ro.is_rational());
+  EXPECT_EQ(ro.knots(), knots);
+  expect_nurbs_is_pieces(ro, r.pieces(), "one rational periodic run, opened");
   const fair::Nurbs_curve_2<K> again = fair::internal::nurbs::opened(open);
   EXPECT_EQ(again.knots(), open.knots());
   for (std::size_t k = 0; k < open.number_of_control_points(); ++k)
