@@ -5,10 +5,17 @@
 // nurbs().point(u) at rational parameters of every span is the family's piece at the matching
 // local parameter -- exactly in an exact kernel, to rounding in double. Plus the knot structure
 // (multiplicities inside the domain) the family documents.
+//
+// nurbs().pieces() patch their joints (a joint is computed once and given to both pieces), and
+// so do the families' pieces(): comparing the two alone could hide a knot vector whose curve
+// is not continuous, or a closed form whose periodic extension does not wrap. So every check
+// also evaluates the NURBS by the literal Cox-de Boor recursion (cox_de_boor.h) at every
+// breakpoint from both sides and across the seam of a closed curve (review finding 2).
 
 #ifndef FAIR_TEST_NURBS_FAMILY_CHECKS_H
 #define FAIR_TEST_NURBS_FAMILY_CHECKS_H
 
+#include "cox_de_boor.h"
 #include "test_support.h"
 
 #include <fair/Nurbs_curve_2.h>
@@ -40,6 +47,28 @@ std::vector<typename Piece::FT> weights_of(const Piece& piece) {
   }
 }
 
+// The NURBS `c` by Cox-de Boor (from its knots, control points and weights only) at the joints
+// of the family's `pieces`: c(b_j^+) is piece j's start and c(b_{j+1}^-) its end, for every j;
+// closed, the wrap too: c(u_p^-) -- the periodic extension's span before the domain -- is the
+// last piece's end and c(u_n^+) the first piece's start (and the family's loop closes). Exactly
+// in an exact kernel.
+template <class K, class Piece>
+void expect_joints_by_cox_de_boor(const fair::Nurbs_curve_2<K>& c, const std::vector<Piece>& pieces, double rel) {
+  typedef typename K::FT FT;
+  const std::vector<FT> b = c.breakpoints();
+  ASSERT_EQ(b.size(), pieces.size() + 1);
+  auto first = [](const Piece& piece) { return piece.control_points()[0]; };
+  auto last = [](const Piece& piece) { return piece.control_points()[piece.degree()]; };
+  for (std::size_t j = 0; j < pieces.size(); ++j) {
+    EXPECT_TRUE(same<K>(cox_de_boor(c, b[j], Side::RIGHT), first(pieces[j]), rel)) << "start of piece " << j;
+    EXPECT_TRUE(same<K>(cox_de_boor(c, b[j + 1], Side::LEFT), last(pieces[j]), rel)) << "end of piece " << j;
+  }
+  if (!c.is_closed()) return;
+  EXPECT_TRUE(same<K>(last(pieces.back()), first(pieces.front()), rel)) << "the family's loop closes";
+  EXPECT_TRUE(same<K>(cox_de_boor(c, b.front(), Side::LEFT), last(pieces.back()), rel)) << "c(u_p^-)";
+  EXPECT_TRUE(same<K>(cox_de_boor(c, b.back(), Side::RIGHT), first(pieces.front()), rel)) << "c(u_n^+)";
+}
+
 // `pieces` (the family's, each on [0, 1]) against the NURBS `c`: same number, same control
 // points, same weights up to one factor per piece, and c.point(b_j + t (b_{j+1} - b_j)) ==
 // pieces[j].point(t) at t = 0, 1/3, 1/2, 5/7, 1. `rel`: the tolerance in double.
@@ -49,6 +78,7 @@ void expect_nurbs_is_pieces(const fair::Nurbs_curve_2<K>& c, const std::vector<P
   typedef typename K::FT FT;
   SCOPED_TRACE(what);
   ASSERT_EQ(c.number_of_pieces(), pieces.size());
+  expect_joints_by_cox_de_boor(c, pieces, rel);
   const std::vector<FT> b = c.breakpoints();
   const FT ts[] = {FT(0), FT(1) / FT(3), FT(1) / FT(2), FT(5) / FT(7), FT(1)};
   for (std::size_t j = 0; j < pieces.size(); ++j) {

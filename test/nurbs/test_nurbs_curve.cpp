@@ -8,6 +8,7 @@
 // rational); derivatives against Rational_bezier_2 and a cubic's constant third derivative;
 // the curvature of an exact circle; bad input.
 
+#include "cox_de_boor.h"
 #include "test_support.h"
 
 #include <fair/Cubic_spline_2.h>
@@ -21,41 +22,13 @@
 
 namespace {
 
+using fair_test::cox_de_boor;
 using fair_test::q;
 using fair_test::same;
 
 template <class K>
 class Nurbs_curve : public ::testing::Test {};
 TYPED_TEST_SUITE(Nurbs_curve, fair_test::All_kernels);
-
-// N_{k,p}(x) by the Cox-de Boor recursion with the convention 0/0 = 0; half-open spans, except
-// that x = u_n (the domain's end) belongs to the last non-empty span.
-template <class FT>
-FT basis(const std::vector<FT>& u, std::size_t k, std::size_t p, const FT& x, std::size_t n) {
-  if (p == 0) {
-    if (u[k] < u[k + 1] && !(x < u[k]) && x < u[k + 1]) return FT(1);
-    if (x == u[n] && u[k] < u[k + 1] && u[k + 1] == u[n]) return FT(1);
-    return FT(0);
-  }
-  FT v(0);
-  if (u[k + p] != u[k]) v = v + (x - u[k]) / (u[k + p] - u[k]) * basis(u, k, p - 1, x, n);
-  if (u[k + p + 1] != u[k + 1]) v = v + (u[k + p + 1] - x) / (u[k + p + 1] - u[k + 1]) * basis(u, k + 1, p - 1, x, n);
-  return v;
-}
-
-template <class K>
-typename K::Point_2 cox_de_boor(const fair::Nurbs_curve_2<K>& c, const typename K::FT& x) {
-  typedef typename K::FT FT;
-  FT X(0), Y(0), W(0);
-  const std::size_t n = c.number_of_control_points();
-  for (std::size_t k = 0; k < n; ++k) {
-    const FT b = basis(c.knots(), k, c.degree(), x, n) * c.weights()[k];
-    X = X + b * c.control_points()[k].x();
-    Y = Y + b * c.control_points()[k].y();
-    W = W + b;
-  }
-  return typename K::Point_2(X / W, Y / W);
-}
 
 // A random open curve: degree p, interior knots k/4 with multiplicities 1..p, clamped or not.
 template <class K>
@@ -232,20 +205,64 @@ TYPED_TEST(Nurbs_curve, DerivativesAgainstThePieceAndTheThirdDifference) {
   }
 }
 
+// A circular arc as a rational quadratic: end tangents meeting at P1 and the middle weight
+// cos(theta), theta the half angle of the arc. With cos theta = 3/5 (sin theta = 4/5) all is
+// rational: radius 5 about the origin, P0 = 5 (3/5, -4/5), P2 = 5 (3/5, 4/5), P1 = (5 / cos theta, 0),
+// counterclockwise. On the span [0, h].
+template <class K>
+fair::Nurbs_curve_2<K> circle_arc(const typename K::FT& h) {
+  typedef typename K::FT FT;
+  std::vector<typename K::Point_2> P{{q<K>(3, 1), q<K>(-4, 1)}, {q<K>(25, 3), FT(0)}, {q<K>(3, 1), q<K>(4, 1)}};
+  return fair::Nurbs_curve_2<K>(2, {FT(0), FT(0), FT(0), h, h, h}, P, {FT(1), q<K>(3, 5), FT(1)});
+}
+
 TYPED_TEST(Nurbs_curve, CurvatureOfAnExactCircle) {
   typedef TypeParam K;
   typedef typename K::FT FT;
-  // A circular arc as a rational quadratic: end tangents meeting at P1 and the middle weight
-  // cos(theta), theta the half angle of the arc. With cos theta = 3/5 (sin theta = 4/5) all is
-  // rational: radius 5 about the origin, P0 = 5 (3/5, -4/5), P2 = 5 (3/5, 4/5), P1 = (5 / cos theta, 0).
   const FT r(5);
-  std::vector<typename K::Point_2> P{{q<K>(3, 1), q<K>(-4, 1)}, {q<K>(25, 3), FT(0)}, {q<K>(3, 1), q<K>(4, 1)}};
-  const fair::Nurbs_curve_2<K> c(2, {FT(0), FT(0), FT(0), FT(1), FT(1), FT(1)}, P, {FT(1), q<K>(3, 5), FT(1)});
-  for (int s = 0; s <= 8; ++s) {
-    const auto x = q<K>(s, 8);
-    const auto pt = c.point(x);
-    EXPECT_TRUE(same<K>(pt.x() * pt.x() + pt.y() * pt.y(), r * r, 1e-12)); // on the circle, exactly
-    EXPECT_NEAR(c.curvature(x), 1.0 / 5.0, 1e-12);
+  // h = 1: the unit span; h = 1e-300: c' and c'' in u are 1e300 and 1e600 times those in the
+  // piece's parameter, and the curvature from them overflowed (review finding 4)
+  for (const FT& h : {FT(1), FT(1e-300)}) {
+    const fair::Nurbs_curve_2<K> c = circle_arc<K>(h);
+    for (int s = 0; s <= 8; ++s) {
+      const auto x = h * q<K>(s, 8);
+      const auto pt = c.point(x);
+      EXPECT_TRUE(same<K>(pt.x() * pt.x() + pt.y() * pt.y(), r * r, 1e-12)); // on the circle, exactly
+      EXPECT_NEAR(c.curvature(x), 1.0 / 5.0, 1e-12) << "h = " << CGAL::to_double(h) << ", s = " << s;
+      if (h == FT(1)) { // the tangent is perpendicular to the radius, exactly, and turns counterclockwise
+        const auto d = c.derivative(x);
+        EXPECT_TRUE(same<K>(d * (pt - CGAL::ORIGIN), FT(0), 1e-12)) << s;
+        EXPECT_GT(CGAL::to_double((pt - CGAL::ORIGIN).x() * d.y() - (pt - CGAL::ORIGIN).y() * d.x()), 0.0) << s;
+      }
+    }
+  }
+}
+
+// The parabola y = x^2, x in [-1, 2], as one quadratic on the knots 0^3, 3^3 (x = u - 1):
+// P0 = (a, a^2), P1 = ((a + b)/2, a b), P2 = (b, b^2) with a = -1, b = 2. Then c'(u) = (1, 2x) and
+// c''(u) = (0, 2) exactly, and kappa(x) = 2 / (1 + 4 x^2)^(3/2) (review finding 11: an analytic
+// value, with the tangent checked). Twice: as given, and with knots inserted (three pieces),
+// and once more on spans scaled by 1e-300 (c' and c'' in u scale by 1e300 and 1e600; kappa not).
+TYPED_TEST(Nurbs_curve, CurvatureOfAParabolaAgainstTheFormula) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  const std::vector<P> cp{P(-1, 1), P(q<K>(1, 2), FT(-2)), P(2, 4)};
+  const fair::Nurbs_curve_2<K> c(2, {FT(0), FT(0), FT(0), FT(3), FT(3), FT(3)}, cp);
+  const fair::Nurbs_curve_2<K> refined = c.with_knot_inserted(FT(1)).with_knot_inserted(q<K>(5, 2));
+  ASSERT_EQ(refined.number_of_pieces(), 3u);
+  const FT tiny(1e-300);
+  const fair::Nurbs_curve_2<K> small(2, {FT(0), FT(0), FT(0), 3 * tiny, 3 * tiny, 3 * tiny}, cp);
+  for (int s = 0; s <= 12; ++s) {
+    const FT u = q<K>(s, 4), x = u - 1;
+    const double xd = CGAL::to_double(x), kappa = 2 / std::pow(1 + 4 * xd * xd, 1.5);
+    for (const fair::Nurbs_curve_2<K>* n : {&c, &refined}) {
+      EXPECT_TRUE(same<K>(n->point(u), P(x, x * x), 1e-14)) << s;
+      EXPECT_TRUE(same<K>(n->derivative(u), typename K::Vector_2(FT(1), 2 * x), 1e-14)) << s;
+      EXPECT_TRUE(same<K>(n->second_derivative(u), typename K::Vector_2(FT(0), FT(2)), 1e-13)) << s;
+      EXPECT_NEAR(n->curvature(u), kappa, 1e-15 * kappa) << s;
+    }
+    EXPECT_NEAR(small.curvature(u * tiny), kappa, 1e-15 * kappa) << s;
   }
 }
 
@@ -277,6 +294,46 @@ TYPED_TEST(Nurbs_curve, BadInputNamesTheProblem) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     EXPECT_NE(message([&] { fair::Nurbs_curve_2<K>(3, clamped, {P(0, 0), P(nan, 1), P(2, 0), P(3, 1)}); }).find("control point 1"), std::string::npos);
     EXPECT_NE(message([&] { fair::Nurbs_curve_2<K>(3, {FT(0), FT(0), FT(0), FT(0), FT(nan), FT(1), FT(1), FT(1)}, pts); }).find("knot 4"), std::string::npos);
+  }
+}
+
+// Review finding 5: the homogeneous form w x overflowed for control points near DBL_MAX and a
+// weight > 1, and underflowed for tiny weights. The weights are scaled by one power of two
+// before w x is formed (exact), so: the curve scaled by 2^1000 is the curve's values times 2^1000
+// bit for bit, finite, near DBL_MAX; the weights scaled by 2^-1000 (or 2^1000) change nothing,
+// bit for bit; kappa of the big curve is 2^-1000 times the small one's.
+TEST(Nurbs_curve_double, NearTheDoubleRangeValuesAreFiniteAndScaleExactly) {
+  typedef fair_test::SC_double K;
+  typedef K::Point_2 P;
+  std::mt19937 rng(2606);
+  for (int trial = 0; trial < 8; ++trial) {
+    const std::size_t p = 2 + static_cast<std::size_t>(trial % 3);
+    const fair::Nurbs_curve_2<K> c = random_open<K>(rng, p, trial % 2 == 0, true);
+    double m = 0; // the largest |coordinate|: the big curve's reaches 2^1023 (DBL_MAX is just below 2^1024)
+    for (const P& x : c.control_points()) m = std::max({m, std::fabs(x.x()), std::fabs(x.y())});
+    const int e = 1023 - std::ilogb(m);
+    std::vector<P> big;
+    for (const P& x : c.control_points()) big.emplace_back(std::ldexp(x.x(), e), std::ldexp(x.y(), e));
+    std::vector<double> w4 = c.weights(), tiny = c.weights(), huge = c.weights();
+    for (std::size_t k = 0; k < w4.size(); ++k) {
+      w4[k] *= 4; // the largest weight is at least 1: w x overflowed
+      tiny[k] = std::ldexp(tiny[k], -1000);
+      huge[k] = std::ldexp(huge[k], 1000);
+    }
+    const fair::Nurbs_curve_2<K> b(p, c.knots(), big, w4);
+    const fair::Nurbs_curve_2<K> t(p, c.knots(), c.control_points(), tiny), h(p, c.knots(), c.control_points(), huge);
+    const fair::Nurbs_curve_2<K> bi = b.with_knot_inserted((c.domain().first + c.domain().second) / 2);
+    for (const double u : parameters(c, 3)) {
+      const P x = c.point(u), y = b.point(u);
+      ASSERT_TRUE(std::isfinite(y.x()) && std::isfinite(y.y())) << trial << " u = " << u;
+      EXPECT_EQ(y, P(std::ldexp(x.x(), e), std::ldexp(x.y(), e))) << trial << " u = " << u;
+      EXPECT_TRUE(same<K>(bi.point(u), y, 1e-13)) << trial << " u = " << u; // insertion: the same curve, finite
+      EXPECT_EQ(t.point(u), x) << trial;
+      EXPECT_EQ(h.point(u), x) << trial;
+      const double k = c.curvature(u), kb = b.curvature(u);
+      EXPECT_TRUE(fair_test::same_ulps(kb, std::ldexp(k, -e), 0)) << trial << " u = " << u;
+    }
+    for (std::size_t k = 0; k < b.weights().size(); ++k) EXPECT_EQ(b.weights()[k], w4[k]); // stored unscaled
   }
 }
 

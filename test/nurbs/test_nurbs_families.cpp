@@ -24,6 +24,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace {
@@ -197,6 +198,83 @@ TYPED_TEST(Nurbs_families, ExactConversionIsTheConicEverywhere) {
   const fair::Nurbs_curve_2<K> m = fair::exact_spline(g, {FT(2) / FT(5)}).nurbs();
   EXPECT_FALSE(m.is_rational());
   for (int k = 0; k <= 10; ++k) EXPECT_TRUE(same<K>(m.point(FT(k) / FT(10)), g.point(FT(k) / FT(10)), 1e-13));
+}
+
+// The assembly's checks (internal/nurbs/assembly.h; review findings 6, 7, 8): pieces that do not
+// join, a closed loop that does not close, Hermite pieces that are not C1, and a closed rational
+// loop whose end-weight ratios do not multiply to 1 are Precondition_errors naming the pieces;
+// a closed rational loop with end weights != 1 whose ratios multiply to 1 is accepted and is its
+// pieces. Gaps of 1/1024; in double a gap of 1e-14 (rounding) is accepted, in the exact
+// kernels refused.
+template <class F>
+std::string message_of(F make) {
+  try {
+    make();
+  } catch (const fair::Precondition_error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TYPED_TEST(Nurbs_families, AssemblyChecksTheJoins) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 P;
+  typedef fair::Bezier_2<K> B;
+  using fair::internal::nurbs::bezier_pieces_nurbs;
+  using fair::internal::nurbs::hermite_cubic_nurbs;
+  const FT gap = FT(1) / FT(1024);
+  const std::vector<B> loop{B({P(0, 0), P(1, 1), P(2, 0)}), B({P(2, 0), P(3, 1), P(4, 0)}), B({P(4, 0), P(3, -2), P(0, 0)})};
+  expect_nurbs_is_pieces(bezier_pieces_nurbs<K>(loop, true, "loop"), loop, "the loop");
+  std::vector<B> broken = loop;  // piece 1 starts off piece 0's end
+  broken[1] = B({P(2, gap), P(3, 1), P(4, 0)});
+  const std::string m = message_of([&] { bezier_pieces_nurbs<K>(broken, false, "who"); });
+  EXPECT_NE(m.find("who: piece 0 ends at (2, 0) but piece 1 starts at (2, 0.0009765625)"), std::string::npos) << m;
+  EXPECT_NE(m.find("not continuous (C0)"), std::string::npos) << m;
+  std::vector<B> open = loop;  // the last piece ends off the first's start: open is fine, closed is not
+  open[2] = B({P(4, 0), P(3, -2), P(0, gap)});
+  EXPECT_NO_THROW(bezier_pieces_nurbs<K>(open, false, "who"));
+  const std::string c = message_of([&] { bezier_pieces_nurbs<K>(open, true, "who"); });
+  EXPECT_NE(c.find("piece 2 ends at (0, 0.0009765625) but piece 0 starts at (0, 0): the closed loop does not close"), std::string::npos) << c;
+  // a gap of rounding size: accepted in double (2^-36 of the extent 4), refused exactly
+  std::vector<B> near = loop;
+  near[1] = B({P(FT(2) + FT(1e-14), FT(0)), P(3, 1), P(4, 0)});
+  if (fair_test::is_exact<K>()) {
+    EXPECT_THROW(bezier_pieces_nurbs<K>(near, true, "who"), fair::Precondition_error);
+  } else {
+    EXPECT_NO_THROW(bezier_pieces_nurbs<K>(near, true, "who"));
+  }
+
+  // Hermite cubics on t = 0, 1, 3: C1 in t when (b3 - b2) / 1 = (b1' - b0') / 2
+  const std::vector<FT> t{FT(0), FT(1), FT(3)};
+  const std::vector<B> c1{B(P(0, 0), P(1, 1), P(2, 1), P(3, 0)), B(P(3, 0), P(5, -2), P(6, 0), P(7, 2))};
+  EXPECT_NO_THROW(hermite_cubic_nurbs<K>(c1, t, false, "who"));
+  std::vector<B> kink = c1;
+  kink[1] = B(P(3, 0), P(5, -1), P(6, 0), P(7, 2));
+  const std::string k = message_of([&] { hermite_cubic_nurbs<K>(kink, t, false, "who"); });
+  EXPECT_NE(k.find("piece 0 ends at (3, 0) but the join the NURBS forms, (h_{j+1} b^j_2 + h_j b^{j+1}_1) / (h_j + h_{j+1}), of pieces 0 and 1 is (3, 0.333"),
+            std::string::npos) << k;
+  EXPECT_NE(k.find("the pieces are not C1 in the parameter there"), std::string::npos) << k;
+  std::vector<B> apart = c1;
+  apart[1] = B(P(FT(3), gap), P(5, -2), P(6, 0), P(7, 2));
+  EXPECT_NE(message_of([&] { hermite_cubic_nurbs<K>(apart, t, false, "who"); }).find("not continuous (C0)"), std::string::npos);
+  EXPECT_NE(message_of([&] { hermite_cubic_nurbs<K>(c1, t, true, "who"); }).find("piece 1 ends at (7, 2) but piece 0 starts at (0, 0): the closed loop does not close"),
+            std::string::npos);
+
+  // Rational loops: the weights are scaled to agree at each join; around the loop the scale is
+  // the product of w_2 / w_0 over the pieces (here 2 * 1/2 * 1 = 1: accepted, end weights != 1)
+  typedef fair::Rational_bezier_2<K> R;
+  const std::vector<R> rational{R({P(0, 0), P(1, 1), P(2, 0)}, {FT(1), FT(3), FT(2)}),
+                                R({P(2, 0), P(3, 1), P(4, 0)}, {FT(4), FT(1), FT(2)}),
+                                R({P(4, 0), P(3, -2), P(0, 0)}, {FT(3), FT(1), FT(3)})};
+  const fair::Nurbs_curve_2<K> r = bezier_pieces_nurbs<K>(rational, true, "rational loop");
+  EXPECT_TRUE(r.is_closed());
+  expect_nurbs_is_pieces(r, rational, "rational loop, end weights != 1, product 1");
+  std::vector<R> twisted = rational;  // product 2 * 1/2 * 2 = 2
+  twisted[2] = R({P(4, 0), P(3, -2), P(0, 0)}, {FT(3), FT(1), FT(6)});
+  EXPECT_NO_THROW(bezier_pieces_nurbs<K>(twisted, false, "who"));
+  const std::string w = message_of([&] { bezier_pieces_nurbs<K>(twisted, true, "who"); });
+  EXPECT_NE(w.find("who: a closed loop of rational pieces whose end-weight ratios w_p / w_0 multiply to 2, not 1"), std::string::npos) << w;
 }
 
 }  // namespace

@@ -115,4 +115,37 @@ TYPED_TEST(Nurbs_solver_families, OptimalIsItsSplineWithTripleKnotsAtTheCorners)
   }
 }
 
+// Review finding 9: one periodic run asked for an open curve came back closed. Now it is opened
+// at its seam: clamped, not closed, the same pieces (exactly in the exact kernels) and the same
+// interior knots; asked for closed it is the run's own periodic NURBS. An open clamped curve
+// opened is itself.
+TYPED_TEST(Nurbs_solver_families, OnePeriodicRunAskedOpenIsOpened) {
+  typedef TypeParam K;
+  typedef typename K::FT FT;
+  const std::vector<FT> t{FT(0), FT(1), FT(5) / FT(2), FT(3), FT(9) / FT(2), FT(6), FT(7)};
+  const fair::Cubic_spline_2<K> s(t, hexagon<K>(), true);
+  const fair::Polygon_spline_runs<K> runs{{s}, {0}, 0.0};
+  const fair::Nurbs_curve_2<K> closed = runs.nurbs(true), open = runs.nurbs(false);
+  EXPECT_TRUE(closed.is_closed());
+  EXPECT_EQ(closed.knots(), s.nurbs().knots());
+  EXPECT_FALSE(open.is_closed());
+  std::vector<FT> knots(4, FT(0));  // clamped at the seam, the run's breakpoints inside
+  knots.insert(knots.end(), t.begin() + 1, t.end() - 1);
+  knots.insert(knots.end(), 4, FT(7));
+  EXPECT_EQ(open.knots(), knots);
+  expect_nurbs_is_pieces(open, s.pieces(), "one periodic run, opened");
+  // a rational periodic run opens the same way (weights: the same up to one factor per piece)
+  const std::vector<FT> w{FT(1), FT(3) / FT(2), FT(1) / FT(2), FT(2), FT(1), FT(5) / FT(4)};
+  const fair::Cubic_spline_2<K> r(t, hexagon<K>(), w, true);
+  const fair::Nurbs_curve_2<K> ro = fair::Polygon_spline_runs<K>{{r}, {0}, 0.0}.nurbs(false);
+  EXPECT_FALSE(ro.is_closed());
+  EXPECT_TRUE(ro.is_rational());
+  EXPECT_EQ(ro.knots(), knots);
+  expect_nurbs_is_pieces(ro, r.pieces(), "one rational periodic run, opened");
+  const fair::Nurbs_curve_2<K> again = fair::internal::nurbs::opened(open);
+  EXPECT_EQ(again.knots(), open.knots());
+  for (std::size_t k = 0; k < open.number_of_control_points(); ++k)
+    EXPECT_TRUE(fair_test::same<K>(again.control_points()[k], open.control_points()[k])) << k;
+}
+
 }  // namespace

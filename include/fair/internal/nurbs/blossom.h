@@ -15,16 +15,32 @@
 //    formula holds on the infinite periodic sequences; one period of the result is
 //    Q_{i-p+1} .. Q_i, P_i, ..., P_{i+N-p} (indices of P modulo N), see doc/nurbs.md §4.
 //
+//  - the clamped form of a curve on its domain (clamped_form): the control points of the knot
+//    vector u_p^(p+1), the knots inside (u_p, u_n), u_n^(p+1) are the blossom values at its knot
+//    windows (de Boor-Ramshaw), each taken from a span of the curve that the window's basis
+//    function covers (any such span: the curve is one polynomial there). Opens a closed curve at
+//    its seam u_p = u_n.
+//
 // Only +, -, *, / of the number type: exact in an exact kernel; in double each result is a
 // convex combination chain of p steps (backward stable). Cost: O(p^2) per blossom value,
-// O(p^3) per span's Bezier points, O(n + p) per insertion (the copy).
+// O(p^3) per span's Bezier points, O(n + p) per insertion (the copy), O(n p^2) per clamped form.
+//
+// In a floating-point number type the weights are scaled by one power of two before w x is
+// formed (homogeneous_points: the largest into [1/2, 1], exact), so that w x cannot overflow
+// where x is finite (review finding 5); an exact type is not scaled.
 
 #ifndef FAIR_INTERNAL_NURBS_BLOSSOM_H
 #define FAIR_INTERNAL_NURBS_BLOSSOM_H
 
+#include <fair/internal/nurbs/knot_vector.h>
 #include <fair/internal/spline/bspline_form.h>
 
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace fair {
@@ -32,6 +48,42 @@ namespace internal {
 namespace nurbs {
 
 using spline::Homogeneous_point;
+
+/// 2^e x in a floating-point FT (exact: a change of exponent); x in an exact FT (e is 0 there).
+template <class FT>
+FT scaled_by_power_of_two(const FT& x, int e) {
+  if constexpr (std::is_floating_point<FT>::value) {
+    return std::ldexp(x, e);
+  } else {
+    (void)e;
+    return x;
+  }
+}
+
+/// The exponent e with 2^-e m in [1/2, 1] for m > 0 finite; 0 in an exact FT and for m = 0.
+template <class FT>
+int normalising_exponent(double m) {
+  if (!std::is_floating_point<FT>::value || !(m > 0) || !std::isfinite(m)) return 0;
+  int e = 0;
+  const double f = std::frexp(m, &e); // m = f 2^e, f in [1/2, 1)
+  return f == 0.5 ? e - 1 : e;
+}
+
+/// (w_k x_k, w_k y_k, w_k) with the weights scaled by 2^-e, e = normalising_exponent of the
+/// largest weight (file comment); `e` receives it (0 in an exact FT).
+template <class FT, class Point>
+std::vector<Homogeneous_point<FT>> homogeneous_points(const std::vector<Point>& P, const std::vector<FT>& w, int& e) {
+  double m = 0;
+  for (const FT& x : w) m = std::max(m, CGAL::to_double(x));
+  e = normalising_exponent<FT>(m);
+  std::vector<Homogeneous_point<FT>> H;
+  H.reserve(P.size());
+  for (std::size_t k = 0; k < P.size(); ++k) {
+    const FT s = scaled_by_power_of_two(w[k], -e);
+    H.push_back(Homogeneous_point<FT>{s * P[k].x(), s * P[k].y(), s});
+  }
+  return H;
+}
 
 /// f_i(x_1..x_p) for span i of (p, u, P) (homogeneous control points P).
 template <class FT>
@@ -126,6 +178,33 @@ void insert_knot_periodic(std::size_t p, std::vector<FT>& u, std::vector<Homogen
   }
   u = std::move(v);
   P = std::move(Q);
+}
+
+/// The clamped form on the domain [u_p, u_n] of the curve (p, u, P) (file comment): the knots
+/// `v` (u_p p + 1 times, the knots strictly inside the domain, u_n p + 1 times) and the
+/// homogeneous control points, one per window v_{k+1} .. v_{k+p}. For an open clamped curve it
+/// gives the curve's own knots and points back; a closed one is opened at its seam.
+template <class FT>
+std::vector<Homogeneous_point<FT>> clamped_form(std::size_t p, const std::vector<FT>& u,
+                                               const std::vector<Homogeneous_point<FT>>& P, std::vector<FT>& v) {
+  const std::size_t n = P.size();
+  v.assign(p + 1, u[p]);
+  for (std::size_t k = p + 1; k < n; ++k)
+    if (u[p] < u[k] && u[k] < u[n]) v.push_back(u[k]);
+  v.insert(v.end(), p + 1, u[n]);
+  const std::size_t m = v.size() - p - 1; // control points of the clamped form
+  std::vector<Homogeneous_point<FT>> Q;
+  Q.reserve(m);
+  std::vector<FT> x(p);
+  for (std::size_t k = 0; k < m; ++k) {
+    // a non-empty span [v_j, v_{j+1}] of the domain under N_{k,p} (support [v_k, v_{k+p+1}]): one
+    // exists because no knot inside has multiplicity above p
+    std::size_t j = std::max(k, p);
+    while (!(v[j] < v[j + 1])) ++j;
+    for (std::size_t r = 0; r < p; ++r) x[r] = v[k + 1 + r];
+    Q.push_back(blossom(p, u, P, find_span(p, n, u, v[j]), x));
+  }
+  return Q;
 }
 
 }  // namespace nurbs
