@@ -32,6 +32,7 @@
 
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -105,6 +106,30 @@ inline std::vector<std::array<Vec2, 4>> bezier_pieces(const std::vector<double>&
     for (int k = 0; k < 4; ++k) out[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)] = Vec2{{b[k].x, b[k].y}};
   }
   return out;
+}
+
+
+/// A power of two near the extent of p (the largest coordinate difference from p[0]), so that the
+/// fits compute on p / scale, of extent ~1: chord lengths, their squares and the fifth powers of
+/// the quintic's system neither overflow nor underflow (issue 29 #6, #7, #20: at 1e80 the
+/// quintic's system was "not positive definite", at 1e-160 the cubic failed its own C2 check, at
+/// 1e155 a control point became NaN). Division by a power of two is exact (no subnormal results:
+/// the scale is at most the extent), so the breakpoints and control points are those of p times
+/// 1/scale exactly, scaled back exactly. 1 when p has no extent or scaling would overflow.
+inline double fit_scale(const std::vector<optimal::Vec2>& p) {
+  double e = 0, a = 0;
+  for (const optimal::Vec2& q : p)
+    for (int k = 0; k < 2; ++k) {
+      e = std::max(e, std::abs(q[k] - p[0][k]));
+      a = std::max(a, std::abs(q[k]));
+    }
+  if (!(e > 0) || !std::isfinite(e)) return 1;
+  const double scale = std::ldexp(1.0, std::ilogb(e));
+  return a / scale < 1e300 ? scale : 1;
+}
+inline std::vector<optimal::Vec2> scaled(std::vector<optimal::Vec2> p, double factor) {
+  for (optimal::Vec2& q : p) q = {{q[0] * factor, q[1] * factor}};
+  return p;
 }
 
 } // namespace spline
