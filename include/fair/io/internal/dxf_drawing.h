@@ -8,9 +8,8 @@
 #define FAIR_IO_INTERNAL_DXF_DRAWING_H
 
 #include <fair/Errors.h>
+#include <fair/io/internal/nearest_double.h>
 #include <fair/Nurbs_curve_2.h>
-
-#include <CGAL/number_utils.h>
 
 #include <algorithm>
 #include <cmath>
@@ -72,7 +71,7 @@ struct Dxf_handles {
 /// The nearest double of x, finite, or the error naming `what`.
 template <class FT>
 double finite_double(const FT& x, std::size_t curve, const char* what, std::size_t index) {
-  const double d = CGAL::to_double(x);
+  const double d = nearest_double_of(x);
   if (!std::isfinite(d))
     throw Precondition_error("fair::io::write_dxf: curve " + std::to_string(curve) + ": " + what + " " +
                              std::to_string(index) + " is not finite as a double");

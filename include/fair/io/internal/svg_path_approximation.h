@@ -9,8 +9,7 @@
 #define FAIR_IO_INTERNAL_SVG_PATH_APPROXIMATION_H
 
 #include <fair/Errors.h>
-
-#include <CGAL/number_utils.h>
+#include <fair/io/internal/nearest_double.h>
 
 #include <algorithm>
 #include <array>
@@ -131,7 +130,7 @@ inline std::string svg_number(double v) {
 
 template <class FT>
 double svg_finite(const FT& x, std::size_t piece, const char* what) {
-  const double d = CGAL::to_double(x);
+  const double d = nearest_double_of(x);
   if (!std::isfinite(d))
     throw Precondition_error("fair::io::svg_path: piece " + std::to_string(piece) + ": a " + what +
                              " is not finite as a double");
