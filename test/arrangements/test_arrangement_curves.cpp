@@ -76,23 +76,42 @@ fair::Nurbs_curve_2<K> kappa_nurbs(const fair::Kappa_curve_2<K>& c) {
   return fair::Nurbs_curve_2<K>(2, u, P, w, c.is_closed());
 }
 
-// Dense polyline of a curve (the floating oracle).
-std::vector<Point> polyline(const fair::Nurbs_curve_2<K>& c, int per_piece) {
-  std::vector<Point> out;
+// The floating oracle of the crossings of two curves: the crossings of dense polylines of
+// them, each refined by Newton's method on A(u) - B(v) = 0 (the 2x2 Jacobian [A'(u), -B'(v)])
+// from the polyline segments' parameters, to full double precision.
+struct Sample {
+  Point p;
+  double u;
+};
+
+std::vector<Sample> polyline(const fair::Nurbs_curve_2<K>& c, int per_piece) {
+  std::vector<Sample> out;
   const std::vector<double> b = c.breakpoints();
   for (std::size_t j = 0; j + 1 < b.size(); ++j)
-    for (int s = 0; s < per_piece; ++s) out.push_back(c.point(b[j] + (b[j + 1] - b[j]) * s / per_piece));
-  out.push_back(c.point(b.back()));
+    for (int s = 0; s < per_piece; ++s) {
+      const double u = b[j] + (b[j + 1] - b[j]) * s / per_piece;
+      out.push_back({c.point(u), u});
+    }
+  out.push_back({c.point(b.back()), b.back()});
   return out;
 }
 
-std::vector<std::pair<double, double>> polyline_crossings(const std::vector<Point>& a, const std::vector<Point>& b) {
-  std::vector<std::pair<double, double>> out;
-  for (std::size_t i = 0; i + 1 < a.size(); ++i)
-    for (std::size_t j = 0; j + 1 < b.size(); ++j) {
-      const K::Segment_2 s(a[i], a[i + 1]), t(b[j], b[j + 1]);
-      if (const auto x = CGAL::intersection(s, t))
-        if (const Point* p = boost::get<Point>(&*x)) out.push_back({p->x(), p->y()});
+std::vector<Point> crossings_of(const fair::Nurbs_curve_2<K>& a, const fair::Nurbs_curve_2<K>& b) {
+  const std::vector<Sample> pa = polyline(a, 64), pb = polyline(b, 64);
+  std::vector<Point> out;
+  for (std::size_t i = 0; i + 1 < pa.size(); ++i)
+    for (std::size_t j = 0; j + 1 < pb.size(); ++j) {
+      const K::Segment_2 s(pa[i].p, pa[i + 1].p), t(pb[j].p, pb[j + 1].p);
+      if (!CGAL::do_intersect(s, t)) continue;
+      double u = 0.5 * (pa[i].u + pa[i + 1].u), v = 0.5 * (pb[j].u + pb[j + 1].u);
+      for (int k = 0; k < 30; ++k) {
+        const K::Vector_2 g = a.point(u) - b.point(v), da = a.derivative(u), db = b.derivative(v);
+        const double det = -da.x() * db.y() + da.y() * db.x();  // det [da, -db]
+        u -= (-g.x() * db.y() + g.y() * db.x()) / det;
+        v -= (da.x() * g.y() - da.y() * g.x()) / det;
+      }
+      EXPECT_LT(CGAL::squared_distance(a.point(u), b.point(v)), 1e-26) << "Newton did not converge";
+      out.push_back(a.point(u));
     }
   return out;
 }
@@ -110,6 +129,10 @@ std::size_t new_vertices(const Curves& a, const Curves& b) {
   return arr_ab.number_of_vertices() - arr_a.number_of_vertices() - arr_b.number_of_vertices();
 }
 
+// A kappa-curve (unit weights: parabolic pieces, polynomial) and a cubic interpolating spline,
+// both as Bezier curves with rational control points: the arrangement finds the four crossings
+// exactly; computed exactly (CORE algebraic coordinates), each is the Newton-refined floating
+// crossing to 1e-12.
 TEST(Arrangement_curves, KappaCurveAndCubicSplineIntersectExactly) {
   const fair::Kappa_curve_2<K> kappa({{0, 0}, {2, 2}, {4, 0}, {6, 2}, {8, 0}});
   const fair::Nurbs_curve_2<K> a = kappa_nurbs(kappa);
@@ -122,23 +145,27 @@ TEST(Arrangement_curves, KappaCurveAndCubicSplineIntersectExactly) {
   ASSERT_EQ(ca.size(), a.number_of_pieces());
   ASSERT_EQ(cb.size(), b.number_of_pieces());
 
-  const std::vector<std::pair<double, double>> floating = polyline_crossings(polyline(a, 400), polyline(b, 400));
+  const std::vector<Point> floating = crossings_of(a, b);
   ASSERT_EQ(floating.size(), 4u);  // the two humps of the wave cross the wavy line y ~ 1 twice each
   EXPECT_EQ((new_vertices<Bezier_arrangement>(ca, cb)), floating.size());
 
-  // every exact crossing is near a floating one
   Bezier_arrangement arr;
   std::vector<Bezier_traits::Curve_2> all = ca;
   all.insert(all.end(), cb.begin(), cb.end());
   CGAL::insert(arr, all.begin(), all.end());
+  Bezier_traits::Bezier_cache cache;
   std::size_t crossings = 0;
   for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
     if (v->degree() != 4) continue;
     ++crossings;
-    const std::pair<double, double> p(CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y()));
-    double best = 1e300;
-    for (const auto& q : floating) best = std::min(best, std::hypot(p.first - q.first, p.second - q.second));
-    EXPECT_LT(best, 1e-4) << "(" << p.first << ", " << p.second << ")";
+    // An intersection point of two Bezier curves is held as an isolating box until a predicate
+    // needs more (x() and y() have the precondition is_exact()): compute it exactly.
+    v->point().make_exact(cache);
+    ASSERT_TRUE(v->point().is_exact());
+    const Point p(CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y()));
+    double best = HUGE_VAL;
+    for (const Point& q : floating) best = std::min(best, std::sqrt(CGAL::squared_distance(p, q)));
+    EXPECT_LT(best, 1e-12) << p;
   }
   EXPECT_EQ(crossings, floating.size());
 }
@@ -192,9 +219,11 @@ void expect_simple_closed(const Arrangement& arr, std::size_t crossings) {
   EXPECT_EQ(arr.number_of_faces(), 2u + crossings);  // Euler: V - E + F = 2 with E = V + crossings
 }
 
-const std::vector<Point> simple_outline = {{4, 0}, {2.8, 2.1}, {0, 3}, {-2.9, 2}, {-4, 0.2}, {-2.7, -2.2}, {0.3, -3}, {2.9, -2}};
-// a lemniscate-like outline: the point order crosses itself once, near the origin
-const std::vector<Point> figure_eight = {{2, 1.5}, {4, 0}, {2, -1.5}, {-2, 1.5}, {-4, 0}, {-2, -1.5}};
+// Few points, so few pieces: the conic arcs' predicates are computed with CORE algebraic
+// numbers of the arcs' full-precision coefficients, about a second per piece.
+const std::vector<Point> simple_outline = {{4, 0}, {1, 3}, {-3, 2}, {-3, -2}, {1, -3}};
+// a bow tie: the point order crosses itself once, at the origin
+const std::vector<Point> figure_eight = {{4, 1}, {4, -1}, {-4, 1}, {-4, -1}};
 
 // minimum-eccentricity weights (eq. 16): elliptic pieces
 fair::Kappa_curve_2<K> closed_kappa(const std::vector<Point>& points) {
@@ -204,31 +233,34 @@ fair::Kappa_curve_2<K> closed_kappa(const std::vector<Point>& points) {
   return fair::Kappa_curve_2<K>(points, o);
 }
 
-TEST(Arrangement_curves, SelfIntersectionOfOutlinesConicArcs) {
-  for (const auto& c : {std::make_pair(&simple_outline, std::size_t(0)), std::make_pair(&figure_eight, std::size_t(1))}) {
-    const fair::Nurbs_curve_2<K> curve = kappa_nurbs(closed_kappa(*c.first));
-    ASSERT_TRUE(curve.is_rational());
-    for (double w : curve.weights()) EXPECT_LE(w, 1.0);
-    std::vector<Conic_traits::Curve_2> arcs;
-    fair::to_arrangement_curves<Conic_traits>(curve, std::back_inserter(arcs));
-    Conic_arrangement arr;
-    CGAL::insert(arr, arcs.begin(), arcs.end());
-    expect_simple_closed(arr, c.second);
-  }
+void conic_outline(const std::vector<Point>& points, std::size_t crossings) {
+  const fair::Nurbs_curve_2<K> curve = kappa_nurbs(closed_kappa(points));
+  ASSERT_TRUE(curve.is_rational());
+  for (double w : curve.weights()) EXPECT_LE(w, 1.0);
+  std::vector<Conic_traits::Curve_2> arcs;
+  fair::to_arrangement_curves<Conic_traits>(curve, std::back_inserter(arcs));
+  ASSERT_EQ(arcs.size(), points.size());
+  Conic_arrangement arr;
+  CGAL::insert(arr, arcs.begin(), arcs.end());
+  expect_simple_closed(arr, crossings);
 }
 
-TEST(Arrangement_curves, SelfIntersectionOfOutlinesBezierCurves) {
-  for (const auto& c : {std::make_pair(&simple_outline, std::size_t(0)), std::make_pair(&figure_eight, std::size_t(1))}) {
-    fair::Cubic_interpolating_spline_options o;
-    o.closed = true;
-    const fair::Nurbs_curve_2<K> curve = fair::Cubic_interpolating_spline_2<K>(*c.first, o).spline().nurbs();
-    std::vector<Bezier_traits::Curve_2> curves;
-    fair::to_arrangement_curves<Bezier_traits>(curve, std::back_inserter(curves));
-    Bezier_arrangement arr;
-    CGAL::insert(arr, curves.begin(), curves.end());
-    expect_simple_closed(arr, c.second);
-  }
+void bezier_outline(const std::vector<Point>& points, std::size_t crossings) {
+  fair::Cubic_interpolating_spline_options o;
+  o.closed = true;
+  const fair::Nurbs_curve_2<K> curve = fair::Cubic_interpolating_spline_2<K>(points, o).spline().nurbs();
+  std::vector<Bezier_traits::Curve_2> curves;
+  fair::to_arrangement_curves<Bezier_traits>(curve, std::back_inserter(curves));
+  ASSERT_EQ(curves.size(), points.size());
+  Bezier_arrangement arr;
+  CGAL::insert(arr, curves.begin(), curves.end());
+  expect_simple_closed(arr, crossings);
 }
+
+TEST(Arrangement_curves, SimpleOutlineConicArcsHasTwoFaces) { conic_outline(simple_outline, 0); }
+TEST(Arrangement_curves, FigureEightConicArcsCrossesOnce) { conic_outline(figure_eight, 1); }
+TEST(Arrangement_curves, SimpleOutlineBezierCurvesHasTwoFaces) { bezier_outline(simple_outline, 0); }
+TEST(Arrangement_curves, FigureEightBezierCurvesCrossesOnce) { bezier_outline(figure_eight, 1); }
 
 // Hyperbolic pieces: axis-parallel ones become arcs on the right branch; rotated ones are refused
 // (CGAL 5.5's branch test, Arrangement_curves.h).

@@ -79,8 +79,11 @@ def main():
         run = subprocess.run([sys.argv[1], "--gtest_filter=Dxf_export.every_case*"], env=env,
                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         if run.returncode != 0:
+            # A crash (negative: killed by that signal) prints nothing of its own: say so.
             print(run.stdout)
-            print("FAILED: the generator failed")
+            how = (f"was killed by signal {-run.returncode}" if run.returncode < 0
+                   else f"exited with status {run.returncode}")
+            print(f"FAILED: the generator {sys.argv[1]} --gtest_filter=Dxf_export.every_case* {how}")
             return 1
         names = sorted(f[:-4] for f in os.listdir(directory) if f.endswith(".dxf") and f != "all.dxf")
         failures = 0

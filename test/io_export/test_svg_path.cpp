@@ -153,6 +153,25 @@ TEST(Svg_path, quarter_circle_error_bound_and_halvings) {
   EXPECT_EQ(counts, (std::vector<std::size_t>{2, 8, 32, 64, 256}));
 }
 
+// In an exact kernel each number of an exact command is the nearest double of the exact value:
+// 1/10 -> 0.10000000000000001 (CGAL::to_double of a Gmpq truncates to 0.099999999999999992),
+// 1/3 -> 0.33333333333333331 (EPECK's CGAL::to_double gives 0.33333333333333337).
+template <class KK>
+void check_exact_kernel_numbers() {
+  typedef typename KK::FT FT;
+  typedef typename KK::Point_2 P;
+  const FT tenth = FT(1) / FT(10), third = FT(1) / FT(3);
+  const fair::Nurbs_curve_2<KK> c(3, {0, 0, 0, 0, 1, 1, 1, 1}, {P(tenth, 0), P(1, third), P(2, tenth), P(3, 0)});
+  const fair::io::Svg_path path = fair::io::svg_path(c);
+  EXPECT_TRUE(path.is_exact());
+  EXPECT_EQ(path.d, "M 0.10000000000000001 0 C 1 0.33333333333333331 2 0.10000000000000001 3 0");
+}
+
+TEST(Svg_path, exact_kernels_write_the_nearest_doubles) {
+  check_exact_kernel_numbers<fair_test::SC_gmpq>();
+  check_exact_kernel_numbers<fair_test::EPECK>();
+}
+
 TEST(Svg_path, bad_tolerances_are_precondition_errors) {
   typedef K::Point_2 P;
   const fair::Nurbs_curve_2<K> c(2, {0, 0, 0, 1, 1, 1}, {P(1, 0), P(1, 1), P(0, 1)}, {1, 2, 1});

@@ -31,6 +31,8 @@
 // Numbers are doubles (an exact kernel's values rounded to the nearest double): the SVG path has
 // no other numbers. A closed curve ends with "Z" (its last point is its first).
 //
+// The approximation itself is in fair/io/internal/svg_path_approximation.h.
+//
 // Errors: Precondition_error for a tolerance that is not finite or below 1e-13 of the curve's
 // extent (rounding could not certify it), or a value that is not finite as a double;
 // Non_convergence_error if 40 halvings do not reach the tolerance (not met on any test curve).
@@ -40,6 +42,7 @@
 
 #include <fair/Errors.h>
 #include <fair/Nurbs_curve_2.h>
+#include <fair/io/internal/svg_path_approximation.h>
 
 #include <CGAL/number_utils.h>
 
@@ -47,7 +50,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <cstdio>
 #include <limits>
 #include <string>
 #include <vector>
@@ -74,114 +76,6 @@ struct Svg_path {
   double error_bound = 0;
   bool is_exact() const { return error_bound == 0; }
 };
-
-namespace internal {
-
-typedef std::array<double, 3> Svg_homogeneous; // (w x, w y, w)
-
-/// Binomial coefficient in double (degrees here are small).
-inline double svg_binomial(std::size_t n, std::size_t k) {
-  double b = 1;
-  for (std::size_t i = 1; i <= k; ++i) b = b * double(n - k + i) / double(i);
-  return b;
-}
-
-/// Splits the homogeneous Bernstein coefficients at s = 1/2.
-inline void svg_split(const std::vector<Svg_homogeneous>& H, std::vector<Svg_homogeneous>& left,
-                      std::vector<Svg_homogeneous>& right) {
-  const std::size_t q = H.size() - 1;
-  std::vector<Svg_homogeneous> b = H;
-  left.assign(q + 1, {});
-  right.assign(q + 1, {});
-  left[0] = b[0];
-  right[q] = b[q];
-  for (std::size_t r = 1; r <= q; ++r) {
-    for (std::size_t k = 0; k + r <= q; ++k)
-      for (int c = 0; c < 3; ++c) b[k][c] = 0.5 * (b[k][c] + b[k + 1][c]);
-    left[r] = b[0];
-    right[q - r] = b[q - r];
-  }
-}
-
-/// The Hermite cubic of the (sub-)piece H and its bound (B) with the rounding term.
-inline Svg_path_segment svg_hermite(const std::vector<Svg_homogeneous>& H) {
-  const std::size_t q = H.size() - 1;
-  const double eps = std::numeric_limits<double>::epsilon();
-  const std::array<double, 2> c0{H[0][0] / H[0][2], H[0][1] / H[0][2]};
-  const std::array<double, 2> c1{H[q][0] / H[q][2], H[q][1] / H[q][2]};
-  std::array<double, 2> d0, d1;
-  for (int c = 0; c < 2; ++c) {
-    d0[c] = double(q) * (H[1][c] - H[1][2] * c0[c]) / H[0][2];
-    d1[c] = double(q) * (H[q - 1][2] * c1[c] - H[q - 1][c]) / H[q][2];
-  }
-  Svg_path_segment s;
-  s.degree = 3;
-  s.points = {c0, {c0[0] + d0[0] / 3, c0[1] + d0[1] / 3}, {c1[0] - d1[0] / 3, c1[1] - d1[1] / 3}, c1};
-  // E_k = (elevated A)_k - (W C)_k, k = 0 .. q + 3.
-  const std::size_t m = q + 3;
-  double max_e = 0, min_w = std::numeric_limits<double>::infinity(), max_a = 0, max_w = 0, max_c = 0;
-  for (const Svg_homogeneous& h : H) {
-    min_w = std::min(min_w, h[2]);
-    max_w = std::max(max_w, h[2]);
-    max_a = std::max(max_a, std::max(std::fabs(h[0]), std::fabs(h[1])));
-  }
-  for (const auto& p : s.points) max_c = std::max(max_c, std::max(std::fabs(p[0]), std::fabs(p[1])));
-  for (std::size_t k = 0; k <= m; ++k) {
-    std::array<double, 2> e{0, 0};
-    const double bm = svg_binomial(m, k);
-    // elevation of A (degree q) by 3: A_k^{(m)} = sum_i C(q,i) C(3,k-i) / C(m,k) A_i
-    // product W C: (WC)_k = sum_{i+j=k} C(q,i) C(3,j) / C(m,k) W_i C_j
-    for (std::size_t i = 0; i <= q; ++i) {
-      if (i > k || k - i > 3) continue;
-      const std::size_t j = k - i;
-      const double f = svg_binomial(q, i) * svg_binomial(3, j) / bm;
-      for (int c = 0; c < 2; ++c) e[c] += f * (H[i][c] - H[i][2] * s.points[j][c]);
-    }
-    max_e = std::max(max_e, std::hypot(e[0], e[1]));
-  }
-  const double rounding = 32 * double(q + 4) * eps * (max_a + max_w * max_c);
-  s.error_bound = (max_e + rounding) / min_w;
-  return s;
-}
-
-inline void svg_approximate(const std::vector<Svg_homogeneous>& H, std::size_t piece, double t0, double t1,
-                            double tolerance, int depth, std::vector<Svg_path_segment>& out) {
-  Svg_path_segment s = svg_hermite(H);
-  if (s.error_bound <= tolerance) {
-    s.piece = piece;
-    s.t0 = t0;
-    s.t1 = t1;
-    out.push_back(s);
-    return;
-  }
-  constexpr int max_depth = 40;
-  if (depth >= max_depth)
-    throw Non_convergence_error("fair::io::svg_path: piece " + std::to_string(piece) + " needs more than " +
-                                    std::to_string(max_depth) + " halvings for the tolerance",
-                                static_cast<std::size_t>(depth), s.error_bound);
-  std::vector<Svg_homogeneous> left, right;
-  svg_split(H, left, right);
-  const double tm = 0.5 * (t0 + t1);
-  svg_approximate(left, piece, t0, tm, tolerance, depth + 1, out);
-  svg_approximate(right, piece, tm, t1, tolerance, depth + 1, out);
-}
-
-inline std::string svg_number(double v) {
-  char buffer[40];
-  std::snprintf(buffer, sizeof buffer, "%.17g", v == 0 ? 0.0 : v);
-  return buffer;
-}
-
-template <class FT>
-double svg_finite(const FT& x, std::size_t piece, const char* what) {
-  const double d = CGAL::to_double(x);
-  if (!std::isfinite(d))
-    throw Precondition_error("fair::io::svg_path: piece " + std::to_string(piece) + ": a " + what +
-                             " is not finite as a double");
-  return d;
-}
-
-} // namespace internal
 
 /// The extent of a curve: the diagonal of its control points' bounding box (which contains the
 /// curve), in double.
@@ -231,8 +125,19 @@ Svg_path svg_path(const Nurbs_curve_2<K>& c, double tolerance) {
       H[i] = {w * internal::svg_finite(b.control_point(i).x(), j, "coordinate"),
               w * internal::svg_finite(b.control_point(i).y(), j, "coordinate"), w};
     }
+    std::vector<internal::Svg_cubic> cubics;
+    internal::svg_approximate(H, j, 0, 1, tolerance, 0, cubics);
     const std::size_t first = path.segments.size();
-    internal::svg_approximate(H, j, 0, 1, tolerance, 0, path.segments);
+    for (const internal::Svg_cubic& cubic : cubics) {
+      Svg_path_segment s;
+      s.piece = j;
+      s.t0 = cubic.s0;
+      s.t1 = cubic.s1;
+      s.degree = 3;
+      s.points = cubic.points;
+      s.error_bound = cubic.error_bound;
+      path.segments.push_back(s);
+    }
     // The piece's ends are its first and last control points, as doubles: (w x) / w may differ
     // from x by an ulp, and consecutive pieces must meet exactly (the ulp is inside the rounding
     // term of the bound).
