@@ -23,6 +23,7 @@
 #include <fair/Nurbs_curve_2.h>
 #include <fair/Optimal_curve_report.h>
 #include <fair/io/enum_names.h>
+#include <fair/io/internal/nearest_double.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/number_utils.h>
@@ -390,15 +391,16 @@ inline void write_json_file(const std::string& file, const nlohmann::json& j) {
   if (!out) throw Error("fair::io: error while writing " + file);
 }
 
-/// Writes points as CSV, one "x,y" line each with 17 significant digits (reads back to the
-/// same doubles), after the header line "x,y". Throws Precondition_error on a non-finite value.
+/// Writes points as CSV, one "x,y" line each: the nearest doubles with 17 significant digits (read
+/// back to the same doubles), after the header line "x,y". Throws Precondition_error on a non-finite value.
 template <class Point_2>
 void write_points_csv(std::ostream& out, const std::vector<Point_2>& points) {
   std::ostringstream text;
   text << std::setprecision(std::numeric_limits<double>::max_digits10);
   text << "x,y\n";
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const double x = CGAL::to_double(points[i].x()), y = CGAL::to_double(points[i].y());
+    // The nearest doubles: CGAL::to_double is not that in the exact kernels (io/internal/nearest_double.h).
+    const double x = internal::nearest_double_of(points[i].x()), y = internal::nearest_double_of(points[i].y());
     if (!std::isfinite(x) || !std::isfinite(y))
       throw Precondition_error(fair::internal::message("fair::io::write_points_csv: point ", i, " = (", x,
                                                        ", ", y, ") is not finite"));
