@@ -42,6 +42,7 @@
 #include <cstddef>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace fair {
@@ -57,9 +58,9 @@ struct Merge_state {
   std::vector<FT> intervals;  // intervals[i]: from the breakpoint of points[i] (closed) / points[i+1] (open) on
 };
 
-/// Squared diagonal of the bounding box of all control points of all parts (exact).
+/// The corners (xmin, ymin), (xmax, ymax) of the bounding box of all control points of all parts (exact).
 template <class K>
-typename K::FT squared_design_size(const std::vector<const Cubic_spline_2<K>*>& parts) {
+std::pair<typename K::Point_2, typename K::Point_2> design_box(const std::vector<const Cubic_spline_2<K>*>& parts) {
   typedef typename K::FT FT;
   const auto& p0 = parts.front()->control_points().front();
   FT xmin = p0.x(), xmax = p0.x(), ymin = p0.y(), ymax = p0.y();
@@ -70,7 +71,14 @@ typename K::FT squared_design_size(const std::vector<const Cubic_spline_2<K>*>& 
       if (p.y() < ymin) ymin = p.y();
       if (p.y() > ymax) ymax = p.y();
     }
-  return (xmax - xmin) * (xmax - xmin) + (ymax - ymin) * (ymax - ymin);
+  return {typename K::Point_2(xmin, ymin), typename K::Point_2(xmax, ymax)};
+}
+
+/// Squared diagonal of the bounding box of all control points of all parts (exact).
+template <class K>
+typename K::FT squared_design_size(const std::vector<const Cubic_spline_2<K>*>& parts) {
+  const auto box = design_box(parts);
+  return CGAL::squared_distance(box.first, box.second);
 }
 
 /// |p - q| in double without overflow or underflow in the intermediate squares (halved
@@ -85,17 +93,8 @@ double double_distance(const Point_2& p, const Point_2& q) {
 /// The diagonal of the bounding box of all control points, in double (double_distance).
 template <class K>
 double design_diagonal(const std::vector<const Cubic_spline_2<K>*>& parts) {
-  typedef typename K::FT FT;
-  const auto& p0 = parts.front()->control_points().front();
-  FT xmin = p0.x(), xmax = p0.x(), ymin = p0.y(), ymax = p0.y();
-  for (const auto* s : parts)
-    for (const auto& p : s->control_points()) {
-      if (p.x() < xmin) xmin = p.x();
-      if (p.x() > xmax) xmax = p.x();
-      if (p.y() < ymin) ymin = p.y();
-      if (p.y() > ymax) ymax = p.y();
-    }
-  return double_distance(typename K::Point_2(xmin, ymin), typename K::Point_2(xmax, ymax));
+  const auto box = design_box(parts);
+  return double_distance(box.first, box.second);
 }
 
 /// Where a merged breakpoint comes from: the part and the breakpoint index inside it (for a

@@ -105,24 +105,8 @@ Feature_report certified_features(const std::vector<Piece>& curve, Feature_kind 
   if constexpr (kind_of<Piece> == Piece_kind::GENERIC) {
     // Generic pieces: sign changes of kappa (or dkappa/dt) on the samples.
     report.certified = false;
-    int last = 0;
-    for (std::size_t i = 0; i < curve.size(); ++i) {
-      Piece_jet<Piece> jet(curve[i]);
-      const int m = generic_feature_samples;
-      for (int k = 0; k <= m; ++k) {
-        const double t = double(k) / m;
-        const Jet j = jet(t);
-        const double v = which == Feature_kind::INFLECTION ? (j.x1 * j.y2 - j.y1 * j.x2) : j.curvature_derivative();
-        const int s = (v > 0) - (v < 0);
-        if (s != 0 && last != 0 && s != last) {
-          Isolating_interval I;
-          I.lower = CGAL::Gmpq(t);
-          I.upper = CGAL::Gmpq(t);
-          report.features.push_back(make_feature(curve[i], i, t, I, k == 0));
-        }
-        if (s != 0) last = s;
-      }
-    }
+    int last = 0, first = 0;
+    for (std::size_t i = 0; i < curve.size(); ++i) sampled_features(curve[i], i, which, last, first, report);
     return report;
   } else {
     int last = 0;          // last nonzero gap sign along the curve
