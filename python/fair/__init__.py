@@ -200,13 +200,14 @@ def csr_spline(samples, closed=False, knots="chordal"):
     return Curve("csr_spline", _fair.csr_spline(*args, **kwargs), args, kwargs)
 
 
-def interpolating_spline(points, method="cubic", closed=False, end="natural", *, start_derivative=None,
-                         end_derivative=None):
-    """The classic curves of fair-curves spline: ``method`` "cubic" (C2 interpolating spline on
-    chordal parameters; ``end`` "natural", "not-a-knot" or "clamped" with both derivatives),
+def interpolating_spline(points, method="cubic", closed=False, end="natural", *, knots="uniform",
+                         start_derivative=None, end_derivative=None):
+    """The classic curves of fair-curves spline: ``method`` "cubic" (the C2 interpolating spline
+    on ``knots`` "uniform" (the library's default, parameters 0, 1, ..., n), "chordal" or
+    "centripetal"; ``end`` "natural", "not-a-knot" or "clamped" with both derivatives d/du),
     "catmull-rom", "four-point", "quasi" or "bspline"."""
     args = (_points_arg(points),)
-    kwargs = dict(method=method, closed=closed, end=end, start_derivative=start_derivative,
+    kwargs = dict(method=method, closed=closed, end=end, knots=knots, start_derivative=start_derivative,
                   end_derivative=end_derivative)
     return Curve("interpolating_spline", _fair.interpolating_spline(*args, **kwargs), args, kwargs)
 

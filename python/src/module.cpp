@@ -272,7 +272,8 @@ Solved_curve optimal_curve(const py::object& points, bool closed, const py::obje
 }
 
 Solved_curve interpolating_spline(const py::object& points, const std::string& method, bool closed, const std::string& end,
-                                  const py::object& start_derivative, const py::object& end_derivative) {
+                                  const std::string& knots, const py::object& start_derivative,
+                                  const py::object& end_derivative) {
   // The option logic of fair-curves spline (spline_command.cpp, run_spline).
   const bool clamped = end == "clamped";
   if (end != "natural" && end != "not-a-knot" && !clamped)
@@ -280,6 +281,14 @@ Solved_curve interpolating_spline(const py::object& points, const std::string& m
   if (method != "cubic" && method != "catmull-rom" && method != "four-point" && method != "quasi" && method != "bspline")
     throw fair::Invalid_input_error("method: expected cubic, catmull-rom, four-point, quasi or bspline, got '" + method + "'");
   if (end != "natural" && method != "cubic") throw fair::Invalid_input_error("end applies to method=\"cubic\" only");
+  // The knots of the cubic (Cubic_interpolating_spline_options::knot_spacing; the library's and
+  // the program's default is uniform).
+  fair::Knot_spacing spacing = fair::Knot_spacing::UNIFORM;
+  if (!fair::io::try_parse_spelling(knots, spacing))
+    throw fair::Invalid_input_error("knots: expected " + fair::io::spellings_list<fair::Knot_spacing>() + ", got '" +
+                                    knots + "'");
+  if (spacing != fair::Knot_spacing::UNIFORM && method != "cubic")
+    throw fair::Invalid_input_error("knots applies to method=\"cubic\" only");
   if (clamped != (!start_derivative.is_none() && !end_derivative.is_none()) ||
       (!clamped && (!start_derivative.is_none() || !end_derivative.is_none())))
     throw fair::Invalid_input_error("start_derivative/end_derivative: give both with end=\"clamped\", and only then");
@@ -297,7 +306,10 @@ Solved_curve interpolating_spline(const py::object& points, const std::string& m
     fair::Cubic_interpolating_spline_options options;
     options.closed = closed;
     options.end_condition = end == "not-a-knot" ? fair::Spline_end_condition::NOT_A_KNOT : fair::Spline_end_condition::NATURAL;
-    const nlohmann::json extra = closed ? nlohmann::json::object() : nlohmann::json{{"end", end}};
+    options.knot_spacing = spacing;
+    // fair-curves spline writes "end" for an open cubic; the knots only when not the default.
+    nlohmann::json extra = closed ? nlohmann::json::object() : nlohmann::json{{"end", end}};
+    if (spacing != fair::Knot_spacing::UNIFORM) extra["knot_spacing"] = fair::io::spelling(spacing);
     if (clamped) return solved(fair::Cubic_interpolating_spline_2<K>(p, d0, d1, options), method, extra);
     return solved(fair::Cubic_interpolating_spline_2<K>(p, options), method, extra);
   }
@@ -455,7 +467,7 @@ PYBIND11_MODULE(_fair, m) {
         py::arg("tangents") = py::none(), py::arg("normals") = py::none(), py::arg("corners") = py::none(),
         py::arg("throw_on_failure") = false);
   m.def("interpolating_spline", &interpolating_spline, py::arg("points"), py::arg("method") = "cubic",
-        py::arg("closed") = false, py::arg("end") = "natural", py::arg("start_derivative") = py::none(),
+        py::arg("closed") = false, py::arg("end") = "natural", py::arg("knots") = "uniform", py::arg("start_derivative") = py::none(),
         py::arg("end_derivative") = py::none());
   m.def("certify_file", &certify_file, py::arg("file"), py::arg("points_file") = "", py::arg("tolerance") = 0.0);
 }
