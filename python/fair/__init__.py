@@ -17,7 +17,7 @@ from . import _fair
 from ._fair import (Error, InvalidInputError, PreconditionError, SolveError,  # noqa: F401
                     NonConvergenceError, InternalError)
 
-__all__ = ["kappa_curve", "optimal_curve", "cardinal_spline", "csr_spline", "interpolating_spline",
+__all__ = ["kappa_curve", "basic_shape_design", "optimal_curve", "cardinal_spline", "csr_spline", "interpolating_spline",
            "Curve", "Nurbs", "Error", "InvalidInputError", "PreconditionError", "SolveError",
            "NonConvergenceError", "InternalError"]
 
@@ -212,5 +212,26 @@ def interpolating_spline(points, method="cubic", closed=False, end="natural", *,
     return Curve("interpolating_spline", _fair.interpolating_spline(*args, **kwargs), args, kwargs)
 
 
-_FAMILIES = {"kappa_curve": kappa_curve, "optimal_curve": optimal_curve, "cardinal_spline": cardinal_spline,
+def basic_shape_design(design):
+    """Design with basic shapes (fair::basic_shape_design; fair-curves shapes): ``design`` is the
+    JSON design description of doc/basic_shapes.md, as a dict, a JSON string, or the path of a
+    design file (os.PathLike). The result is one C2 cubic spline; its report has the joins, the
+    shapes' parts and the Proposition 1 convexity report of the program."""
+    if isinstance(design, dict):
+        text, name = _json.dumps(design), "design"
+    elif isinstance(design, str) and design.lstrip().startswith("{"):
+        text, name = design, "design"
+    else:
+        name = _os.fspath(design)
+        with open(name) as f:
+            text = f.read()
+    return _shapes(text, name)
+
+
+def _shapes(text, name):
+    # pickled by the design's text and name (the name is the report's "design" member)
+    return Curve("basic_shape_design", _fair.basic_shape_design(text, name), (text, name), {})
+
+
+_FAMILIES = {"basic_shape_design": _shapes, "kappa_curve": kappa_curve, "optimal_curve": optimal_curve, "cardinal_spline": cardinal_spline,
              "csr_spline": csr_spline, "interpolating_spline": interpolating_spline}

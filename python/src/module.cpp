@@ -9,6 +9,7 @@
 // rationals). The Python layer (python/fair/__init__.py) adds the curve object, pickling and
 // sampling; this file only converts, solves (without the GIL) and reports.
 
+#include <fair/Basic_shape_design.h>
 #include <fair/Catmull_rom_2.h>
 #include <fair/Cardinal_spline_2.h>
 #include <fair/Csr_spline_2.h>
@@ -21,12 +22,15 @@
 #include <fair/Kappa_curve_2.h>
 #include <fair/Nurbs_curve_2.h>
 #include <fair/Optimal_curve_2.h>
+#include <fair/Spline_convexity.h>
 #include <fair/io/certify_curve.h>
 #include <fair/io/enum_names.h>
+#include <fair/io/read_design.h>
 #include <fair/io/read_points.h>
 #include <fair/io/write_dxf.h>
 #include <fair/io/write_json.h>
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <pybind11/numpy.h>
@@ -333,6 +337,66 @@ Solved_curve interpolating_spline(const py::object& points, const std::string& m
   return solved(fair::Cubic_bspline_2<K>(p, options), method);
 }
 
+// The basic-shape design (fair::basic_shape_design of a design file, doc/basic_shapes.md) with
+// the report of fair-curves shapes -o (shapes_command.cpp: report_json, convexity_json; and
+// basic_shapes_figures.h: certified_convexity, Proposition 1 decided in EPECK on the spline's own
+// doubles). Those few lines of JSON glue live in the program's .cpp, so they are repeated here.
+const char* orientation_name(CGAL::Orientation o) {
+  return o == CGAL::LEFT_TURN ? "left" : (o == CGAL::RIGHT_TURN ? "right" : "collinear");
+}
+
+Solved_curve basic_shape_design(const std::string& text, const std::string& name) {
+  typedef CGAL::Exact_predicates_exact_constructions_kernel E;
+  py::gil_scoped_release release;
+  const fair::io::Design_file<K> f = fair::io::parse_design<K>(text, name);
+  const fair::Basic_shape_design_2<K> d = fair::basic_shape_design(f.shapes, f.options());
+  std::vector<E::FT> t, w;
+  std::vector<E::Point_2> cp;
+  for (const double x : d.spline.breakpoints()) t.push_back(E::FT(x));
+  for (const double x : d.spline.weights()) w.push_back(E::FT(x));
+  for (const Point_2& x : d.spline.control_points()) cp.push_back(E::Point_2(E::FT(x.x()), E::FT(x.y())));
+  const fair::Spline_convexity_report<E> c = fair::spline_convexity(fair::Cubic_spline_2<E>(t, cp, w, d.spline.is_closed()));
+  nlohmann::json joins = nlohmann::json::array(), shapes = nlohmann::json::array();
+  for (const fair::Shape_join& j : d.joins)
+    joins.push_back({{"before", j.before}, {"after", j.after}, {"inside", j.inside}, {"kind", fair::to_string(j.kind)},
+                     {"distance", j.distance}, {"control_point", j.control_point}});
+  for (std::size_t k = 0; k < f.shapes.size(); ++k) {
+    nlohmann::json parts = nlohmann::json::array(), marks = nlohmann::json::array();
+    for (const fair::Shape_span& span : d.spans)
+      if (span.shape == k)
+        parts.push_back({{"first_piece", span.first_piece}, {"end_piece", span.end_piece},
+                         {"first_exact", span.first_exact}, {"end_exact", span.end_exact}});
+    for (const Point_2& p : f.marked_points[k]) marks.push_back(fair::io::point_to_json(p, "marked point"));
+    shapes.push_back({{"type", f.types[k]}, {"parts", std::move(parts)}, {"marked_points", std::move(marks)}});
+  }
+  nlohmann::json extra{{"design", f.file},
+                       {"exact", false},
+                       {"merge_tolerance", f.merge_tolerance},
+                       {"merge_distance", d.merge_distance},
+                       {"joins", std::move(joins)},
+                       {"shapes", std::move(shapes)}};
+  nlohmann::json convexity{{"polygon_convex", c.polygon_convex},
+                           {"polygon_orientation", orientation_name(c.polygon_orientation)},
+                           {"curve_locally_convex", c.curve_locally_convex},
+                           {"curve_orientation", orientation_name(c.curve_orientation)},
+                           {"inflected_pieces", c.inflected_pieces},
+                           {"pieces_by_filter", c.pieces_by_filter},
+                           {"pieces_exact", c.pieces_exact},
+                           {"proposition_holds", c.proposition_holds()}};
+  if (c.polygon_violation != c.npos) convexity["polygon_violation"] = c.polygon_violation;
+  extra["convexity"] = std::move(convexity);
+  extra["bspline"] = fair::io::nurbs_to_json(d.nurbs());
+  // The design's points are its marked points, shape after shape.
+  std::vector<Point_2> points;
+  for (const auto& marks : f.marked_points) points.insert(points.end(), marks.begin(), marks.end());
+  Solved_curve s;
+  s.method = "shapes";
+  s.json = fair::io::curve_to_json("shapes", f.closed, points, d.spline.pieces(), extra);
+  fair::io::check_json_finite(s.json);
+  s.nurbs = d.nurbs();
+  return s;
+}
+
 // ------------------------------------------------------------------ evaluation
 
 const fair::Nurbs_curve_2<K>& nurbs_of(const Solved_curve& c) {
@@ -418,7 +482,15 @@ PYBIND11_MODULE(_fair, m) {
     } catch (const fair::Precondition_error& e) {
       PyErr_SetString(precondition.ptr(), e.what());
     } catch (const fair::Solve_error& e) {
-      PyErr_SetString(solve.ptr(), e.what());
+      // The exception carries the family's report (Solve_error::report<T>) as `.report`, the
+      // dict of to_json(report) (fair/io/write_json.h), as the curve would have had it.
+      nlohmann::json r;
+      if (const auto* k = e.report<fair::Kappa_curve_report>()) r = fair::io::to_json(*k);
+      else if (const auto* o = e.report<fair::Optimal_curve_report>()) r = fair::io::to_json(*o);
+      else if (const auto* c = e.report<fair::Cardinal_spline_report<K>>()) r = fair::io::to_json(*c);
+      py::object value = py::reinterpret_borrow<py::object>(solve.ptr())(e.what());
+      value.attr("report") = r.is_null() ? py::object(py::none()) : py::module_::import("json").attr("loads")(r.dump());
+      PyErr_SetObject(solve.ptr(), value.ptr());
     } catch (const fair::Non_convergence_error& e) {
       PyErr_SetString(non_convergence.ptr(), e.what());
     } catch (const fair::Internal_error& e) {
@@ -469,5 +541,6 @@ PYBIND11_MODULE(_fair, m) {
   m.def("interpolating_spline", &interpolating_spline, py::arg("points"), py::arg("method") = "cubic",
         py::arg("closed") = false, py::arg("end") = "natural", py::arg("knots") = "uniform", py::arg("start_derivative") = py::none(),
         py::arg("end_derivative") = py::none());
+  m.def("basic_shape_design", &basic_shape_design, py::arg("text"), py::arg("name") = "design");
   m.def("certify_file", &certify_file, py::arg("file"), py::arg("points_file") = "", py::arg("tolerance") = 0.0);
 }

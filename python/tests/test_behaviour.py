@@ -84,8 +84,11 @@ def test_solve_error_with_throw_on_failure():
     # throw_on_failure the library's Solve_error becomes fair.SolveError with its message.
     c = fair.kappa_curve(wave(), max_iterations=0)
     assert c.status == "unsolved"
-    with pytest.raises(fair.SolveError):
+    with pytest.raises(fair.SolveError) as failure:
         fair.kappa_curve(wave(), max_iterations=0, throw_on_failure=True)
+    # the library's message, and the report the curve would have had
+    assert "unsolved" in str(failure.value)
+    assert failure.value.report == c.report["report"]
 
 
 def batch():
@@ -117,7 +120,9 @@ def test_pickle_round_trip_resolves_the_same_curve():
     curves = [fair.kappa_curve(wave(), weights="auto", clamp=0.25), fair.optimal_curve(polygon(), closed=True, lam=0.3),
               fair.cardinal_spline(wave(), alpha=0.7), fair.csr_spline(polygon(), closed=True, knots="uniform"),
               fair.interpolating_spline(wave(), end="clamped", start_derivative=(1, 0), end_derivative=(1, 1)),
-              fair.optimal_curve(wave(), tangents=np.array([(0, 1.0, 0.0)]))]
+              fair.optimal_curve(wave(), tangents=np.array([(0, 1.0, 0.0)])),
+              fair.basic_shape_design(os.path.join(os.environ.get("FAIR_SOURCE_DIR", "."), "test", "data", "shapes",
+                                                   "design.json"))]
     for c in curves:
         d = pickle.loads(pickle.dumps(c))
         assert type(d) is fair.Curve and d.to_json() == c.to_json() and repr(d) == repr(c)

@@ -203,3 +203,42 @@ def test_certify_is_the_exact_certificate():
     assert set(k) == {"C0", "G1", "|kappa|", "interpolation", "kappa maxima"}
     assert all(p["holds"] for p in k.values()), k
     assert all(p["defect"] <= 1e-9 for p in k.values())
+
+
+# ------------------------------------------------------------------ basic shapes
+DESIGN = os.path.join(SOURCE_DIR, "test", "data", "shapes", "design.json")
+
+
+def test_basic_shape_design_is_a_c2_cubic_and_equals_the_program(tmp_path):
+    with open(DESIGN) as f:
+        design = json.load(f)
+    curve = fair.basic_shape_design(design)
+    n = curve.nurbs()
+    assert curve.status is None and n.degree == 3 and curve.method == "shapes"
+    report = curve.report
+    assert report["design"] == "design" and report["convexity"]["proposition_holds"] in (True, False)
+    assert len(report["shapes"]) == len(design["shapes"])
+    # scipy: the same curve from the knots and control points (rational: homogeneous form)
+    w = n.weights if n.rational else np.ones(len(n.control_points))
+    h = BSpline(n.knots, np.column_stack([n.control_points * w[:, None], w]), 3)
+    u = np.linspace(*curve.domain, 200)[:-1]
+    hu = h(u)
+    assert np.max(np.abs(hu[:, :2] / hu[:, 2:] - curve(u))) <= 1e-12 * np.ptp(n.control_points, axis=0).max()
+    # the certificate of its method: C2 cubic with Proposition 1
+    cert = curve.certify(tolerance=1e-9)
+    assert list(cert) == ["C0", "G1", "|kappa|", "Proposition 1"] and cert["C0"]["holds"]
+    # a path gives the program's "design" member: the program's JSON for the same file
+    by_path = fair.basic_shape_design(DESIGN)
+    assert by_path.report["design"] == DESIGN and by_path.report["pieces"] == report["pieces"]
+    if FAIR_CURVES and os.path.exists(FAIR_CURVES):
+        out = tmp_path / "shapes.json"
+        run = subprocess.run([FAIR_CURVES, "shapes", DESIGN, "-o", str(out)], capture_output=True, text=True)
+        assert run.returncode == 0, run.stderr
+        assert json.loads(out.read_text()) == by_path.report
+
+
+def test_basic_shape_design_errors_name_the_json_path():
+    with open(os.path.join(SOURCE_DIR, "test", "data", "shapes", "bad_radius.json")) as f:
+        bad = json.load(f)
+    with pytest.raises(fair.InvalidInputError, match="design"):
+        fair.basic_shape_design(bad)
