@@ -88,6 +88,24 @@ std::vector<Point_2> to_points(const py::object& object, const char* what) {
   return out;
 }
 
+/// A number option (a Python int or float): anything else is fair::Invalid_input_error naming the
+/// option, as the program's option_number (pybind11's cast_error would be an untyped RuntimeError).
+double number_option(const py::object& o, const char* what) {
+  try {
+    return o.cast<double>();
+  } catch (const py::cast_error&) {
+    throw fair::Invalid_input_error(fair::internal::message(what, ": expected a number, got ", std::string(py::repr(o))));
+  }
+}
+
+/// An iteration count: an integer >= 0 (an integral float too), at most 1e9 like the program's.
+std::size_t count_option(const py::object& o, const char* what) {
+  const double v = number_option(o, what);
+  if (!(v >= 0) || v != std::floor(v) || v > 1e9)
+    throw fair::Invalid_input_error(fair::internal::message(what, ": expected an integer >= 0, got ", std::string(py::repr(o))));
+  return static_cast<std::size_t>(v);
+}
+
 /// The program's check of a point file (count, equal consecutive points) on `points`.
 void check_points(const std::vector<Point_2>& points, std::size_t minimum, bool closed, const char* method) {
   fair::io::Point_file<K> data;
@@ -124,7 +142,7 @@ Solved_curve kappa_curve(const py::object& points, bool closed, const py::object
       throw fair::Invalid_input_error("weights: expected \"auto\", 1 or a number > 0, got '" + w + "'");
     options.weights = w == "auto" ? fair::Kappa_weights::AUTOMATIC : fair::Kappa_weights::UNIT;
   } else {
-    fixed = weights.cast<double>();
+    fixed = number_option(weights, "weights");
     if (!(fixed > 0) || !std::isfinite(fixed))
       throw fair::Invalid_input_error(fair::internal::message("weights: expected \"auto\" or a number > 0, got ", fixed));
     options.weights = fixed == 1 ? fair::Kappa_weights::UNIT : fair::Kappa_weights::FIXED;
@@ -133,7 +151,7 @@ Solved_curve kappa_curve(const py::object& points, bool closed, const py::object
     if (options.weights != fair::Kappa_weights::AUTOMATIC)
       throw fair::Invalid_input_error("tension and clamp apply to weights=\"auto\" only");
   if (!clamp.is_none()) {
-    options.weight_clamp = clamp.cast<double>();
+    options.weight_clamp = number_option(clamp, "clamp");
     if (!(options.weight_clamp > 0) || !std::isfinite(options.weight_clamp))
       throw fair::Invalid_input_error(fair::internal::message("clamp: expected a number > 0, got ", options.weight_clamp));
   }
@@ -143,11 +161,7 @@ Solved_curve kappa_curve(const py::object& points, bool closed, const py::object
       throw fair::Invalid_input_error(fair::internal::message("tension: expected one number per point (", p.size(), ")"));
     options.tension.assign(t.data(), t.data() + t.shape(0));
   }
-  if (!max_iterations.is_none()) {
-    const long long cap = max_iterations.cast<long long>();
-    if (cap < 0) throw fair::Invalid_input_error("max_iterations: expected an integer >= 0");
-    options.max_iterations = static_cast<std::size_t>(cap);
-  }
+  if (!max_iterations.is_none()) options.max_iterations = count_option(max_iterations, "max_iterations");
   py::gil_scoped_release release;
   check_points(p, 3, closed, "kappa_curve");
   if (options.weights == fair::Kappa_weights::FIXED) options.fixed_weights.assign(p.size(), fixed);
@@ -167,7 +181,7 @@ Solved_curve cardinal_spline(const py::object& points, bool closed, const py::ob
   options.closed = closed;
   options.throw_on_failure = throw_on_failure;
   if (!alpha.is_none()) {
-    options.alpha = alpha.cast<double>();
+    options.alpha = number_option(alpha, "alpha");
     if (!(*options.alpha > 0) || !std::isfinite(*options.alpha))
       throw fair::Invalid_input_error(fair::internal::message("alpha: expected a number > 0, got ", *options.alpha));
   }
@@ -242,7 +256,7 @@ Solved_curve optimal_curve(const py::object& points, bool closed, const py::obje
   if (!lam.is_none() && (!length_weight.is_none() || !curvature_weight.is_none()))
     throw fair::Invalid_input_error("lam sets the length and curvature weights (eq. 10): drop length_weight/curvature_weight");
   auto number = [](const py::object& o, const char* what, double low, double high) {
-    const double v = o.cast<double>();
+    const double v = number_option(o, what);
     if (!(v >= low && v <= high))
       throw fair::Invalid_input_error(fair::internal::message(what, ": expected a value in [", low, ", ", high, "], got ", v));
     return v;
