@@ -129,7 +129,9 @@ class Curve:
         """The library's exact certificate (fair/io/certify_curve.h, as ``fair-curves certify``):
         every number of the curve JSON is read as the exact rational it denotes and each property
         its method claims (C0, G1, |kappa|, interpolation of the input points, ...) is decided in
-        exact arithmetic. Returns {name: {"holds", "defect", "detail"}}."""
+        exact arithmetic. Returns {name: {"holds", "defect", "detail"}}; a kappa-curve's also has
+        "kappa_certificate": fair::certify (fair/Kappa_certificate.h), the exact curve of the
+        solver's state certified fraction-free ("proves_outcome", per piece and per join)."""
         with _tempfile.TemporaryDirectory(prefix="fair-certify-") as d:
             curve_file = _os.path.join(d, "curve.json")
             points_file = _os.path.join(d, "points.json")
@@ -138,7 +140,10 @@ class Curve:
             with open(points_file, "w") as f:
                 _json.dump({"points": self._json["points"], "closed": self.closed}, f)
             props = _fair.certify_file(curve_file, points_file, float(tolerance))
-        return {p["name"]: {"holds": p["holds"], "defect": p["defect"], "detail": p["detail"]} for p in props}
+        out = {p["name"]: {"holds": p["holds"], "defect": p["defect"], "detail": p["detail"]} for p in props}
+        if self._family == "kappa_curve":
+            out["kappa_certificate"] = self._solved.kappa_certificate()
+        return out
 
     # --- pickling: by the input and the options, re-solved on load
     def __reduce__(self):

@@ -19,6 +19,7 @@
 #include <fair/Errors.h>
 #include <fair/Fairness_metrics.h>
 #include <fair/Four_point_subdivision_2.h>
+#include <fair/Kappa_certificate.h>
 #include <fair/Kappa_curve_2.h>
 #include <fair/Nurbs_curve_2.h>
 #include <fair/Optimal_curve_2.h>
@@ -38,6 +39,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -57,6 +59,7 @@ struct Solved_curve {
   std::string method;
   nlohmann::json json;
   std::optional<fair::Nurbs_curve_2<K>> nurbs;  // absent only when a failed solve left no pieces
+  std::shared_ptr<const fair::Kappa_curve_2<K>> kappa;  // a kappa-curve, for its exact certificate
 };
 
 /// An (N, 2) array or a sequence of pairs as points: a wrong shape, a value that is not a number,
@@ -165,7 +168,8 @@ Solved_curve kappa_curve(const py::object& points, bool closed, const py::object
   py::gil_scoped_release release;
   check_points(p, 3, closed, "kappa_curve");
   if (options.weights == fair::Kappa_weights::FIXED) options.fixed_weights.assign(p.size(), fixed);
-  const fair::Kappa_curve_2<K> curve(p, options);
+  auto kept = std::make_shared<const fair::Kappa_curve_2<K>>(p, options);
+  const fair::Kappa_curve_2<K>& curve = *kept;
   // The members of fair-curves kappa -o (kappa_command.cpp, curve_json).
   std::vector<nlohmann::json> per_piece;
   for (std::size_t j = 0; j < curve.number_of_pieces(); ++j)
@@ -173,7 +177,58 @@ Solved_curve kappa_curve(const py::object& points, bool closed, const py::object
   nlohmann::json extra{{"weights", fair::io::spelling(options.weights)}};
   if (options.weights == fair::Kappa_weights::FIXED) extra["fixed_weight"] = fixed;
   if (options.weights == fair::Kappa_weights::AUTOMATIC) extra["weight_clamp"] = options.weight_clamp;
-  return solved(curve, "kappa", extra, per_piece);
+  Solved_curve s = solved(curve, "kappa", extra, per_piece);
+  s.kappa = std::move(kept);
+  return s;
+}
+
+/// fair::certify(kappa-curve) (fair/Kappa_certificate.h): the exact curve of the solver's state
+/// certified fraction-free in exact rationals, as a dict of Kappa_certificate's verdicts, per piece
+/// and per join. Only the verdicts and bounds: the exact pieces stay in C++.
+py::dict kappa_certificate(const Solved_curve& c) {
+  if (!c.kappa) throw fair::Precondition_error("kappa_certificate: not a kappa-curve");
+  std::optional<fair::Kappa_certificate> cert;
+  {
+    py::gil_scoped_release release;
+    cert.emplace(fair::certify(*c.kappa));
+  }
+  py::list pieces, joins;
+  for (const auto& p : cert->pieces) {
+    py::dict d;
+    d["point"] = p.point_index;
+    d["valid_piece"] = p.valid_piece;
+    d["point_on_piece"] = p.point_on_piece;
+    d["interpolation_error"] = p.interpolation_error;
+    d["extrema"] = p.extrema;
+    d["maxima"] = p.maxima;
+    d["unique_maximum"] = p.unique_maximum;
+    d["maximum_at_t"] = p.maximum_at_t;
+    d["t"] = p.t;
+    d["root_interval"] = py::make_tuple(p.root_lower, p.root_upper);
+    d["root_distance"] = p.root_distance;
+    pieces.append(d);
+  }
+  for (const auto& j : cert->joins) {
+    py::dict d;
+    d["piece"] = j.piece;
+    d["c0"] = j.c0;
+    d["g1"] = j.g1;
+    d["kappa_mismatch"] = py::make_tuple(j.kappa_mismatch_lower, j.kappa_mismatch_upper);
+    joins.append(d);
+  }
+  py::dict out;
+  out["status"] = fair::io::spelling(cert->status);
+  out["proves_outcome"] = cert->proves_outcome();
+  out["valid"] = cert->valid();
+  out["all_points_on_pieces"] = cert->all_points_on_pieces();
+  out["all_g1"] = cert->all_g1();
+  out["all_maxima_at_points"] = cert->all_maxima_at_points();
+  out["max_kappa_mismatch"] = cert->max_kappa_mismatch();
+  out["max_root_distance"] = cert->max_root_distance();
+  out["max_interpolation_error"] = cert->max_interpolation_error();
+  out["pieces"] = pieces;
+  out["joins"] = joins;
+  return out;
 }
 
 Solved_curve cardinal_spline(const py::object& points, bool closed, const py::object& alpha, bool throw_on_failure) {
@@ -532,6 +587,7 @@ PYBIND11_MODULE(_fair, m) {
         std::copy(n.knots().begin(), n.knots().end(), u.mutable_data());
         return py::make_tuple(n.degree(), u, cps, w, n.is_closed(), n.is_rational());
       })
+      .def("kappa_certificate", &kappa_certificate)
       .def("domain", [](const Solved_curve& c) { return nurbs_of(c).domain(); })
       .def("evaluate", &evaluate, py::arg("u"), py::arg("nu") = 0)
       .def("curvature", &curvature, py::arg("u"))

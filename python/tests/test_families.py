@@ -200,9 +200,24 @@ def test_certify_is_the_exact_certificate():
     # a kappa-curve (interior: every point at a curvature maximum): each property within rounding
     # of the double solve (doc/fair_curves_program.md, "certify")
     k = fair.kappa_curve(wave(5), closed=True).certify(tolerance=1e-9)
+    kc = k.pop("kappa_certificate")
     assert set(k) == {"C0", "G1", "|kappa|", "interpolation", "kappa maxima"}
     assert all(p["holds"] for p in k.values()), k
     assert all(p["defect"] <= 1e-9 for p in k.values())
+    # fair::certify: the exact curve of the solver's state proves the outcome "interior": every
+    # point exactly on its piece, C0 and G1 exactly, one certified maximum per piece near t_i
+    assert kc["status"] == "interior" and kc["proves_outcome"] and kc["valid"]
+    assert kc["all_points_on_pieces"] and kc["all_g1"] and kc["all_maxima_at_points"]
+    assert len(kc["pieces"]) == 5 and len(kc["joins"]) == 5
+    for p in kc["pieces"]:
+        lo, hi = p["root_interval"]
+        assert p["unique_maximum"] and p["maxima"] == 1 and lo <= hi and p["root_distance"] <= 1e-9
+    assert kc["max_kappa_mismatch"] <= 1e-9
+    # on joins: proved as that outcome (valid_on_joins), not as interior; unsolved: nothing proved
+    j = fair.kappa_curve(wave()).certify(tolerance=1e-9)["kappa_certificate"]
+    assert (j["status"], j["proves_outcome"], j["valid"]) == ("on_joins", True, False)
+    u = fair.kappa_curve(wave(), max_iterations=0).certify(tolerance=1e-9)["kappa_certificate"]
+    assert (u["status"], u["proves_outcome"]) == ("unsolved", False)
 
 
 # ------------------------------------------------------------------ basic shapes
