@@ -188,3 +188,17 @@ def test_solves_release_the_gil():
     inside = [t for t in stamps if window["start"] + 2 * sys.getswitchinterval() < t < window["end"]]
     assert window["end"] - window["start"] > 4 * sys.getswitchinterval()
     assert len(inside) > 100, (len(inside), window)
+
+
+def _solve_in_worker(seed):
+    # module-level, so that a ProcessPoolExecutor can pickle the call
+    return fair.kappa_curve(polygon(9, seed), closed=True, weights="auto")
+
+
+def test_curves_cross_process_boundaries():
+    # The worker returns Curve objects: they are pickled by input and options and solved again
+    # in this process, to the same JSON as a solve here.
+    from concurrent.futures import ProcessPoolExecutor
+    with ProcessPoolExecutor(max_workers=2) as pool:
+        curves = list(pool.map(_solve_in_worker, range(4)))
+    assert [c.to_json() for c in curves] == [_solve_in_worker(s).to_json() for s in range(4)]
