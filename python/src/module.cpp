@@ -302,7 +302,8 @@ void add_constraints(const py::object& rows, fair::Point_constraint_kind kind, s
 Solved_curve optimal_curve(const py::object& points, bool closed, const py::object& lam, const py::object& length_weight,
                            const py::object& curvature_weight, const py::object& curvature_exponent,
                            const py::object& resolution, const std::string& solver, const py::object& tangents,
-                           const py::object& normals, const py::object& corners, bool throw_on_failure) {
+                           const py::object& normals, const py::object& corners, const py::object& segment_lambda,
+                           bool throw_on_failure) {
   fair::Optimal_curve_options options;
   options.closed = closed;
   options.throw_on_failure = throw_on_failure;
@@ -316,8 +317,19 @@ Solved_curve optimal_curve(const py::object& points, bool closed, const py::obje
       throw fair::Invalid_input_error(fair::internal::message(what, ": expected a value in [", low, ", ", high, "], got ", v));
     return v;
   };
+  if (!lam.is_none() && !segment_lambda.is_none())
+    throw fair::Invalid_input_error("lam and segment_lambda exclude each other");
+  if (!segment_lambda.is_none() && (!length_weight.is_none() || !curvature_weight.is_none()))
+    throw fair::Invalid_input_error("segment_lambda sets the length and curvature weights (eq. 10): drop length_weight/curvature_weight");
   if (!lam.is_none()) options.lambda = number(lam, "lam", 0, 1);
-  if (!length_weight.is_none() || !curvature_weight.is_none()) options.lambda = -1;
+  if (!length_weight.is_none() || !curvature_weight.is_none() || !segment_lambda.is_none()) options.lambda = -1;
+  if (!segment_lambda.is_none()) {
+    // One lambda per segment (the program's --lambda-file); its count and range are checked by
+    // the solve (internal/optimal/hierarchy.h).
+    Array l = Array::ensure(segment_lambda);
+    if (!l || l.ndim() != 1) throw fair::Invalid_input_error("segment_lambda: expected one number per segment");
+    options.segment_lambda.assign(l.data(), l.data() + l.shape(0));
+  }
   if (!length_weight.is_none()) options.length_weight = number(length_weight, "length_weight", 0, HUGE_VAL);
   if (!curvature_weight.is_none()) options.curvature_weight = number(curvature_weight, "curvature_weight", 0, HUGE_VAL);
   if (!curvature_exponent.is_none()) options.curvature_exponent = number(curvature_exponent, "curvature_exponent", 1, HUGE_VAL);
@@ -607,7 +619,7 @@ PYBIND11_MODULE(_fair, m) {
         py::arg("length_weight") = py::none(), py::arg("curvature_weight") = py::none(),
         py::arg("curvature_exponent") = py::none(), py::arg("resolution") = py::none(), py::arg("solver") = "newton",
         py::arg("tangents") = py::none(), py::arg("normals") = py::none(), py::arg("corners") = py::none(),
-        py::arg("throw_on_failure") = false);
+        py::arg("segment_lambda") = py::none(), py::arg("throw_on_failure") = false);
   m.def("interpolating_spline", &interpolating_spline, py::arg("points"), py::arg("method") = "cubic",
         py::arg("closed") = false, py::arg("end") = "natural", py::arg("knots") = "uniform", py::arg("start_derivative") = py::none(),
         py::arg("end_derivative") = py::none());

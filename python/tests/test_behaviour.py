@@ -54,6 +54,7 @@ def test_bad_options_raise_typed_errors():
         (lambda: fair.cardinal_spline(p, alpha="x"), "alpha: expected a number"),
         (lambda: fair.optimal_curve(p, resolution=math.nan), "resolution"),
         (lambda: fair.optimal_curve(p, tangents=[(9, 1, 0)]), "out of range"),
+        (lambda: fair.optimal_curve(p, segment_lambda=[0.5] * 6, lam=0.5), "exclude each other"),
         (lambda: fair.kappa_curve([(0, 0), (1, 0), (2, 0)]), "collinear"),
         (lambda: fair.kappa_curve(p * 1e300), "beyond"),
         (lambda: fair.basic_shape_design('{"x": 1}'), "missing member"),
@@ -74,6 +75,11 @@ def test_bad_options_raise_typed_errors():
     for make, message in cases:
         with pytest.raises(fair.InvalidInputError, match=message):
             make()
+    # the solve's own checks of its options are fair::Precondition_error (a ValueError too)
+    with pytest.raises(fair.PreconditionError, match="segment_lambda has 5 values, the curve has 6 segments"):
+        fair.optimal_curve(p, segment_lambda=[0.5] * 5)
+    with pytest.raises(fair.PreconditionError, match=r"segment_lambda\[1\] = 2"):
+        fair.optimal_curve(p, segment_lambda=[0.5, 2, 0.5, 0.5, 0.5, 0.5])
     c = fair.interpolating_spline(p)
     with pytest.raises(fair.PreconditionError):
         c(c.domain[1] + 1)  # outside the domain

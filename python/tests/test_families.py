@@ -167,6 +167,29 @@ def test_equals_the_program_json(tmp_path, command, args, make, points):
     assert curve.report == program and curve.status == program.get("status")
 
 
+def test_optimal_constraints_and_segment_lambdas_equal_the_program(tmp_path):
+    # The program reads constraints and lambdas from files ("i x y" lines, one lambda per line);
+    # the module takes the same numbers as arrays.
+    if not FAIR_CURVES or not os.path.exists(FAIR_CURVES):
+        pytest.skip("fair-curves is not built (FAIR_CURVES unset): build it to compare with the program")
+    p = wave()
+    lambdas = [0.2, 0.4, 0.6, 0.8, 0.5, 0.3]
+    tangents = [(0, 1.0, 0.0), (6, 0.0, 1.0)]
+    corners = [(3, 1.0, 1.0, 1.0, -1.0)]
+    (tmp_path / "p.json").write_text(json.dumps({"points": p.tolist()}))
+    (tmp_path / "l.txt").write_text("".join(f"{v!r}\n" for v in lambdas))
+    (tmp_path / "t.txt").write_text("".join(f"{int(i)} {x!r} {y!r}\n" for i, x, y in tangents))
+    (tmp_path / "c.txt").write_text("".join(" ".join([str(int(r[0]))] + [repr(v) for v in r[1:]]) + "\n"
+                                            for r in corners))
+    out = tmp_path / "o.json"
+    run = subprocess.run([FAIR_CURVES, "optimal", str(tmp_path / "p.json"), "-o", str(out), "--lambda-file",
+                          str(tmp_path / "l.txt"), "--tangents", str(tmp_path / "t.txt"), "--corners",
+                          str(tmp_path / "c.txt")], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    curve = fair.optimal_curve(p, segment_lambda=lambdas, tangents=np.array(tangents), corners=np.array(corners))
+    assert curve.report == json.loads(out.read_text())
+
+
 # ------------------------------------------------------------------ DXF
 def test_dxf_passes_the_program_ezdxf_check(tmp_path):
     pytest.importorskip("ezdxf")
