@@ -19,6 +19,9 @@ packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev
 # drawings (test/io_export/check_dxf.py).
 test_packages=(libfreetype-dev fonts-dejavu-core libocct-modeling-algorithms-dev libocct-modeling-data-dev
                libocct-foundation-dev libtbb-dev python3-ezdxf)
+# The Python module (python/, doc/python.md; -DFAIR_BUILD_PYTHON=ON in the test build) and its
+# tests: pybind11 and numpy to build it, pytest and scipy (the independent oracle) to test it.
+test_packages+=(python3-dev pybind11-dev python3-numpy python3-pytest python3-scipy)
 # Benchmark-only: Eigen 3, the peer of bench_linear_algebra (doc/linear_algebra.md).
 bench_packages=(libeigen3-dev)
 # The sanitizer stage compiles with clang: its ASan+UBSan build of a CGAL test takes half the CPU
@@ -59,7 +62,7 @@ case "${1:-}" in
   test)
     packages+=("${test_packages[@]}")
     setup
-    configure build -DFAIR_BUILD_TESTS=ON -DFAIR_BUILD_EXAMPLES=ON
+    configure build -DFAIR_BUILD_TESTS=ON -DFAIR_BUILD_EXAMPLES=ON -DFAIR_BUILD_PYTHON=ON
     cmake --build build -j "$jobs"
     ctest --test-dir build --output-on-failure -j "$jobs" ;;
   sanitize)
