@@ -10,6 +10,7 @@
 // sampling; this file only converts, solves (without the GIL) and reports.
 
 #include <fair/Basic_shape_design.h>
+#include <fair/io/write_design_json.h>
 #include <fair/Catmull_rom_2.h>
 #include <fair/Cardinal_spline_2.h>
 #include <fair/Csr_spline_2.h>
@@ -419,13 +420,9 @@ Solved_curve interpolating_spline(const py::object& points, const std::string& m
 }
 
 // The basic-shape design (fair::basic_shape_design of a design file, doc/basic_shapes.md) with
-// the report of fair-curves shapes -o (shapes_command.cpp: report_json, convexity_json; and
+// the report of fair-curves shapes -o (fair/io/write_design_json.h: design_to_json, convexity_to_json; and
 // basic_shapes_figures.h: certified_convexity, Proposition 1 decided in EPECK on the spline's own
-// doubles). Those few lines of JSON glue live in the program's .cpp, so they are repeated here.
-const char* orientation_name(CGAL::Orientation o) {
-  return o == CGAL::LEFT_TURN ? "left" : (o == CGAL::RIGHT_TURN ? "right" : "collinear");
-}
-
+// doubles)
 Solved_curve basic_shape_design(const std::string& text, const std::string& name) {
   typedef CGAL::Exact_predicates_exact_constructions_kernel E;
   py::gil_scoped_release release;
@@ -437,35 +434,8 @@ Solved_curve basic_shape_design(const std::string& text, const std::string& name
   for (const double x : d.spline.weights()) w.push_back(E::FT(x));
   for (const Point_2& x : d.spline.control_points()) cp.push_back(E::Point_2(E::FT(x.x()), E::FT(x.y())));
   const fair::Spline_convexity_report<E> c = fair::spline_convexity(fair::Cubic_spline_2<E>(t, cp, w, d.spline.is_closed()));
-  nlohmann::json joins = nlohmann::json::array(), shapes = nlohmann::json::array();
-  for (const fair::Shape_join& j : d.joins)
-    joins.push_back({{"before", j.before}, {"after", j.after}, {"inside", j.inside}, {"kind", fair::to_string(j.kind)},
-                     {"distance", j.distance}, {"control_point", j.control_point}});
-  for (std::size_t k = 0; k < f.shapes.size(); ++k) {
-    nlohmann::json parts = nlohmann::json::array(), marks = nlohmann::json::array();
-    for (const fair::Shape_span& span : d.spans)
-      if (span.shape == k)
-        parts.push_back({{"first_piece", span.first_piece}, {"end_piece", span.end_piece},
-                         {"first_exact", span.first_exact}, {"end_exact", span.end_exact}});
-    for (const Point_2& p : f.marked_points[k]) marks.push_back(fair::io::point_to_json(p, "marked point"));
-    shapes.push_back({{"type", f.types[k]}, {"parts", std::move(parts)}, {"marked_points", std::move(marks)}});
-  }
-  nlohmann::json extra{{"design", f.file},
-                       {"exact", false},
-                       {"merge_tolerance", f.merge_tolerance},
-                       {"merge_distance", d.merge_distance},
-                       {"joins", std::move(joins)},
-                       {"shapes", std::move(shapes)}};
-  nlohmann::json convexity{{"polygon_convex", c.polygon_convex},
-                           {"polygon_orientation", orientation_name(c.polygon_orientation)},
-                           {"curve_locally_convex", c.curve_locally_convex},
-                           {"curve_orientation", orientation_name(c.curve_orientation)},
-                           {"inflected_pieces", c.inflected_pieces},
-                           {"pieces_by_filter", c.pieces_by_filter},
-                           {"pieces_exact", c.pieces_exact},
-                           {"proposition_holds", c.proposition_holds()}};
-  if (c.polygon_violation != c.npos) convexity["polygon_violation"] = c.polygon_violation;
-  extra["convexity"] = std::move(convexity);
+  nlohmann::json extra = fair::io::design_to_json(f, d, false);
+  extra["convexity"] = fair::io::convexity_to_json(c);
   extra["bspline"] = fair::io::nurbs_to_json(d.nurbs());
   // The design's points are its marked points, shape after shape.
   std::vector<Point_2> points;

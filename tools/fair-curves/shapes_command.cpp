@@ -15,6 +15,7 @@
 #include <fair/Spline_convexity.h>
 #include <fair/io/read_design.h>
 #include <fair/io/svg.h>
+#include <fair/io/write_design_json.h>
 #include <fair/io/write_json.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -31,25 +32,6 @@ struct Shapes_options {
   bool exact = false;
 };
 
-const char* orientation_name(CGAL::Orientation o) {
-  return o == CGAL::LEFT_TURN ? "left" : (o == CGAL::RIGHT_TURN ? "right" : "collinear");
-}
-
-// Proposition 1 (fair::spline_convexity): the polygon's convexity and the curve's local convexity.
-template <class E>
-nlohmann::json convexity_json(const fair::Spline_convexity_report<E>& c) {
-  nlohmann::json j{{"polygon_convex", c.polygon_convex},
-                   {"polygon_orientation", orientation_name(c.polygon_orientation)},
-                   {"curve_locally_convex", c.curve_locally_convex},
-                   {"curve_orientation", orientation_name(c.curve_orientation)},
-                   {"inflected_pieces", c.inflected_pieces},
-                   {"pieces_by_filter", c.pieces_by_filter},
-                   {"pieces_exact", c.pieces_exact},
-                   {"proposition_holds", c.proposition_holds()}};
-  if (c.polygon_violation != c.npos) j["polygon_violation"] = c.polygon_violation;
-  return j;
-}
-
 template <class E>
 std::string convexity_text(const fair::Spline_convexity_report<E>& c) {
   std::ostringstream out;
@@ -60,29 +42,6 @@ std::string convexity_text(const fair::Spline_convexity_report<E>& c) {
   out << "; certified by the interval filter on " << c.pieces_by_filter << " pieces, exactly on " << c.pieces_exact
       << "\n";
   return out.str();
-}
-
-template <class K>
-nlohmann::json report_json(const fair::io::Design_file<K>& f, const fair::Basic_shape_design_2<K>& d, bool exact) {
-  nlohmann::json joins = nlohmann::json::array(), shapes = nlohmann::json::array();
-  for (const fair::Shape_join& j : d.joins)
-    joins.push_back({{"before", j.before}, {"after", j.after}, {"inside", j.inside}, {"kind", fair::to_string(j.kind)},
-                     {"distance", j.distance}, {"control_point", j.control_point}});
-  for (std::size_t s = 0; s < f.shapes.size(); ++s) {
-    nlohmann::json parts = nlohmann::json::array(), marks = nlohmann::json::array();
-    for (const fair::Shape_span& span : d.spans)
-      if (span.shape == s)
-        parts.push_back({{"first_piece", span.first_piece}, {"end_piece", span.end_piece},
-                         {"first_exact", span.first_exact}, {"end_exact", span.end_exact}});
-    for (const auto& p : f.marked_points[s]) marks.push_back(fair::io::point_to_json(p, "marked point"));
-    shapes.push_back({{"type", f.types[s]}, {"parts", std::move(parts)}, {"marked_points", std::move(marks)}});
-  }
-  return nlohmann::json{{"design", f.file},
-                        {"exact", exact},
-                        {"merge_tolerance", f.merge_tolerance},
-                        {"merge_distance", d.merge_distance},
-                        {"joins", std::move(joins)},
-                        {"shapes", std::move(shapes)}};
 }
 
 template <class K>
@@ -119,8 +78,8 @@ void run(const Shapes_options& o) {
   std::string json_text, svg_text;
   if (!o.json_out.empty()) {
     std::ostringstream out;
-    nlohmann::json extra = report_json(f, d, o.exact);
-    extra["convexity"] = convexity_json(convexity);
+    nlohmann::json extra = fair::io::design_to_json(f, d, o.exact);
+    extra["convexity"] = fair::io::convexity_to_json(convexity);
     extra["bspline"] = fair::io::nurbs_to_json(d.nurbs());
     // The design's points are its marked points, shape after shape.
     std::vector<typename K::Point_2> points;
