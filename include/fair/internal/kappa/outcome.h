@@ -155,7 +155,7 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
 }
 
 /// The report of a solve that reached max |r| = fmax at st (and st.w set to the weights).
-/// With res.weight_blend < 1 (automatic weights, start_strategy.h: continue_from_other_weights)
+/// With res.weight_blend < 1 (automatic weights, start_strategy.h: cold_solve, continue_from_unit_weights)
 /// st is a root of the blended system: its residuals and outcome are those of that system, and
 /// weight_residual / energy_weight say how far the weights are from eq. 16.
 inline Kappa_curve_report finish(const Problem& pb_in, Kappa_solver_state& st, const Solve_settings& settings,
