@@ -727,6 +727,21 @@ TEST(Kappa, PointAtACurvatureMinimumIsUnsolved) {
   EXPECT_GE(ra.weight_blend, 0.0) << ra;
   EXPECT_LE(ra.weight_blend, 1.0) << ra;
   EXPECT_TRUE(fair::certify(automatic).proves_outcome()) << fair::certify(automatic);
+  // An edit of that curve (warm start from its state; the cold solve, with the continuation where
+  // it finds no kappa-curve, when the warm one ends UNSOLVED) and back: a kappa-curve each time,
+  // its weights eq. 16's or blended (0 <= s <= 1). Not asserted: the same root after the way back
+  // (the warm start from the edited curve lands on a root with eq. 16's weights, a different one),
+  // and the certificate of the edited curve (its piece at point 5 is so nearly circular that
+  // eq. 4's roots are rounding noise, the documented exception of INTERIOR).
+  fair::Kappa_curve_2<Kd> edited = automatic;
+  edited.move_point(2, Pd(p[2].x() + 1e-3, p[2].y()));
+  EXPECT_NE(edited.report().status, fair::Kappa_curve_status::UNSOLVED) << edited.report();
+  EXPECT_TRUE(edited.report().points_at_minima.empty()) << edited.report();
+  edited.move_point(2, p[2]);
+  EXPECT_NE(edited.report().status, fair::Kappa_curve_status::UNSOLVED) << edited.report();
+  EXPECT_TRUE(edited.report().points_at_minima.empty()) << edited.report();
+  EXPECT_GE(edited.report().weight_blend, 0.0) << edited.report();
+  EXPECT_LE(edited.report().weight_blend, 1.0) << edited.report();
 }
 
 // Unit weights never put a point at a minimum (w = 1: eq. 7's root is a maximum, Appendix A): no
