@@ -92,6 +92,12 @@ struct Kappa_curve_report {
   double curvature_residual = 0;       ///< max |eq. 7| / (A_i + C_i)
   double g2_residual = 0;              ///< max | |k1|-|k2| | / (|k1|+|k2|) at joins
   double weight_residual = 0;          ///< max |w_i - w~_i| (AUTOMATIC; 0 when the equations hold)
+  /// AUTOMATIC: the weights of the curve are w_i = 1 + s (w~_i - 1) with s = weight_blend, w~_i
+  /// those of eq. 16. 1 when eq. 16 holds; below 1 when the solve with eq. 16's weights found no
+  /// kappa-curve and the continuation from the w = 1 kappa-curve ended at s (0: the w = 1
+  /// kappa-curve itself); weight_residual then says how far eq. 16 is (doc/kappa_curves.md,
+  /// "Automatic weights").
+  double weight_blend = 1;
   /// Energy terms: sums of squares of the same residuals (E_G2 ~ eq. 11, E_c ~ eq. 12,
   /// E_w = eq. 13, plus the interpolation constraint eq. 18 as an energy).
   double energy_interpolation = 0, energy_curvature = 0, energy_g2 = 0, energy_weight = 0;
@@ -127,7 +133,7 @@ struct Kappa_curve_report {
     return a.status == b.status && a.reason == b.reason && a.warm_started == b.warm_started && a.refinement_passes == b.refinement_passes &&
            a.iterations == b.iterations && a.residual == b.residual &&
            a.interpolation_residual == b.interpolation_residual && a.curvature_residual == b.curvature_residual &&
-           a.g2_residual == b.g2_residual && a.weight_residual == b.weight_residual &&
+           a.g2_residual == b.g2_residual && a.weight_residual == b.weight_residual && a.weight_blend == b.weight_blend &&
            a.energy_interpolation == b.energy_interpolation && a.energy_curvature == b.energy_curvature &&
            a.energy_g2 == b.energy_g2 && a.energy_weight == b.energy_weight && a.bounds_active == b.bounds_active &&
            a.points_on_joins == b.points_on_joins && a.points_at_minima == b.points_at_minima &&
@@ -142,6 +148,7 @@ struct Kappa_curve_report {
         << r.refinement_passes << ", iterations " << r.iterations << ", residual " << r.residual << " (interpolation "
         << r.interpolation_residual << ", eq.7 " << r.curvature_residual << ", |kappa| " << r.g2_residual << ", weight "
         << r.weight_residual << "), bounds active " << r.bounds_active;
+    if (r.weight_blend != 1) out << ", weights blended towards 1: s = " << r.weight_blend;
     if (!r.points_on_joins.empty()) {
       out << " (points on a join:";
       for (const std::size_t i : r.points_on_joins) out << ' ' << i;

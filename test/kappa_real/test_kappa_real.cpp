@@ -110,6 +110,9 @@ struct Solve_record {
   fair::Kappa_curve_status status = fair::Kappa_curve_status::UNSOLVED;
   double residual = 0;
   std::size_t on_joins = 0, iterations = 0;
+  /// Automatic weights: Kappa_curve_report::weight_blend (1: eq. 16 holds; below: the curve of
+  /// the continuation from w = 1, weights 1 + s (w~ - 1)) and the report's weight_residual.
+  double weight_blend = 1, weight_residual = 0;
   std::vector<std::size_t> points_on_joins;  ///< as reported
   /// An UNSOLVED report that says why: points at curvature minima or beyond the density limit.
   bool explained = false;
@@ -146,6 +149,8 @@ Solve_record solve(const Point_set& set, fair::Kappa_weights weights) {
     r.on_joins = curve.report().points_on_joins.size();
     r.points_on_joins = curve.report().points_on_joins;
     r.iterations = curve.report().iterations;
+    r.weight_blend = curve.report().weight_blend;
+    r.weight_residual = curve.report().weight_residual;
     r.beyond_density_limit = curve.report().points_beyond_density_limit.size();
     r.points_beyond_density_limit = curve.report().points_beyond_density_limit;
     r.reason = curve.report().reason;
@@ -172,6 +177,8 @@ std::string outcome_key(const Solve_record& r, std::map<std::string, int>& seen)
 std::string outcome_of(const Solve_record& r) {
   if (r.rejected) return "rejected";
   if (r.status == fair::Kappa_curve_status::UNSOLVED) return std::string("unsolved ") + fair::to_string(r.reason);
+  // Automatic weights that eq. 16 does not give (the continuation from w = 1 ended short of them).
+  if (r.weight_blend < 1) return std::string(fair::to_string(r.status)) + " blended";
   return fair::to_string(r.status);
 }
 
@@ -213,6 +220,10 @@ const std::vector<Solve_record>& solve_data_set(const std::string& name) {
     for (const Solve_record& r : out)
       if (r.weights == w && !r.rejected && r.status == fair::Kappa_curve_status::UNSOLVED)
         std::cout << "[real data]   unsolved: " << describe(r) << ": residual " << r.residual << ", " << r.report << "\n";
+    for (const Solve_record& r : out)
+      if (r.weights == w && !r.rejected && r.weight_blend < 1)
+        std::cout << "[real data]   blended: " << describe(r) << ": s = " << r.weight_blend << ", max |w - w~| "
+                  << r.weight_residual << "\n";
   }
   return out;
 }

@@ -155,14 +155,35 @@ inline void classify(const Problem& pb, const Kappa_solver_state& st, const Solv
 }
 
 /// The report of a solve that reached max |r| = fmax at st (and st.w set to the weights).
-inline Kappa_curve_report finish(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+/// With res.weight_blend < 1 (automatic weights, start_strategy.h: cold_solve, continue_from_unit_weights)
+/// st is a root of the blended system: its residuals and outcome are those of that system, and
+/// weight_residual / energy_weight say how far the weights are from eq. 16.
+inline Kappa_curve_report finish(const Problem& pb_in, Kappa_solver_state& st, const Solve_settings& settings,
                                  Kappa_curve_report res, double fmax) {
+  Problem blended;
+  const bool blend = pb_in.mode == Kappa_weights::AUTOMATIC && res.weight_blend < 1;
+  if (blend) {
+    blended = pb_in;
+    blended.weight_blend = res.weight_blend;
+  } else {
+    res.weight_blend = 1;
+  }
+  const Problem& pb = blend ? blended : pb_in;
   const std::size_t n = pb.n;
   std::vector<double> F, weight_error;
   std::vector<double> w(n, 1.0);
   if (fmax <= settings.tolerance) {
     res.residual = evaluate(pb, st, F, &res, &w);
     st.w = w;
+    if (blend) {  // the distance to eq. 16 (not part of the blended system's residual)
+      std::vector<double> wt(n, 1.0), G;
+      evaluate(pb_in, st, G, nullptr, &wt);
+      for (std::size_t i = 0; i < n; ++i) {
+        const double e = st.w[i] - wt[i];
+        res.weight_residual = std::max(res.weight_residual, std::abs(e));
+        res.energy_weight += e * e;
+      }
+    }
   } else {
     // Restore interpolation and G1 (eq. 18 with the current lambda, t, w held fixed) so that
     // the returned curve is always a valid interpolating G1 curve; the report then says how

@@ -27,6 +27,8 @@
 //  - levenberg_marquardt.h: the robust fallback far from a root (J^T J banded, Cholesky).
 //  - fallback.h: Levenberg-Marquardt, then a Newton polish, with one restart.
 //  - steering.h: Sec. 3.2, moving points off curvature minima of their pieces.
+//  - weight_continuation.h: automatic weights without a kappa-curve, continued from the w = 1
+//    kappa-curve along w(s) = 1 + s (w~ - 1) (issue 24; start_strategy.h, cold_solve).
 //  - outcome.h: Kappa_curve_status and the report of a finished solve.
 //  - start_strategy.h: cold and warm starts, and the warm/cold policy of Kappa_curve_2
 //    (solve_with_warm_start). Non-convergence within the iteration caps is reported

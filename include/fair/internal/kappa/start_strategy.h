@@ -21,6 +21,7 @@
 #include <fair/internal/kappa/solve_settings.h>
 #include <fair/internal/kappa/steering.h>
 #include <fair/internal/kappa/system.h>
+#include <fair/internal/kappa/weight_continuation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -218,13 +219,42 @@ inline bool global_warm_newton(const Problem& pb, Kappa_solver_state& st, const 
   return false;
 }
 
+inline double cold_solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
+                         Kappa_curve_report& res, bool newton_paths_failed, bool continuation = true);
+
+/// Automatic weights (doc/kappa_curves.md, "Automatic weights: continuation from w = 1"): the
+/// w = 1 kappa-curve of the same data (a cold solve with w = 1, without this continuation),
+/// continued along w(s) = 1 + s (w~ - 1) towards eq. 16's weights (weight_continuation.h), all
+/// within `budget` Jacobians (counted in res.iterations). Returns the s reached (out: the
+/// kappa-curve there, fout its max |r| at that s), or -1 when the w = 1 solve gives no
+/// kappa-curve.
+inline double continue_from_unit_weights(const Problem& pb, Kappa_solver_state& out, const Solve_settings& settings,
+                                         Kappa_curve_report& res, double& fout, std::size_t budget) {
+  Problem unit = pb;
+  unit.mode = Kappa_weights::UNIT;
+  Solve_settings capped = settings;
+  capped.max_iterations = budget;
+  Kappa_curve_report side;
+  double f = cold_solve(unit, out, capped, side, false, false);
+  double reached = -1;
+  if (is_clean_root(unit, out, f, capped)) reached = continue_weights(pb, out, 0.0, 1.0, capped, side, f);
+  res.iterations += side.iterations;
+  fout = f;
+  return reached;
+}
+
 /// The cold solve: its Newton paths (cold_start_newton), on failure Levenberg-Marquardt with
 /// restart from the passes; then steer_off_minima. `newton_paths_failed`: this caller already ran
 /// cold_start_newton on these data with its full caps and it failed; it is deterministic, so
 /// the run is skipped and only the start and passes are recomputed (st is then the state after
-/// the passes, as cold_start_newton leaves it on failure). Returns max |r|.
+/// the passes, as cold_start_newton leaves it on failure).
+/// Automatic weights (`continuation`), where all that gives no kappa-curve:
+/// continue_from_unit_weights with a cap of its own (settings.max_iterations Jacobians more, so
+/// that every solve that finds a kappa-curve without it is unchanged); its result is kept when
+/// it is a kappa-curve, at s = 1 or (res.weight_blend = s) below. Returns max |r| (of the
+/// blended system when res.weight_blend < 1).
 inline double cold_solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                         Kappa_curve_report& res, bool newton_paths_failed) {
+                         Kappa_curve_report& res, bool newton_paths_failed, bool continuation) {
   double fmax = std::numeric_limits<double>::infinity();
   bool root = false;
   if (!newton_paths_failed) {
@@ -236,7 +266,15 @@ inline double cold_solve(const Problem& pb, Kappa_solver_state& st, const Solve_
     refine(pb, st, settings.refinement_passes, refinement_stop, res);
   }
   if (!root) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
-  return steer_off_minima(pb, st, settings, res, fmax);
+  fmax = steer_off_minima(pb, st, settings, res, fmax);
+  if (!continuation || pb.mode != Kappa_weights::AUTOMATIC || is_clean_root(pb, st, fmax, settings)) return fmax;
+  Kappa_solver_state cand;
+  double cand_f = 0;
+  const double cand_s = continue_from_unit_weights(pb, cand, settings, res, cand_f, settings.max_iterations);
+  if (cand_s < 0) return fmax;
+  st = std::move(cand);
+  if (cand_s < 1) res.weight_blend = cand_s;
+  return cand_f;
 }
 
 /// What solve() did beyond its report, for solve_with_warm_start.

@@ -63,6 +63,9 @@ struct Problem {
   std::vector<double> weight;   // mode fixed: w_i
   std::vector<double> tension;  // mode automatic: mu_i of eq. 16
   double clamp = 0.5;           // mode automatic: lower clamp of eq. 16
+  /// Mode automatic: the weight used is 1 + s (w_eq16 - 1) with s = weight_blend, the path of
+  /// the continuation from w = 1 (weight_continuation.h); 1 (eq. 16 itself) except there.
+  double weight_blend = 1.0;
 
   bool has_start(std::size_t j) const { return closed || j >= 1; }
   bool has_end(std::size_t j) const { return closed || j + 1 < n; }
@@ -146,7 +149,10 @@ template <class S>
 S piece_weight(const Problem& pb, std::size_t j, const S* E0, const S* P, const S* E2) {
   switch (pb.mode) {
     case Kappa_weights::FIXED: return S(pb.weight[j]);
-    case Kappa_weights::AUTOMATIC: return automatic_weight(E0, P, E2, pb.tension[j], pb.clamp);
+    case Kappa_weights::AUTOMATIC: {
+      if (pb.weight_blend == 1.0) return automatic_weight(E0, P, E2, pb.tension[j], pb.clamp);
+      return 1.0 + pb.weight_blend * (automatic_weight(E0, P, E2, pb.tension[j], pb.clamp) - 1.0);
+    }
     case Kappa_weights::UNIT: break;
   }
   return S(1.0);
