@@ -220,8 +220,9 @@ nlohmann::json curve_to_json(const std::string& method, bool closed, const std::
 
 /// A kappa-curve's solve report: {"status": "interior" | "on_joins" | "unsolved", "reason":
 /// "none" | "beyond_density_limit" | "points_at_minima" | "no_convergence", the counts,
-/// "residuals" (the dimensionless residuals of the report), "energy" (its terms and total), and
-/// the point lists (0-based input indices)}.
+/// "residuals" (the dimensionless residuals of the report), "energy" (its terms and total),
+/// "weight_blend" (automatic weights: 1 when eq. 16 holds, s < 1 for weights 1 + s (w~ - 1) blended
+/// towards 1, doc/kappa_curves.md), and the point lists (0-based input indices)}.
 inline nlohmann::json to_json(const Kappa_curve_report& r) {
   nlohmann::json worst = nlohmann::json::array();
   for (const Kappa_point_residual& p : r.worst_points) worst.push_back({{"point", p.point}, {"residual", p.residual}});
@@ -242,6 +243,7 @@ inline nlohmann::json to_json(const Kappa_curve_report& r) {
                           {"curvature_eq12", r.energy_curvature},
                           {"g2_eq11", r.energy_g2},
                           {"weight_eq13", r.energy_weight}}},
+                        {"weight_blend", r.weight_blend},
                         {"bounds_active", r.bounds_active},
                         {"points_on_joins", r.points_on_joins},
                         {"points_at_minima", r.points_at_minima},
