@@ -55,17 +55,8 @@ std::vector<Point_set> all_sets() {
   return out;
 }
 
-std::vector<Point> to_points(const std::vector<kappa_real::Xy>& p) {
-  std::vector<Point> q;
-  for (const kappa_real::Xy& xy : p) q.emplace_back(xy.x, xy.y);
-  return q;
-}
-
-bool all_collinear(const std::vector<Point>& q) {
-  for (std::size_t i = 2; i < q.size(); ++i)
-    if (CGAL::orientation(q[0], q[1], q[i]) != CGAL::COLLINEAR) return false;
-  return true;
-}
+std::vector<Point> to_points(const std::vector<kappa_real::Xy>& p) { return kappa_real::to_points<Point>(p); }
+using kappa_real::all_collinear;
 
 /// An allowance of family_expectations.txt: for one curve and method, the bounds that replace the
 /// defaults (a negative value: the default) and why.

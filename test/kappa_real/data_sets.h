@@ -16,6 +16,9 @@
 
 #include "glyph_outlines.h"
 
+#include <CGAL/Kernel/global_functions_2.h>
+#include <CGAL/enum.h>
+
 #include <cctype>
 #include <cmath>
 #include <cstddef>
@@ -181,6 +184,22 @@ inline std::vector<Point_set> feather_polylines(const std::string& path) {
     if (ps.points.size() >= 3) out.push_back(std::move(ps));
   }
   return out;
+}
+
+/// The points of a set in a CGAL kernel.
+template <class Point>
+std::vector<Point> to_points(const std::vector<Xy>& p) {
+  std::vector<Point> q;
+  for (const Xy& xy : p) q.emplace_back(xy.x, xy.y);
+  return q;
+}
+
+/// Whether every point lies on the line through the first two (exact predicate of the kernel).
+template <class Point>
+bool all_collinear(const std::vector<Point>& q) {
+  for (std::size_t i = 2; i < q.size(); ++i)
+    if (CGAL::orientation(q[0], q[1], q[i]) != CGAL::COLLINEAR) return false;
+  return true;
 }
 
 } // namespace kappa_real

@@ -54,17 +54,8 @@ const char* const glyph_characters = "aegsS&@8";
 /// DENSE glyph sampling: every quadratic piece at 7 interior parameters (the large sets).
 constexpr std::size_t dense_samples = 8;
 
-std::vector<Point> to_points(const std::vector<kappa_real::Xy>& p) {
-  std::vector<Point> q;
-  for (const kappa_real::Xy& xy : p) q.emplace_back(xy.x, xy.y);
-  return q;
-}
-
-bool all_collinear(const std::vector<Point>& q) {
-  for (std::size_t i = 2; i < q.size(); ++i)
-    if (CGAL::orientation(q[0], q[1], q[i]) != CGAL::COLLINEAR) return false;
-  return true;
-}
+std::vector<Point> to_points(const std::vector<kappa_real::Xy>& p) { return kappa_real::to_points<Point>(p); }
+using kappa_real::all_collinear;
 
 std::vector<Point_set> glyph_sets(kappa_real::Glyph_sampling sampling, const std::string& data_set) {
   std::vector<Point_set> out;
