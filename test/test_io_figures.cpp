@@ -234,7 +234,9 @@ TEST(Svg, FigureIsFiniteInsideItsViewBoxAndEscaped) {
   EXPECT_EQ(std::distance(std::sregex_iterator(svg.begin(), svg.end(), polyline), std::sregex_iterator()), 1 + 1 + 1);
   EXPECT_EQ(std::distance(std::sregex_iterator(svg.begin(), svg.end(), path), std::sregex_iterator()), 1);
   EXPECT_EQ(std::distance(std::sregex_iterator(svg.begin(), svg.end(), move), std::sregex_iterator()), 25);
-  EXPECT_EQ(svg.find("#c0392b"), std::string::npos);  // no clipped tooth, no red mark
+  // No clipped tooth and no mark of one (the red of the "max" mark is the marks' own colour).
+  EXPECT_EQ(svg.find("stroke=\"#c0392b\" stroke-width=\"0.6\""), std::string::npos);
+  EXPECT_EQ(svg.find("r=\"1.6\" fill=\"#c0392b\""), std::string::npos);
 }
 
 TEST(Svg, ScaleInvariantAndRobustToHugeAndTinyCoordinates) {

@@ -50,6 +50,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -107,9 +108,18 @@ Polygon_spline_fit<K> fit_cubic_spline(const std::vector<typename K::Point_2>& p
     for (const Kd::Point_2& d : c.spline().control_points()) control.push_back(Vec2{{d.x(), d.y()}});
   }
   const double distance = scale * internal::optimal::max_chord_distance(bezier_pieces(t, control, closed));
+  // The breakpoints are chord lengths (t * scale) unless the spline's own B-spline-to-Bezier
+  // conversion (eq. 2 of Cubic_spline_2: control points times sums of knot intervals) would
+  // overflow: then they stay chord lengths / scale, the same curve reparametrised by a power of
+  // two (polygons beyond ~1e150, issue 29 #20).
+  double control_bound = 0;
+  for (const Vec2& v : control) control_bound = std::max({control_bound, std::abs(v[0]), std::abs(v[1])});
+  const double knot_bound = std::max(std::abs(t.front()), std::abs(t.back()));
+  const double knot_scale =
+      16 * (knot_bound * scale) * (control_bound * scale) <= std::numeric_limits<double>::max() / 64 ? scale : 1;
   std::vector<FT> breakpoints;
   breakpoints.reserve(t.size());
-  for (double x : t) breakpoints.push_back(FT(x * scale));
+  for (double x : t) breakpoints.push_back(FT(x * knot_scale));
   std::vector<typename K::Point_2> points;
   points.reserve(control.size());
   for (const Vec2& v : control) points.push_back(to_point<K>(Vec2{{v[0] * scale, v[1] * scale}}));
