@@ -786,12 +786,8 @@ std::vector<kappa_real::Point_set> real_sets() {
   return s;
 }
 
-// Known gap (doc/optimal_curves.md, "Known limits"): two strokes whose lambda curve makes loops
-// several times the drawing's size; their last levels creep along a flat valley on the step cap.
-bool known_capped(const kappa_real::Point_set& s, double lambda) {
-  if (s.name == "drawing 6163600517365760 stroke 7") return true;
-  return lambda == 0.9 && s.name == "drawing 5275268287561728 stroke 4";
-}
+// Every set converges at lambda = 0.5 and 0.9 since the fair reference of issue 25 §2 (two strokes
+// whose lambda curve used to balloon and creep on the step cap at 0.5 / 0.9 converge now).
 
 // The largest distance of a vertex of a from the polygon b (one side of the Hausdorff distance).
 double polygon_distance(const std::vector<fair::internal::optimal::Vec2>& a,
@@ -857,7 +853,6 @@ TEST(OptimiserRealData, FeatherAndQuickDrawSubsetConverges) {
   ASSERT_EQ(sets.size(), 246u);
   std::size_t checked = 0;
   for (std::size_t k = 0; k < sets.size(); k += 6) {
-    if (known_capped(sets[k], 0.5)) continue;
     EXPECT_EQ(check_real_set(sets[k], 0.5), Optimal_curve_status::CONVERGED) << sets[k].name;
     ++checked;
   }
@@ -870,7 +865,7 @@ TEST(OptimiserRealData, StressEveryFeatherAndQuickDrawSetConverges) {
   for (double lambda : {0.5, 0.9})
     for (const kappa_real::Point_set& s : sets) {
       const Optimal_curve_status status = check_real_set(s, lambda);
-      EXPECT_EQ(status, known_capped(s, lambda) ? Optimal_curve_status::CAPPED : Optimal_curve_status::CONVERGED)
+      EXPECT_EQ(status, Optimal_curve_status::CONVERGED)
           << s.data_set << " " << s.name << " lambda " << lambda;
     }
 }
