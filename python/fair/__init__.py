@@ -178,16 +178,18 @@ def kappa_curve(points, closed=False, weights=1.0, *, tension=None, clamp=None, 
 
 def optimal_curve(points, closed=False, lam=None, *, length_weight=None, curvature_weight=None,
                   curvature_exponent=None, resolution=None, solver="newton", tangents=None, normals=None,
-                  corners=None, segment_lambda=None, throw_on_failure=False):
+                  corners=None, segment_lambda=None, derivative_weight=None, throw_on_failure=False):
     """The optimal curve (fair::Optimal_curve_2; fair-curves optimal). ``lam`` in [0, 1] designs
     the weights (eq. 10); ``tangents``/``normals`` are (k, 3) rows (index, dx, dy), ``corners``
     (k, 5) rows (index, in dx, in dy, out dx, out dy); ``segment_lambda`` one lambda per segment
-    (N - 1 open, N closed; the program's --lambda-file)."""
+    (N - 1 open, N closed; the program's --lambda-file); ``derivative_weight`` {k: beta_k} or
+    {k: (beta_k, alpha_k)}, k in 1..4 (the program's --derivative-weight K:BK[:AK]; the report then
+    holds the C4 quintic fit under "quintic")."""
     args = (_points_arg(points),)
     kwargs = dict(closed=closed, lam=lam, length_weight=length_weight, curvature_weight=curvature_weight,
                   curvature_exponent=curvature_exponent, resolution=resolution, solver=solver,
                   tangents=tangents, normals=normals, corners=corners, segment_lambda=segment_lambda,
-                  throw_on_failure=throw_on_failure)
+                  derivative_weight=derivative_weight, throw_on_failure=throw_on_failure)
     return Curve("optimal_curve", _fair.optimal_curve(*args, **kwargs), args, kwargs)
 
 

@@ -304,7 +304,7 @@ Solved_curve optimal_curve(const py::object& points, bool closed, const py::obje
                            const py::object& curvature_weight, const py::object& curvature_exponent,
                            const py::object& resolution, const std::string& solver, const py::object& tangents,
                            const py::object& normals, const py::object& corners, const py::object& segment_lambda,
-                           bool throw_on_failure) {
+                           const py::object& derivative_weight, bool throw_on_failure) {
   fair::Optimal_curve_options options;
   options.closed = closed;
   options.throw_on_failure = throw_on_failure;
@@ -340,6 +340,28 @@ Solved_curve optimal_curve(const py::object& points, bool closed, const py::obje
                                     ", got '" + solver + "'");
   if (!tangents.is_none() && !normals.is_none())
     throw fair::Invalid_input_error("tangents and normals exclude each other (give a normal as a tangent)");
+  // The program's --derivative-weight K:BK[:AK]: {k: beta_k} or {k: (beta_k, alpha_k)}, k in 1..4
+  // (the C^(k+1) curves of Sec. 3.3; with any beta_k > 0 the C4 quintic fit is returned too).
+  bool derivative_term = false;
+  if (!derivative_weight.is_none()) {
+    if (!py::isinstance<py::dict>(derivative_weight))
+      throw fair::Invalid_input_error("derivative_weight: expected a dict {k: beta_k} or {k: (beta_k, alpha_k)}, k in 1..4");
+    for (const auto& item : py::reinterpret_borrow<py::dict>(derivative_weight)) {
+      const double kd = number_option(py::reinterpret_borrow<py::object>(item.first), "derivative_weight key");
+      if (!(kd >= 1 && kd <= 4 && kd == std::floor(kd)))
+        throw fair::Invalid_input_error(fair::internal::message("derivative_weight: the order k must be 1, 2, 3 or 4, got ", kd));
+      const std::size_t k = static_cast<std::size_t>(kd);
+      py::object value = py::reinterpret_borrow<py::object>(item.second);
+      if (py::isinstance<py::tuple>(value) || py::isinstance<py::list>(value)) {
+        py::sequence pair = py::reinterpret_borrow<py::sequence>(value);
+        if (pair.size() != 2) throw fair::Invalid_input_error("derivative_weight: a value is beta_k or (beta_k, alpha_k)");
+        options.derivative_exponent[k] = number(py::object(pair[1]), "derivative_weight exponent alpha_k", 1, HUGE_VAL);
+        value = py::object(pair[0]);
+      }
+      options.derivative_weight[k] = number(value, "derivative_weight beta_k", 0, HUGE_VAL);
+      derivative_term = derivative_term || options.derivative_weight[k] > 0;
+    }
+  }
   add_constraints(tangents, fair::Point_constraint_kind::TANGENT, options.constraints);
   add_constraints(normals, fair::Point_constraint_kind::NORMAL, options.constraints);
   add_constraints(corners, fair::Point_constraint_kind::CORNER, options.constraints);
@@ -347,13 +369,12 @@ Solved_curve optimal_curve(const py::object& points, bool closed, const py::obje
   py::gil_scoped_release release;
   check_points(p, closed ? 3 : 2, closed, "optimal_curve");
   const fair::Optimal_curve_2<K> curve(p, options);
-  // The members of fair-curves optimal -o (optimal_command.cpp, curve_json; no derivative terms here).
-  nlohmann::json polygon = nlohmann::json::array();
-  for (const Point_2& v : curve.polygon()) polygon.push_back(fair::io::point_to_json(v, "polygon vertex"));
-  const nlohmann::json extra{{"polygon", polygon},
-                             {"interpolation_indices", curve.interpolation_indices()},
-                             {"curvatures", curve.curvatures()},
-                             {"fit_max_distance", curve.spline().max_distance}};
+  // The members of fair-curves optimal -o (fair::io::optimal_curve_members), with the quintic fit
+  // where a derivative term is on, as the program writes it.
+  std::unique_ptr<fair::Polygon_quintic_fit<K>> quintic;
+  if (derivative_term)
+    quintic.reset(new fair::Polygon_quintic_fit<K>(fair::fit_quintic_spline<K>(curve.polygon(), options.closed)));
+  const nlohmann::json extra = fair::io::optimal_curve_members(curve, quintic.get());
   return solved(curve, "optimal", extra);
 }
 
@@ -589,7 +610,8 @@ PYBIND11_MODULE(_fair, m) {
         py::arg("length_weight") = py::none(), py::arg("curvature_weight") = py::none(),
         py::arg("curvature_exponent") = py::none(), py::arg("resolution") = py::none(), py::arg("solver") = "newton",
         py::arg("tangents") = py::none(), py::arg("normals") = py::none(), py::arg("corners") = py::none(),
-        py::arg("segment_lambda") = py::none(), py::arg("throw_on_failure") = false);
+        py::arg("segment_lambda") = py::none(), py::arg("derivative_weight") = py::none(),
+        py::arg("throw_on_failure") = false);
   m.def("interpolating_spline", &interpolating_spline, py::arg("points"), py::arg("method") = "cubic",
         py::arg("closed") = false, py::arg("end") = "natural", py::arg("knots") = "uniform", py::arg("start_derivative") = py::none(),
         py::arg("end_derivative") = py::none());

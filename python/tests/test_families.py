@@ -142,6 +142,8 @@ PROGRAM_CASES = [
     ("csr", ["--knots", "uniform"], lambda p: fair.csr_spline(p, knots="uniform"), wave()),
     ("optimal", [], lambda p: fair.optimal_curve(p), wave()),
     ("optimal", ["--lambda", "0.25", "--closed"], lambda p: fair.optimal_curve(p, closed=True, lam=0.25), polygon()),
+    ("optimal", ["--derivative-weight", "2:1", "--derivative-weight", "1:0.5:3"],
+     lambda p: fair.optimal_curve(p, derivative_weight={2: 1.0, 1: (0.5, 3.0)}), wave()),
     ("spline", ["--method", "cubic", "--end", "not-a-knot"],
      lambda p: fair.interpolating_spline(p, end="not-a-knot"), wave()),
     ("spline", ["--method", "catmull-rom", "--closed"],

@@ -102,17 +102,7 @@ bool has_derivative_term(const fair::Optimal_curve_options& o) {
 /// polygon with its "bspline", the status and the solve report, the polygon and its data.
 std::string curve_json(const fair::Optimal_curve_2<fair_curves::Kernel>& curve,
                        const fair::Polygon_quintic_fit<fair_curves::Kernel>* quintic) {
-  nlohmann::json polygon = nlohmann::json::array();
-  for (const fair_curves::Point_2& p : curve.polygon()) polygon.push_back(fair::io::point_to_json(p, "polygon vertex"));
-  nlohmann::json extra{{"polygon", polygon},
-                       {"interpolation_indices", curve.interpolation_indices()},
-                       {"curvatures", curve.curvatures()},
-                       {"fit_max_distance", curve.spline().max_distance}};
-  if (quintic) {
-    nlohmann::json pieces = nlohmann::json::array();
-    for (std::size_t i = 0; i < quintic->pieces.size(); ++i) pieces.push_back(fair::io::piece_to_json(quintic->pieces[i], i));
-    extra["quintic"] = {{"pieces", pieces}, {"max_distance", quintic->max_distance}};
-  }
+  const nlohmann::json extra = fair::io::optimal_curve_members(curve, quintic);
   std::ostringstream out;
   // "bspline": the C2 runs between corners as one NURBS with triple knots at the corners.
   fair::io::write_json(out, fair::io::family_to_json(curve, "optimal", extra));

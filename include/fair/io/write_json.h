@@ -366,6 +366,27 @@ nlohmann::json family_to_json(const Curve& curve, const std::string& method,
   return curve_to_json(method, curve.is_closed(), curve.points(), curve.pieces(), members, piece_extra);
 }
 
+/// The members of an optimal curve's JSON beside its pieces (for family_to_json's `extra`):
+/// "polygon", "interpolation_indices", "curvatures", "fit_max_distance" (fair::Optimal_curve_2),
+/// and "quintic" {"pieces", "max_distance"} when the C4 quintic fit is given
+/// (fair::Polygon_quintic_fit, the curves with a derivative term). One writer for the program and
+/// the Python module.
+template <class Optimal_curve, class Quintic_fit>
+nlohmann::json optimal_curve_members(const Optimal_curve& curve, const Quintic_fit* quintic) {
+  nlohmann::json polygon = nlohmann::json::array();
+  for (const auto& p : curve.polygon()) polygon.push_back(point_to_json(p, "polygon vertex"));
+  nlohmann::json extra{{"polygon", std::move(polygon)},
+                       {"interpolation_indices", curve.interpolation_indices()},
+                       {"curvatures", curve.curvatures()},
+                       {"fit_max_distance", curve.spline().max_distance}};
+  if (quintic) {
+    nlohmann::json pieces = nlohmann::json::array();
+    for (std::size_t i = 0; i < quintic->pieces.size(); ++i) pieces.push_back(piece_to_json(quintic->pieces[i], i));
+    extra["quintic"] = {{"pieces", std::move(pieces)}, {"max_distance", quintic->max_distance}};
+  }
+  return extra;
+}
+
 /// Throws Precondition_error if `j` holds a non-finite number anywhere (`path` names it).
 inline void check_json_finite(const nlohmann::json& j, const std::string& path = "$") {
   if (j.is_number_float() && !std::isfinite(j.get<double>()))
