@@ -621,7 +621,7 @@ TEST(KappaActiveSet, AutomaticWeightsOnRandomSetsExplainTheOutcome) {
     EXPECT_LE(r.iterations, 2 * settings.max_iterations);
     EXPECT_GE(r.weight_blend, 0.0);
     EXPECT_LE(r.weight_blend, 1.0);
-    if (r.weight_blend < 1) EXPECT_NE(r.status, fair::Kappa_curve_status::UNSOLVED) << "seed " << s;
+    if (r.weight_blend < 1) { EXPECT_NE(r.status, fair::Kappa_curve_status::UNSOLVED) << "seed " << s; }
     ASSERT_TRUE(std::isfinite(r.residual)) << "seed " << s;
     if (r.status != fair::Kappa_curve_status::UNSOLVED) {
       EXPECT_LE(r.residual, 1e-12);

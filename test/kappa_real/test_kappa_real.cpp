@@ -251,7 +251,7 @@ void expect_reason_explained(const Solve_record& r) {
     return;
   }
   EXPECT_NE(r.reason, fair::Kappa_curve_unsolved_reason::NONE) << describe(r) << ": " << r.report;
-  if (r.reason == fair::Kappa_curve_unsolved_reason::POINTS_AT_MINIMA) EXPECT_TRUE(r.explained) << describe(r);
+  if (r.reason == fair::Kappa_curve_unsolved_reason::POINTS_AT_MINIMA) { EXPECT_TRUE(r.explained) << describe(r); }
   if (r.reason != fair::Kappa_curve_unsolved_reason::BEYOND_DENSITY_LIMIT) return;
   EXPECT_FALSE(r.points_beyond_density_limit.empty()) << describe(r) << ": " << r.report;
   for (const std::size_t i : r.points_beyond_density_limit) {
@@ -443,7 +443,7 @@ TEST(KappaDenseSamples, EllipseBeyondTheDensityLimitIsDecidedEarlyWithItsReason)
     // Uniform samples: the estimate is t_i - 1/2 = kappa_s / (3 kappa^3 h), beyond the limit
     // near the ends of the minor axis, where |kappa_s| / kappa^3 is largest; n = 1000 has most
     // points beyond it.
-    if (n == 1000) EXPECT_GT(r.points_beyond_density_limit.size(), n / 2) << r;
+    if (n == 1000) { EXPECT_GT(r.points_beyond_density_limit.size(), n / 2) << r; }
     const kappa_real::Curve_result check = kappa_real::check_kappa_curve(curve.pieces(), q, true);
     EXPECT_LE(check.worst_distance(), 1e-9) << "n = " << n << ": " << check.summary();
     EXPECT_LE(check.worst_g1(), 1e-9) << "n = " << n << ": " << check.summary();
