@@ -98,6 +98,8 @@ class Curve:
     def __call__(self, u, nu=0):
         """c(u) (nu = 0) or its derivative of order nu: shape u.shape + (2,)."""
         u = _np.asarray(u, dtype=float)
+        if isinstance(nu, bool) or int(nu) != nu:
+            raise InvalidInputError(f"nu: expected an integer derivative order, got {nu!r}")
         out = self._solved.evaluate(_np.ascontiguousarray(u.ravel()), int(nu))
         return out.reshape(u.shape + (2,))
 

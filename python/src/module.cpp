@@ -289,8 +289,9 @@ void add_constraints(const py::object& rows, fair::Point_constraint_kind kind, s
   for (py::ssize_t i = 0; i < r.shape(0); ++i) {
     for (std::size_t c = 0; c < columns; ++c)
       if (!std::isfinite(r(i, c))) throw fair::Invalid_input_error(fair::internal::message(fair::io::spelling(kind), " constraint ", i, " is not finite"));
-    if (r(i, 0) < 0 || r(i, 0) != std::floor(r(i, 0)))
-      throw fair::Invalid_input_error(fair::internal::message(fair::io::spelling(kind), " constraint ", i, ": the index must be an integer >= 0"));
+    // (an index of 2^64 or more would wrap in the cast: review finding; 2^53 bounds every exact index)
+    if (r(i, 0) < 0 || r(i, 0) != std::floor(r(i, 0)) || r(i, 0) >= 9007199254740992.0)
+      throw fair::Invalid_input_error(fair::internal::message(fair::io::spelling(kind), " constraint ", i, ": the index must be an integer in [0, 2^53), got ", r(i, 0)));
     fair::Point_constraint c;
     c.index = static_cast<std::size_t>(r(i, 0));
     c.kind = kind;
@@ -480,7 +481,13 @@ const fair::Nurbs_curve_2<K>& nurbs_of(const Solved_curve& c) {
 /// of the rational curve). A u outside the domain is fair::Precondition_error (a ValueError).
 Array evaluate(const Solved_curve& c, const Array& u, int nu) {
   const fair::Nurbs_curve_2<K>& n = nurbs_of(c);
-  if (nu < 0) throw fair::Precondition_error("nu: expected a derivative order >= 0");
+  // The cap: derivatives() costs O(nu^2) per parameter (the Leibniz quotient rule) and, for a
+  // rational curve, its terms overflow past order ~150 (review: nu = 170 gave NaN, nu = 10^6 ran
+  // for minutes with the GIL released); no geometric use needs more than a few orders.
+  constexpr int max_derivative_order = 32;
+  if (nu < 0 || nu > max_derivative_order)
+    throw fair::Precondition_error(fair::internal::message("nu: expected a derivative order in [0, ", max_derivative_order,
+                                                           "], got ", nu));
   Array out({static_cast<py::ssize_t>(u.size()), static_cast<py::ssize_t>(2)});
   const double* in = u.data();
   double* o = out.mutable_data();
@@ -495,6 +502,9 @@ Array evaluate(const Solved_curve& c, const Array& u, int nu) {
         const K::Vector_2 v = n.derivatives(in[i], static_cast<std::size_t>(nu))[static_cast<std::size_t>(nu)];
         o[2 * i] = v.x(), o[2 * i + 1] = v.y();
       }
+      if (!std::isfinite(o[2 * i]) || !std::isfinite(o[2 * i + 1]))
+        throw fair::Precondition_error(fair::internal::message("the derivative of order ", nu, " at u[", i, "] = ", in[i],
+                                                               " is beyond the double range"));
     }
   }
   return out;

@@ -67,6 +67,8 @@ def test_bad_options_raise_typed_errors():
         (lambda: fair.optimal_curve(p, solver="lbfgs"), "solver"),
         (lambda: fair.optimal_curve(p, tangents=[(0, 1)]), "constraints"),
         (lambda: fair.optimal_curve(p, derivative_weight={5: 1.0}), "order k must be 1, 2, 3 or 4"),
+        (lambda: fair.optimal_curve(p, tangents=[(2.0**64, 1.0, 0.0)]), r"index must be an integer in \[0, 2\^53\)"),
+        (lambda: fair.kappa_curve(p)([0.5], nu=1.5), "integer derivative order"),
         (lambda: fair.optimal_curve(p, derivative_weight={1: -1.0}), "beta_k"),
         (lambda: fair.optimal_curve(p, derivative_weight={1: (1.0, 0.5)}), "alpha_k"),
         (lambda: fair.optimal_curve(p, derivative_weight=[1.0]), "expected a dict"),
@@ -87,6 +89,12 @@ def test_bad_options_raise_typed_errors():
     c = fair.interpolating_spline(p)
     with pytest.raises(fair.PreconditionError):
         c(c.domain[1] + 1)  # outside the domain
+    # derivative orders are capped (O(nu^2) work, overflow of a rational curve's terms past ~150)
+    k = fair.kappa_curve(p, weights="auto")
+    assert np.all(np.isfinite(k([0.5], nu=32)))
+    for nu in (33, 170, 10**6):
+        with pytest.raises(fair.PreconditionError, match="derivative order in"):
+            k([0.5], nu=nu)
     with pytest.raises(ValueError):
         c(math.nan)
 
