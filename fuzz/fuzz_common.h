@@ -46,6 +46,22 @@ namespace fair_fuzz {
   std::abort();
 }
 
+/// The readers' oracle: runs `parse`; true when it returned, false when it refused the input with
+/// a fair::Parse_error that names its file (one without a file name violates the oracle); any
+/// other exception propagates (fair::Internal_error included: run_guarded judges it).
+template <class Parse>
+bool parsed_or_refused(Parse&& parse) {
+  try {
+    parse();
+    return true;
+  } catch (const fair::Internal_error&) {
+    throw;
+  } catch (const fair::Parse_error& e) {
+    if (e.file().empty()) fuzz_fail("Parse_error without a file name");
+    return false;
+  }
+}
+
 /// Aborts unless `v` is finite; `what` says which output it is.
 inline void require_finite(double v, const char* what) {
   if (!std::isfinite(v)) fuzz_fail(std::string(what) + " is " + std::to_string(v));

@@ -79,15 +79,7 @@ void metrics(const std::vector<Piece>& curve, const std::vector<Other>& other, d
 }
 
 bool read(const std::string& text, fair::io::Curve_file<K>& out) {
-  try {
-    out = fair::io::parse_curve_json<K>(text, "fuzz.json");
-    return true;
-  } catch (const fair::Internal_error&) {
-    throw;
-  } catch (const fair::Parse_error& e) {
-    if (e.file().empty()) fair_fuzz::fuzz_fail("Parse_error without a file name");
-    return false;
-  }
+  return fair_fuzz::parsed_or_refused([&] { out = fair::io::parse_curve_json<K>(text, "fuzz.json"); });
 }
 
 } // namespace

@@ -51,25 +51,16 @@ extern "C" int FAIR_FUZZ_ENTRY(optimal)(const std::uint8_t* data, std::size_t si
   const std::size_t sep = rest.find('\x02');
   const std::string constraints = rest.substr(0, sep), lambdas = sep == std::string::npos ? "" : rest.substr(sep + 1);
   return fair_fuzz::run_guarded([&] {
-    if (!constraints.empty()) {
-      try {
+    if (!constraints.empty())
+      fair_fuzz::parsed_or_refused([&] {
         o.constraints = fair::io::merge_constraint_files(
             {fair::io::parse_constraints(constraints, "fuzz-constraints.txt", kind, p.size())});
-      } catch (const fair::Internal_error&) {
-        throw;
-      } catch (const fair::Parse_error& e) {
-        if (e.file().empty()) fair_fuzz::fuzz_fail("Parse_error without a file name");
-      }
-    }
-    if (!lambdas.empty()) {
-      try {
-        o.segment_lambda = fair::io::parse_segment_lambdas(lambdas, "fuzz-lambda.txt", o.closed ? p.size() : (p.empty() ? 0 : p.size() - 1));
-      } catch (const fair::Internal_error&) {
-        throw;
-      } catch (const fair::Parse_error& e) {
-        if (e.file().empty()) fair_fuzz::fuzz_fail("Parse_error without a file name");
-      }
-    }
+      });
+    if (!lambdas.empty())
+      fair_fuzz::parsed_or_refused([&] {
+        o.segment_lambda = fair::io::parse_segment_lambdas(lambdas, "fuzz-lambda.txt",
+                                                           o.closed ? p.size() : (p.empty() ? 0 : p.size() - 1));
+      });
     const fair::Optimal_curve_2<K> c(p, o);
     require_finite(c.energy(), "energy");
     for (const double k : c.curvatures()) require_finite(k, "vertex curvature");

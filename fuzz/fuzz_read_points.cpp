@@ -24,7 +24,7 @@ typedef CGAL::Exact_predicates_exact_constructions_kernel Ke;
 
 template <class K>
 bool read(const std::string& text, std::size_t how, fair::io::Point_file<K>& out) {
-  try {
+  return fair_fuzz::parsed_or_refused([&] {
     if (how == 0)
       out = fair::io::parse_points_csv<K>(text, "fuzz.csv");
     else if (how == 1)
@@ -32,13 +32,7 @@ bool read(const std::string& text, std::size_t how, fair::io::Point_file<K>& out
     else
       out = fair::io::is_json_point_text("fuzz", text) ? fair::io::parse_points_json<K>(text, "fuzz")
                                                        : fair::io::parse_points_csv<K>(text, "fuzz");
-    return true;
-  } catch (const fair::Internal_error&) {
-    throw;
-  } catch (const fair::Parse_error& e) {
-    if (e.file().empty()) fair_fuzz::fuzz_fail("Parse_error without a file name");
-    return false;
-  }
+  });
 }
 
 template <class K>

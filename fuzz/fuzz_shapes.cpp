@@ -27,14 +27,7 @@ typedef CGAL::Exact_predicates_exact_constructions_kernel Ke;
 template <class K>
 void run_design(const std::string& text) {
   fair::io::Design_file<K> f;
-  try {
-    f = fair::io::parse_design<K>(text, "fuzz.json");
-  } catch (const fair::Internal_error&) {
-    throw;
-  } catch (const fair::Parse_error& e) {
-    if (e.file().empty()) fair_fuzz::fuzz_fail("Parse_error without a file name");
-    return;
-  }
+  if (!fair_fuzz::parsed_or_refused([&] { f = fair::io::parse_design<K>(text, "fuzz.json"); })) return;
   for (const auto& marks : f.marked_points)
     for (const auto& p : marks) fair_fuzz::require_finite_point(p, "marked point");
   const fair::Basic_shape_design_2<K> d = fair::basic_shape_design(f.shapes, f.options());
