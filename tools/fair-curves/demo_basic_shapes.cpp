@@ -29,7 +29,7 @@ typedef fair::Basic_shape_2<Kernel> Shape;
 typedef fair::Rational_quadratic_bezier_2<Kernel> Conic;
 typedef CGAL::Exact_predicates_exact_constructions_kernel EPECK;
 
-const double pi = std::acos(-1.0);
+using fair_curves::pi;
 
 // n marks evenly spaced strictly inside (a, b).
 std::vector<double> even(double a, double b, int n) {

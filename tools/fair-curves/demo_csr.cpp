@@ -31,7 +31,7 @@ using fair_curves::Point_2;
 typedef fair::Bezier_2<Kernel> Piece;
 typedef fair::Csr_spline_2<Kernel> Csr;
 
-const double pi = std::acos(-1.0);
+using fair_curves::pi;
 
 // Fig. 2 data (as in test/csr and test/data/csr/fig2.csv): the right half of the unit circle from
 // (0, -1) over (1, 0) to (0, 1), then y = 1 - 0.02 x^2 at x = -0.39 k, k = 1..8: the junction is

@@ -24,7 +24,7 @@ using fair_curves::Kernel;
 using fair_curves::Point_2;
 typedef fair::Bezier_2<Kernel> Piece;
 
-const double pi = 3.14159265358979323846;
+using fair_curves::pi;
 
 // The unit spiral of the paper's claim: r = theta / (4 pi), theta in [pi, 4 pi] (radius 1/4 to 1).
 const fair::Archimedean_spiral_2 spiral(0.0, 1 / (4 * pi), pi, 4 * pi);

@@ -34,6 +34,10 @@ namespace fair_curves {
 typedef CGAL::Simple_cartesian<double> Kernel;
 typedef Kernel::Point_2 Point_2;
 
+/// The double nearest to pi, for the program's cases (once: the program may be built as unity
+/// translation units, where two file-local definitions would clash).
+constexpr double pi = 3.14159265358979323846;
+
 /// The spline in double, for drawing.
 template <class K>
 fair::Cubic_spline_2<Kernel> to_double_spline(const fair::Cubic_spline_2<K>& s) {
