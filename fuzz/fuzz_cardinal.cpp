@@ -13,6 +13,9 @@
 #include <CGAL/Simple_cartesian.h>
 
 namespace {
+// Named inside the unnamed namespace: fuzz_replay is one unity translation unit of every target
+// (fuzz/CMakeLists.txt), whose file-local names must not clash.
+namespace cardinal_target {
 
 typedef CGAL::Simple_cartesian<double> K;
 typedef K::Point_2 Point_2;
@@ -45,9 +48,11 @@ void check_spline(const Spline& s, bool energy) {
   }
 }
 
+} // namespace cardinal_target
 } // namespace
 
 extern "C" int FAIR_FUZZ_ENTRY(cardinal)(const std::uint8_t* data, std::size_t size) {
+  using namespace cardinal_target;
   fair_fuzz::Fuzz_input in(data, size);
   const std::uint8_t head = in.byte();
   const bool closed = head & 1;

@@ -18,6 +18,9 @@
 #include <CGAL/Simple_cartesian.h>
 
 namespace {
+// Named inside the unnamed namespace: fuzz_replay is one unity translation unit of every target
+// (fuzz/CMakeLists.txt), whose file-local names must not clash.
+namespace classic_target {
 
 typedef CGAL::Simple_cartesian<double> K;
 typedef K::Point_2 Point_2;
@@ -41,9 +44,11 @@ void check_spline(const fair::Cubic_spline_2<K>& s) {
   }
 }
 
+} // namespace classic_target
 } // namespace
 
 extern "C" int FAIR_FUZZ_ENTRY(classic)(const std::uint8_t* data, std::size_t size) {
+  using namespace classic_target;
   fair_fuzz::Fuzz_input in(data, size);
   const std::uint8_t head = in.byte();
   const std::size_t method = head % 5;

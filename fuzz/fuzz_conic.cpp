@@ -14,6 +14,9 @@
 #include <CGAL/Simple_cartesian.h>
 
 namespace {
+// Named inside the unnamed namespace: fuzz_replay is one unity translation unit of every target
+// (fuzz/CMakeLists.txt), whose file-local names must not clash.
+namespace conic_target {
 
 typedef CGAL::Simple_cartesian<double> K;
 typedef K::Point_2 Point_2;
@@ -29,9 +32,11 @@ void typed(F&& f) {
   }
 }
 
+} // namespace conic_target
 } // namespace
 
 extern "C" int FAIR_FUZZ_ENTRY(conic)(const std::uint8_t* data, std::size_t size) {
+  using namespace conic_target;
   fair_fuzz::Fuzz_input in(data, size);
   const std::uint8_t head = in.byte();
   Point_2 p[3];

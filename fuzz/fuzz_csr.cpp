@@ -13,6 +13,9 @@
 #include <CGAL/Simple_cartesian.h>
 
 namespace {
+// Named inside the unnamed namespace: fuzz_replay is one unity translation unit of every target
+// (fuzz/CMakeLists.txt), whose file-local names must not clash.
+namespace csr_target {
 
 typedef CGAL::Simple_cartesian<double> K;
 typedef K::Point_2 Point_2;
@@ -27,9 +30,11 @@ void check_csr(const fair::Csr_spline_2<K>& s) {
   for (const double d : s.distances_to_samples()) require_finite(d, "distance to sample");
 }
 
+} // namespace csr_target
 } // namespace
 
 extern "C" int FAIR_FUZZ_ENTRY(csr)(const std::uint8_t* data, std::size_t size) {
+  using namespace csr_target;
   fair_fuzz::Fuzz_input in(data, size);
   const std::uint8_t head = in.byte();
   const bool closed = head & 1;

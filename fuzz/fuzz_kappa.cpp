@@ -14,6 +14,9 @@
 #include <sstream>
 
 namespace {
+// Named inside the unnamed namespace: fuzz_replay is one unity translation unit of every target
+// (fuzz/CMakeLists.txt), whose file-local names must not clash.
+namespace kappa_target {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_2 Point_2;
@@ -75,9 +78,11 @@ void check_curve(const fair::Kappa_curve_2<K>& c) {
   }
 }
 
+} // namespace kappa_target
 } // namespace
 
 extern "C" int FAIR_FUZZ_ENTRY(kappa)(const std::uint8_t* data, std::size_t size) {
+  using namespace kappa_target;
   fair_fuzz::Fuzz_input in(data, size);
   fair::Kappa_curve_options opt;
   const std::uint8_t head = in.byte();

@@ -21,6 +21,9 @@
 #include <string>
 
 namespace {
+// Named inside the unnamed namespace: fuzz_replay is one unity translation unit of every target
+// (fuzz/CMakeLists.txt), whose file-local names must not clash.
+namespace metrics_target {
 
 typedef CGAL::Simple_cartesian<CGAL::Gmpq> K;
 using fair_fuzz::require_finite;
@@ -82,9 +85,11 @@ bool read(const std::string& text, fair::io::Curve_file<K>& out) {
   return fair_fuzz::parsed_or_refused([&] { out = fair::io::parse_curve_json<K>(text, "fuzz.json"); });
 }
 
+} // namespace metrics_target
 } // namespace
 
 extern "C" int FAIR_FUZZ_ENTRY(metrics)(const std::uint8_t* data, std::size_t size) {
+  using namespace metrics_target;
   if (size < 4) return 0;
   // Options: tolerance 10^-(b mod 13), circle center and radius from small integers.
   const double tolerance = std::pow(10.0, -double(data[0] % 13));

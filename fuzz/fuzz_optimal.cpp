@@ -20,14 +20,19 @@
 #include <string>
 
 namespace {
+// Named inside the unnamed namespace: fuzz_replay is one unity translation unit of every target
+// (fuzz/CMakeLists.txt), whose file-local names must not clash.
+namespace optimal_target {
 
 typedef CGAL::Simple_cartesian<double> K;
 typedef K::Point_2 Point_2;
 using fair_fuzz::require_finite;
 
+} // namespace optimal_target
 } // namespace
 
 extern "C" int FAIR_FUZZ_ENTRY(optimal)(const std::uint8_t* data, std::size_t size) {
+  using namespace optimal_target;
   fair_fuzz::Fuzz_input in(data, size);
   const std::uint8_t head = in.byte(), more = in.byte();
   fair::Optimal_curve_options o;

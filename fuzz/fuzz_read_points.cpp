@@ -18,6 +18,9 @@
 #include <algorithm>
 
 namespace {
+// Named inside the unnamed namespace: fuzz_replay is one unity translation unit of every target
+// (fuzz/CMakeLists.txt), whose file-local names must not clash.
+namespace read_points_target {
 
 typedef CGAL::Simple_cartesian<double> Kd;
 typedef CGAL::Exact_predicates_exact_constructions_kernel Ke;
@@ -55,9 +58,11 @@ void check_file(const fair::io::Point_file<K>& f, const std::string& text) {
   }
 }
 
+} // namespace read_points_target
 } // namespace
 
 extern "C" int FAIR_FUZZ_ENTRY(read_points)(const std::uint8_t* data, std::size_t size) {
+  using namespace read_points_target;
   if (size == 0) return 0;
   const std::size_t how = data[0] % 3;
   const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);

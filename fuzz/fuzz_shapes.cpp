@@ -20,6 +20,9 @@
 #include <string>
 
 namespace {
+// Named inside the unnamed namespace: fuzz_replay is one unity translation unit of every target
+// (fuzz/CMakeLists.txt), whose file-local names must not clash.
+namespace shapes_target {
 
 typedef CGAL::Simple_cartesian<double> Kd;
 typedef CGAL::Exact_predicates_exact_constructions_kernel Ke;
@@ -46,9 +49,11 @@ void run_design(const std::string& text) {
   }
 }
 
+} // namespace shapes_target
 } // namespace
 
 extern "C" int FAIR_FUZZ_ENTRY(shapes)(const std::uint8_t* data, std::size_t size) {
+  using namespace shapes_target;
   if (size == 0) return 0;
   const bool exact = (data[0] & 1) && size < 600;
   const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
