@@ -166,19 +166,23 @@ public:
   }
 
   /// c'(t) = V(t) / W(t)^2 (see the file comment); t in [0,1].
+  /// \throws Precondition_error in a floating kernel when the value (or V(t), W(t)^2 on the way)
+  /// is beyond double: c'(0) = 2w (P1 - P0), so a huge weight on huge differences has no
+  /// representable derivative (fuzz finding conic/open-derivative-overflow); as curvature().
   Vector_2 derivative(const FT& t) const {
     check_parameter(t, "derivative");
     const FT W = denominator(t);
     const Vector_2 V = hodograph_numerator(t);
-    return V / (W * W);
+    return checked_finite(V / (W * W), "derivative", t);
   }
 
   /// c''(t) = (V' W - 2 V W') / W^3; t in [0,1].
+  /// \throws Precondition_error in a floating kernel when the value is beyond double (as derivative()).
   Vector_2 second_derivative(const FT& t) const {
     check_parameter(t, "second_derivative");
     const FT W = denominator(t), W1 = FT(2) * (w_ - FT(1)) * (FT(1) - FT(2) * t);
     const Vector_2 V = hodograph_numerator(t), V1 = hodograph_numerator_derivative(t);
-    return (V1 * W - V * (FT(2) * W1)) / (W * W * W);
+    return checked_finite((V1 * W - V * (FT(2) * W1)) / (W * W * W), "second_derivative", t);
   }
 
   /// D = det(P1 - P0, P2 - P1): twice the signed area Delta(P0, P1, P2) of eq. 5 (exact).
@@ -429,6 +433,19 @@ private:
     return internal::conic::eq4_coefficients<CGAL::Gmpq>(to_gmpq(p_[0].x()), to_gmpq(p_[0].y()), to_gmpq(p_[1].x()),
                                                    to_gmpq(p_[1].y()), to_gmpq(p_[2].x()), to_gmpq(p_[2].y()),
                                                    to_gmpq(w_));
+  }
+
+  /// `v`, unless a floating kernel overflowed (or met inf - inf) computing it.
+  Vector_2 checked_finite(const Vector_2& v, const char* fn, const FT& t) const {
+    if constexpr (internal::common::Is_floating_nt<FT>::value) {
+      const double x = CGAL::to_double(v.x()), y = CGAL::to_double(v.y());
+      internal::require(std::isfinite(x) && std::isfinite(y), "Rational_quadratic_bezier_2::", fn, ": the value at t = ",
+                        CGAL::to_double(t), " is beyond double precision (w = ", CGAL::to_double(w_),
+                        ", control points up to ", std::max({std::abs(xd_[0]), std::abs(xd_[1]), std::abs(xd_[2]),
+                                                             std::abs(yd_[0]), std::abs(yd_[1]), std::abs(yd_[2])}),
+                        "); scale the piece down");
+    }
+    return v;
   }
 
   void check_parameter(const FT& t, const char* fn) const {

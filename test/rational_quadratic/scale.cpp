@@ -116,6 +116,34 @@ TYPED_TEST(Rational_quadratic_scale_test, EccentricityOfExtremeWeights) {
   EXPECT_GE(checked, 20);
 }
 
+// c'(t) = V(t) / W(t)^2 with V(0) = 2w (P1 - P0), V(1) = 2w (P2 - P1): a huge weight on huge
+// differences has no derivative in double, and the piece says so instead of returning inf (fuzz
+// finding conic/open-derivative-overflow, this piece); the same piece scaled down by 2^-600 has
+// finite derivatives, c'(1) = 2w (P2 - P1) 2^-600 among them.
+TYPED_TEST(Rational_quadratic_scale_test, UnrepresentableDerivativeThrows) {
+  typedef TypeParam K;
+  typedef typename K::Point_2 P;
+  typedef fair::Rational_quadratic_bezier_2<K> C;
+  const P p0(-0.0, 5.2584254243822787e+104), p1(1e16, -4.8369999999999991e+23), p2(-2.5891e-146, 2.3065373667657711e+267);
+  const double w = 2.3124999999999999e+154;
+  const C piece(p0, p1, p2, w);
+  // c'(0) = 2w (P1 - P0), about 2.4e259: representable; c''(0) has w^2 (P1 - P0) ~ 1e414: not.
+  const auto d0 = piece.derivative(0.0);
+  EXPECT_NEAR(d0.y(), 2 * w * (p1.y() - p0.y()), 1e-14 * std::abs(d0.y()));
+  EXPECT_THROW(piece.second_derivative(0.0), fair::Precondition_error);
+  EXPECT_TRUE(std::isfinite(piece.point(0.5).x()) && std::isfinite(piece.point(0.5).y()));
+  const double down = std::ldexp(1.0, -600);
+  const C scaled(P(p0.x() * down, p0.y() * down), P(p1.x() * down, p1.y() * down), P(p2.x() * down, p2.y() * down), w);
+  for (const double t : {0.0, 0.5, 1.0}) {
+    const auto d = scaled.derivative(t);
+    EXPECT_TRUE(std::isfinite(d.x()) && std::isfinite(d.y())) << t;
+  }
+  // At t = 1: c'(1) = 2w (P2 - P1), about 1.1e422 unscaled: beyond double; scaled, exactly 2^-600 of it.
+  EXPECT_THROW(piece.derivative(1.0), fair::Precondition_error);
+  const auto d1 = scaled.derivative(1.0);
+  EXPECT_NEAR(d1.y(), 2 * w * ((p2.y() - p1.y()) * down), 1e-14 * std::abs(d1.y()));
+}
+
 TYPED_TEST(Rational_quadratic_scale_test, UnrepresentableCurvatureThrows) {
   typedef TypeParam K;
   typedef typename K::Point_2 P;

@@ -329,8 +329,15 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
   for (Vec2& v : res.polygon) v = {{v[0] * scale + cx, v[1] * scale + cy}};
   for (std::size_t i = 0; i < points.size(); ++i) res.polygon[res.interpolation_indices[i]] = points[i];
   for (double& k : res.curvatures) k /= scale;
+  const double normalised_energy = res.report.energy;
   res.report.energy *= scale;
   for (Optimal_curve_level& l : res.report.levels) l.energy *= scale;
+  // F(q c) = q F(c): at an extent near the top of the double range the energy itself can exceed
+  // it (fuzz finding optimal/open-energy-inf: points at 1e302 with a kappa'' term).
+  if (std::isfinite(normalised_energy) && !std::isfinite(res.report.energy))
+    throw Invalid_input_error(message("Optimal_curve_2: the energy of the curve (", normalised_energy,
+                                      " at unit extent) overflows double at the points' extent ", r,
+                                      "; scale the points down"));
   return with_shape(std::move(res));
 }
 
