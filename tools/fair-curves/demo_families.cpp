@@ -84,29 +84,14 @@ std::string side_by_side(const std::vector<std::string>& panels, std::size_t col
   return out + "</svg>\n";
 }
 
-// The strokes' sampled curves as one (pieces renumbered), for one comb on one scale.
-fair::Sampled_curve joined(const std::vector<fair::Sampled_curve>& parts) {
-  fair::Sampled_curve all;
-  std::size_t offset = 0;
-  for (const fair::Sampled_curve& p : parts) {
-    for (fair::Curve_sample s : p.samples) {
-      s.piece += offset;
-      all.samples.push_back(s);
-    }
-    offset += p.number_of_pieces();
-  }
-  all.piece_start.assign(offset + 1, 0.0);
-  return all;
-}
-
 void add_family_cases(fair_curves::Gallery& gallery) {
   gallery.add_section(
       "Every family on one real drawing",
       "One hand-drawn sketch (Quick, Draw! 'angel', 5 strokes, 78 points) through every family of the library, each at "
       "its defaults: the kappa-curve with unit and automatic weights, the Cardinal spline at its optimal alpha, the "
-      "classic C2 spline (chordal), Catmull-Rom (centripetal), the csr-spline and the optimal curve. The combs share "
-      "one scale (the 95th percentile of the kappa-curve's curvature is a tenth of the drawing's diagonal); a red tooth "
-      "with a dot is clipped at twice that length. The table is the drawing's worst stroke for the extent, and sums "
+      "classic C2 spline (chordal), Catmull-Rom (centripetal), the csr-spline and the optimal curve. The panels show "
+      "the longest stroke; its combs share one scale (the 95th percentile of the kappa-curve's curvature is 6 % of the "
+      "stroke's diagonal); a red tooth with a dot is clipped at twice that length. The table is the drawing's worst stroke for the extent, and sums "
       "over its strokes for the counts (doc/real_data.md has the same figures over all the real data).");
   const std::vector<Stroke> strokes = angel();
   std::size_t points = 0, polygon_crossings = 0;
@@ -115,14 +100,16 @@ void add_family_cases(fair_curves::Gallery& gallery) {
     polygon_crossings += fair::internal::metrics::polygon_self_intersections(s.points, s.closed);
   }
   std::vector<std::string> panels;
+  const Stroke& body = strokes[1];  // the longest stroke, 34 points
+  const double comb_fraction = 0.06;
   double common_scale = 0;
+  std::vector<fair::Sampled_curve> body_curves;
   fair_curves::Gallery_case g;
   g.title = "Quick, Draw! angel 6665588124418048, every family";
   g.table.push_back({"method", "outcome (per stroke)", "max extent ratio", "length / polygon", "median E L",
                      "inflections / point", "extrema / point", "self-intersections (polygon: " +
                      std::to_string(polygon_crossings) + ")", "ms"});
   for (const std::string& method : fair_curves::family_methods()) {
-    std::vector<fair::Sampled_curve> parts;
     double extent = 0, length = 0, polygon = 0;
     std::vector<double> EL;
     std::size_t inflections = 0, extrema = 0, crossings = 0, undecided = 0;
@@ -139,7 +126,6 @@ void add_family_cases(fair_curves::Gallery& gallery) {
       EL.push_back(r.bending_EL);
       inflections += r.inflections, extrema += r.extrema;
       crossings += r.self_intersections.crossings, undecided += r.self_intersections.undecided;
-      parts.push_back(fair_curves::sample_family<Kernel>(method, s.points, s.closed));
     }
     const double ms = 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::sort(EL.begin(), EL.end());
@@ -149,27 +135,30 @@ void add_family_cases(fair_curves::Gallery& gallery) {
                        fair_curves::family_number(double(extrema) / double(points), 2),
                        std::to_string(crossings) + (undecided ? " (+" + std::to_string(undecided) + " undecided)" : ""),
                        fair_curves::family_number(ms, 3)});
+    // The panel: the longest stroke alone (the whole drawing's combs overlap each other), its comb
+    // on the scale of the kappa-curve's (w = 1), whose 95th-percentile tooth is 6 % of the diagonal.
+    const fair::Sampled_curve body_curve = fair_curves::sample_family<Kernel>(method, body.points, body.closed);
     fair::io::Svg_figure figure(400);
     figure.set_title(method);
-    const fair::Sampled_curve all = joined(parts);
-    if (common_scale == 0) common_scale = fair::io::Svg_figure().add_curvature_comb(all);
-    figure.add_curvature_comb(all, common_scale);
-    for (const fair::Sampled_curve& p : parts) figure.add_curve(p);
-    for (const Stroke& s : strokes) figure.add_points(fair::io::to_xy(s.points), "#111111");
+    if (common_scale == 0) common_scale = fair::io::Svg_figure().add_curvature_comb(body_curve, 0, comb_fraction);
+    figure.add_curvature_comb(body_curve, common_scale, comb_fraction);
+    figure.add_curve(body_curve);
+    figure.add_points(fair::io::to_xy(body.points), "#111111");
     panels.push_back(figure.str());
+    body_curves.push_back(body_curve);
   }
-  g.caption = "Each panel: one family through the same 78 points (black), its curve (blue) and curvature comb (orange; "
-              "clipped teeth red). Extent ratio: diagonal of the curve's bounding box over the points'; E L: bending "
+  g.caption = "Each panel: one family through the drawing's longest stroke (its 34 points in black), its curve (blue) "
+              "and curvature comb (orange; clipped teeth red), the combs on one scale. The table covers all 5 strokes "
+              "(78 points). Extent ratio: diagonal of the curve's bounding box over the points'; E L: bending "
               "energy times length (scale free, 4 pi^2 for a circle); inflections and curvature extrema certified "
               "(fair/Fairness_metrics.h) per input point; self-intersections certified "
               "(internal/metrics/self_intersections.h). The optimal curve is at the defaults of the build.";
   g.images = {{"every family side by side", side_by_side(panels, 2, 400)}};
-  // The longest stroke's curvature for every family (the second figure of the case).
-  const Stroke& body = strokes[1];
+  // The same stroke's curvature for every family (the second figure of the case).
   std::vector<std::string> plots;
-  for (const std::string& method : fair_curves::family_methods())
-    plots.push_back(fair::io::curvature_plot_svg(fair_curves::sample_family<Kernel>(method, body.points, body.closed), {},
-                                                 method + ": curvature of the body stroke (34 points)", 400, 200));
+  for (std::size_t m = 0; m < body_curves.size(); ++m)
+    plots.push_back(fair::io::curvature_plot_svg(body_curves[m], {}, fair_curves::family_methods()[m] +
+                                                 ": curvature of the body stroke (34 points)", 400, 200));
   g.images.push_back({"curvature of the longest stroke", side_by_side(plots, 2, 400)});
   gallery.add_case(std::move(g));
 }
