@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian 12 machine: installs what is missing, builds, runs.
 #   bash tools/bootstrap.sh demo      set up, build fair-curves, write the demo gallery to demo-out/
+#   bash tools/bootstrap.sh serve     set up, build fair-curves, start the curve editor (fair-curves serve --open)
 #   bash tools/bootstrap.sh test      set up, build everything, run every test (ctest)
 #   bash tools/bootstrap.sh sanitize  the same tests built with -fsanitize=address,undefined
 #   bash tools/bootstrap.sh bench     build and run the Google Benchmark programs
@@ -22,6 +23,13 @@ test_packages=(libfreetype-dev fonts-dejavu-core libocct-modeling-algorithms-dev
 # The Python module (python/, doc/python.md; -DFAIR_BUILD_PYTHON=ON in the test build) and its
 # tests: pybind11 and numpy to build it, pytest and scipy (the independent oracle) to test it.
 test_packages+=(python3-dev pybind11-dev python3-numpy python3-pytest python3-scipy)
+# The editor's browser test (test/editor/browser_test.mjs, doc/editor.md): Debian's chromium,
+# driven headless by puppeteer-core from npm (test/editor/package-lock.json; it never downloads a
+# browser). Node.js and npm from Debian unless a node and an npm are already on the PATH (e.g.
+# NodeSource's nodejs, which bundles npm and conflicts with Debian's npm package).
+test_packages+=(chromium)
+command -v node >/dev/null 2>&1 || test_packages+=(nodejs)
+command -v npm >/dev/null 2>&1 || test_packages+=(npm)
 # Benchmark-only: Eigen 3, the peer of bench_linear_algebra (doc/linear_algebra.md).
 bench_packages=(libeigen3-dev)
 # The sanitizer stage compiles with clang: its ASan+UBSan build of a CGAL test takes half the CPU
@@ -59,9 +67,18 @@ case "${1:-}" in
     cmake --build build --target fair-curves -j "$jobs"
     ./build/tools/fair-curves/fair-curves demo --out demo-out
     echo "bootstrap: open demo-out/index.html" ;;
+  serve)
+    setup
+    configure build -DFAIR_BUILD_TESTS=OFF -DFAIR_BUILD_EXAMPLES=OFF
+    cmake --build build --target fair-curves -j "$jobs"
+    exec ./build/tools/fair-curves/fair-curves serve --open "${@:2}" ;;
   test)
     packages+=("${test_packages[@]}")
     setup
+    # puppeteer-core at the locked version, no install scripts, never a browser download; the
+    # browser test must then run (FAIR_EDITOR_REQUIRE_BROWSER: a missing tool fails it).
+    (cd test/editor && PUPPETEER_SKIP_DOWNLOAD=1 npm ci --ignore-scripts --no-audit --no-fund --loglevel=error)
+    export FAIR_EDITOR_REQUIRE_BROWSER=1
     configure build -DFAIR_BUILD_TESTS=ON -DFAIR_BUILD_EXAMPLES=ON -DFAIR_BUILD_PYTHON=ON
     cmake --build build -j "$jobs"
     ctest --test-dir build --output-on-failure -j "$jobs" ;;
@@ -86,6 +103,6 @@ case "${1:-}" in
       [ -x "$b" ] && "$b" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
     done ;;
   *)
-    sed -n '2,8p' "$0" >&2
+    sed -n '2,9p' "$0" >&2
     exit 2 ;;
 esac
