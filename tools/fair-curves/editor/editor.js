@@ -322,11 +322,15 @@ function renderCurve() {
   if ($('show-comb').checked) {
     const k = combScale(c.sampled);
     let teeth = '', hull = '';
+    // Every sample on the envelope, at most about 400 teeth (a dense fan hides the curve).
+    const stride = Math.max(1, Math.round(samples.length / 400));
     samples.forEach((s, i) => {
       // The tooth points away from the centre of curvature: -kappa times the left normal.
-      const [x0, y0] = toScreen(s.x, s.y);
       const [x1, y1] = toScreen(s.x - k * s.k * s.nx, s.y - k * s.k * s.ny);
-      teeth += `M${n2(x0)} ${n2(y0)}L${n2(x1)} ${n2(y1)}`;
+      if (i % stride === 0) {
+        const [x0, y0] = toScreen(s.x, s.y);
+        teeth += `M${n2(x0)} ${n2(y0)}L${n2(x1)} ${n2(y1)}`;
+      }
       hull += (i ? 'L' : 'M') + n2(x1) + ' ' + n2(y1);
     });
     comb.setAttribute('d', teeth); env.setAttribute('d', hull);
@@ -341,7 +345,21 @@ function renderCurve() {
   renderMarkers();
 }
 
+// The legend over the canvas: the method drawn with its comb, then the overlaid ones.
+function renderLegend() {
+  const box = $('legend');
+  box.replaceChildren();
+  const shown = [state.method, ...[...state.overlay].filter((m) => m !== state.method)];
+  if (shown.length < 2) return;
+  for (const m of shown) {
+    const row = document.createElement('div');
+    row.innerHTML = `<span class="swatch" style="background:${COLOURS[m]}"></span> ${m}${m === state.method ? ' <span class="muted">(comb, plot)</span>' : ''}`;
+    box.appendChild(row);
+  }
+}
+
 function renderOverlays() {
+  renderLegend();
   const g = $('overlays');
   g.replaceChildren();
   for (const m of state.overlay) {
@@ -411,7 +429,8 @@ function renderPlot() {
   const [zx0, zy] = plotMap(0, 0), [zx1] = plotMap(L, 0);
   $('plot-zero').setAttribute('d', `M${n2(zx0)} ${n2(zy)}H${n2(zx1)}`);
   let joins = '';
-  for (const a of c.sampled.starts.slice(1)) { const [x] = plotMap(samples[a].s, 0); joins += `M${n2(x)} 8V${h - 8}`; }
+  // The joins of the pieces, when they are few enough to read (an optimal curve has hundreds).
+  if (c.sampled.starts.length <= 40) for (const a of c.sampled.starts.slice(1)) { const [x] = plotMap(samples[a].s, 0); joins += `M${n2(x)} 8V${h - 8}`; }
   el('path', { d: joins, class: 'plot-join' }, $('plot-joins'));
   const axes = $('plot-axes');
   for (const k of [kmax, -kmax]) {
@@ -889,6 +908,7 @@ async function start() {
 // screen position of a point, and loading points without the file dialog.
 window.fairEditor.busy = () => primary.busy || metricsChannel.busy || metricsTimer !== 0 ||
   Object.entries(overlayChannels).some(([m, c]) => state.overlay.has(m) && c.busy);
+window.fairEditor.primaryBusy = () => primary.busy;
 window.fairEditor.screenOf = (i) => toScreen(state.points[i].x, state.points[i].y);
 window.fairEditor.loadPoints = loadPoints;
 window.fairEditor.ready = start();
