@@ -19,8 +19,9 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import editor_api  # noqa: E402  (the server and the program runner of the API test)
 
-CLIENTS = int(sys.argv[2]) if len(sys.argv) > 2 else 8
-REQUESTS = int(sys.argv[3]) if len(sys.argv) > 3 else 40
+_numbers = [int(a) for a in sys.argv[2:] if a.isdigit()]
+CLIENTS = _numbers[0] if len(_numbers) > 0 else 8
+REQUESTS = _numbers[1] if len(_numbers) > 1 else 40
 
 
 def requests():
