@@ -2,6 +2,8 @@
 # inside if(FAIR_BUILD_TESTS):
 #   editor_api      the API and every bad input against the program run directly (Python 3 stdlib)
 #   editor_load     8 clients x 40 requests, every answer the program's; latency percentiles
+#   editor_page_units  the page's modules in Node: curve evaluation, point files, outcome words,
+#                   request channels
 #   editor_browser  the page in Debian's headless chromium driven by puppeteer-core
 #                   (test/editor/package-lock.json; `npm ci` in test/editor, done by
 #                   `bash tools/bootstrap.sh test`)
@@ -25,6 +27,9 @@ endif()
 
 set(FAIR_EDITOR_OUT ${CMAKE_CURRENT_BINARY_DIR}/editor-test)
 if(FAIR_EDITOR_NODE)
+  # The page's modules in Node, no browser (test/editor/page_units.mjs).
+  add_test(NAME editor_page_units COMMAND ${FAIR_EDITOR_NODE} ${FAIR_EDITOR_TEST_DIR}/page_units.mjs
+           ${PROJECT_SOURCE_DIR}/tools/fair-curves/editor)
   add_test(NAME editor_browser COMMAND ${FAIR_EDITOR_NODE} ${FAIR_EDITOR_TEST_DIR}/browser_test.mjs
            $<TARGET_FILE:fair-curves> ${FAIR_EDITOR_OUT})
 else()

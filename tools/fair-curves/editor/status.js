@@ -50,8 +50,9 @@ function optimalWords(c) {
     `${(r.levels || []).length} levels, ${r.iterations} iterations, energy ${fmt(r.energy, 6)}, spline fit within ` +
     `${fmt(c.fit_max_distance)}; ${r.status}`;
   let level = r.status === 'converged' ? 'ok' : 'bad';
-  if (r.status === 'capped') text += ' (a level or vertex cap was hit before convergence)';
-  if (r.status === 'diverging') text += ' (the solver failed: an edge collapsed or no descent step)';
+  // The meanings of fair::Optimal_curve_status (include/fair/Optimal_curve_report.h).
+  if (r.status === 'capped') text += ' (an iteration, level or vertex cap was hit first, or the solver failed)';
+  if (r.status === 'diverging') text += ' (the curve runs away: no finite minimiser for these data and weights)';
   if (r.extent_ratio > 1.5 || r.self_intersections > r.input_self_intersections) {
     text += `; warning: the curve reaches ${fmt(r.extent_ratio)} times the extent of its points and has ` +
       `${r.self_intersections} self-intersection${r.self_intersections === 1 ? '' : 's'} (the input polygon ` +
