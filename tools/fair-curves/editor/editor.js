@@ -287,6 +287,10 @@ function renderPoints() {
   pts.forEach((p, i) => {
     const [x, y] = toScreen(p.x, p.y);
     const c = g.childNodes[2 * i], t = g.childNodes[2 * i + 1];
+    // Only what changed is written (a drag moves one point of a hundred: one style recalculation).
+    const key = `${n2(x)} ${n2(y)} ${i === state.selected} ${corners && p.corner} ${i}`;
+    if (c.__drawn === key) return;
+    c.__drawn = key;
     c.setAttribute('cx', n2(x)); c.setAttribute('cy', n2(y));
     c.setAttribute('data-index', i);
     c.setAttribute('r', i === state.selected ? 6 : 5);
