@@ -179,6 +179,17 @@ try {
   await page.click('#undo'); await settle();
   check(JSON.stringify(await points()) === JSON.stringify(before), 'the Undo button walks back to the dragged curve');
 
+  // ---- an option from the panel (built from /api/methods): kappa weights auto
+  await page.select('#options [data-option="weights"] select', 'auto');
+  await settle();
+  const autoDirect = await solveDirect({ method: 'kappa', points: before, closed: false, options: { weights: 'auto' } });
+  const sAuto = await status();
+  check(sAuto.includes(', weights auto,') && (await dataStatus()) === autoDirect.status, `weights auto from the options panel: "${sAuto}"`);
+  check(await page.evaluate((d) => JSON.stringify(window.fairEditor.state.curves.kappa.curve) === JSON.stringify(d), autoDirect),
+    'the page holds the answer of a direct solve with weights auto');
+  await page.select('#options [data-option="weights"] select', '1');
+  await settle();
+
   // ---- load a point file (CSV) through the file input
   const csv = path.join(downloads, 'wave.csv');
   fs.writeFileSync(csv, '# a wave\n0,0\n1,0.8\n2,0.2\n3,1.1\n4,0.4\n');
@@ -189,6 +200,10 @@ try {
   check((await status()).startsWith('kappa: 3 pieces, open'), `a loaded CSV is solved: "${await status()}"`);
   await page.click('#undo'); await settle();
   check(JSON.stringify(await points()) === JSON.stringify(before), 'undo after a load restores the points');
+  check(await page.evaluate(() => window.fairEditor.state.points.every((_, i) => {
+    const [x, y] = window.fairEditor.screenOf(i); const c = document.getElementById('canvas');
+    return x >= 0 && y >= 0 && x <= c.clientWidth && y <= c.clientHeight;
+  })), 'the restored points are in view (the view was fitted to the loaded file)');
 
   // ---- switch the method
   await page.select('#method', 'optimal');
@@ -198,6 +213,19 @@ try {
   check(s3.startsWith('optimal: open, 6 points') && s3.includes(`; ${optimalDirect.report.status}`), `optimal status reads the report: "${s3}"`);
   check(await attr('#curve', 'd') !== curve2, 'the optimal curve differs from the kappa-curve');
   check((await page.$$eval('#options [data-option]', (o) => o.map((x) => x.dataset.option))).includes('lambda'), 'the options panel of optimal has lambda');
+  // A corner on point 2 (the C key): the request carries the corners row from its neighbours.
+  const [cx2, cy2] = await page.evaluate(() => window.fairEditor.screenOf(2));
+  await page.mouse.click(rect.x + cx2, rect.y + cy2);
+  await page.keyboard.press('c');
+  await settle();
+  const row = [2, before[2][0] - before[1][0], before[2][1] - before[1][1], before[3][0] - before[2][0], before[3][1] - before[2][1]];
+  const cornerDirect = await solveDirect({ method: 'optimal', points: before, closed: false, options: { corners: [row] } });
+  check((await page.$$eval('#points circle.corner', (c) => c.length)) === 1, 'C marks point 2 a corner');
+  check(await page.evaluate((d) => JSON.stringify(window.fairEditor.state.curves.optimal.curve) === JSON.stringify(d), cornerDirect),
+    `the page holds the answer of a direct solve with the corner row (${(await status()).split('; ').pop()})`);
+  await page.keyboard.press('c');
+  await settle();
+  check((await page.$$eval('#points circle.corner', (c) => c.length)) === 0 && (await status()) === s3, 'C again removes the corner');
 
   // ---- the overlay: kappa and cardinal beside optimal
   for (const m of ['kappa', 'cardinal']) await page.click(`#overlay-list input[data-overlay="${m}"]`);

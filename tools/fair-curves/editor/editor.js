@@ -570,6 +570,12 @@ function restore(s) {
   state.points = o.points; state.closed = o.closed;
   $('closed').checked = state.closed;
   if (state.selected >= state.points.length) state.selected = -1;
+  // Undoing a load brings back points the view may no longer show: fit when one is outside.
+  const outside = state.points.some((p) => {
+    const [x, y] = toScreen(p.x, p.y);
+    return x < 0 || y < 0 || x > sizes.canvas.w || y > sizes.canvas.h;
+  });
+  if (outside) { fitView(); renderAll(); }
   primary.reset();
   changed();
 }
