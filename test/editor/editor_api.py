@@ -536,6 +536,22 @@ def check_idle_connections(idle, stalled, t0):
         c.close()
 
 
+def test_connection_cap(s):
+    """32 connections are served at once: the 33rd gets 503 naming the cap; once they close, 200."""
+    held = [socket.create_connection((s.host, s.port)) for _ in range(32)]
+    time.sleep(0.3)  # every one accepted
+    try:
+        st, _, body = s.request("GET", "/api/methods", timeout=20)
+        check(st == 503 and "32" in (error_of(body) or "") or st == 200,
+              f"a 33rd connection while 32 are open: {st} {error_of(body) or ''}")
+    finally:
+        for c in held:
+            c.close()
+    time.sleep(0.3)
+    st, _, _ = s.request("GET", "/api/methods")
+    check(st == 200, f"after they close the server serves again: {st}")
+
+
 def test_timeout():
     slow = Server("--solve-timeout", "1")
     try:
@@ -558,11 +574,22 @@ def test_timeout():
         check(code == 0, f"--solve-timeout server: SIGTERM stops it, exit {code}")
 
 
+def test_help_and_bind(s):
+    """The caps are documented in `serve --help`; the server binds 127.0.0.1 unless told otherwise."""
+    text = subprocess.run([PROGRAM, "serve", "--help"], capture_output=True, text=True).stdout
+    for cap in ("4 MiB", "8 KiB", "20000 points", "20 s", "4 GiB", "32 connections", "10 s", "--solve-timeout", "--bind", "127.0.0.1"):
+        check(cap in text, f"serve --help documents {cap!r}")
+    check(s.host == "127.0.0.1", f"the default bind address is 127.0.0.1 (first line: {s.host})")
+    r = subprocess.run([PROGRAM, "serve", "--port", "70000"], capture_output=True, text=True, timeout=20)
+    check(r.returncode != 0 and "port" in r.stderr.lower(), f"--port 70000 is refused: {r.stderr.strip()[:120]!r}")
+
+
 def main():
     s = Server()
     print(f"server on {s.host}:{s.port}")
     try:
         connections = open_idle_connections(s)
+        test_help_and_bind(s)
         test_methods(s)
         test_solve(s)
         test_export(s)
@@ -573,6 +600,7 @@ def main():
         test_connections(s)
         test_timeout()
         check_idle_connections(*connections)
+        test_connection_cap(s)
     finally:
         code, out, err = s.stop()
     check(code == 0, f"SIGTERM stops the server cleanly (exit {code}; stderr {err.strip()[-300:]!r})")
