@@ -27,9 +27,10 @@ test_packages+=(python3-dev pybind11-dev python3-numpy python3-pytest python3-sc
 # driven headless by puppeteer-core from npm (test/editor/package-lock.json; it never downloads a
 # browser). Node.js and npm from Debian unless a node and an npm are already on the PATH (e.g.
 # NodeSource's nodejs, which bundles npm and conflicts with Debian's npm package).
-test_packages+=(chromium)
-command -v node >/dev/null 2>&1 || test_packages+=(nodejs)
-command -v npm >/dev/null 2>&1 || test_packages+=(npm)
+# Only for `test` (the sanitizer stage builds no program, hence no editor tests).
+editor_test_packages=(chromium)
+command -v node >/dev/null 2>&1 || editor_test_packages+=(nodejs)
+command -v npm >/dev/null 2>&1 || editor_test_packages+=(npm)
 # Benchmark-only: Eigen 3, the peer of bench_linear_algebra (doc/linear_algebra.md).
 bench_packages=(libeigen3-dev)
 # The sanitizer stage compiles with clang: its ASan+UBSan build of a CGAL test takes half the CPU
@@ -73,7 +74,7 @@ case "${1:-}" in
     cmake --build build --target fair-curves -j "$jobs"
     exec ./build/tools/fair-curves/fair-curves serve --open "${@:2}" ;;
   test)
-    packages+=("${test_packages[@]}")
+    packages+=("${test_packages[@]}" "${editor_test_packages[@]}")
     setup
     # puppeteer-core at the locked version, no install scripts, never a browser download; the
     # browser test must then run (FAIR_EDITOR_REQUIRE_BROWSER: a missing tool fails it).
@@ -103,6 +104,6 @@ case "${1:-}" in
       [ -x "$b" ] && "$b" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
     done ;;
   *)
-    sed -n '2,9p' "$0" >&2
+    sed -n '2,8p' "$0" >&2
     exit 2 ;;
 esac
