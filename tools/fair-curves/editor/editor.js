@@ -804,11 +804,11 @@ async function start() {
   buildOverlayList();
   buildOptions();
   measure();
-  fitView();
   if (!params.has('empty')) {
     // A first curve to play with: a wave of five points.
     state.points = [[0, 0], [2, 2.2], [4.5, 1.2], [6.5, 3.6], [9.5, 2.4]].map(([x, y]) => ({ x, y, corner: false, lambda: null }));
   }
+  fitView();
   renderAll();
   changed();
 }
