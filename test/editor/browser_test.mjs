@@ -67,6 +67,8 @@ const baseUrl = await new Promise((resolve, reject) => {
   server.once('exit', (code) => reject(new Error(`the server exited (${code}): ${serverLog}`)));
 });
 console.log(`server: ${baseUrl}`);
+// Killed by ctest's timeout or ^C: do not leave the server running.
+for (const sig of ['SIGINT', 'SIGTERM']) process.on(sig, () => { server.kill('SIGTERM'); process.exit(1); });
 
 const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'fair-editor-chromium-'));
 const downloads = fs.mkdtempSync(path.join(os.tmpdir(), 'fair-editor-downloads-'));
