@@ -7,7 +7,7 @@
 //
 //   node browser_test.mjs PROGRAM OUT_DIR [--editor-dir DIR] [--figure PNG]
 // Exit 0: passed; 1: failed; 77: skipped (no /usr/bin/chromium or no node_modules: npm ci).
-import { spawn } from 'node:child_process';
+import { spawn, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
@@ -265,6 +265,20 @@ try {
       `the DXF has a SPLINE and ends with EOF (${dxf.length} bytes)`);
     check(lines.includes('AC1015'), 'the DXF is R2000 (AC1015)');
     check(closedFlag !== undefined && (Number(closedFlag) & 1) === 1, `the DXF spline of the closed curve has the closed flag (70: ${closedFlag})`);
+  }
+  // ---- save the points (JSON): the file is read back by the page's own reader's rules
+  await page.click('#save-json');
+  let saved = null;
+  for (let k = 0; k < 100 && !saved; ++k) {
+    await sleep(100);
+    if (fs.existsSync(path.join(downloads, 'points.json'))) saved = fs.readFileSync(path.join(downloads, 'points.json'), 'utf8');
+  }
+  check(saved !== null && JSON.stringify(JSON.parse(saved)) === JSON.stringify({ points: before, closed: true }),
+    'Save .json writes {"points": ..., "closed": true} of the points on the canvas');
+  if (saved !== null) {
+    // The program reads the saved file (fair-curves points validates a point file).
+    const r = spawnSync(program, ['points', path.join(downloads, 'points.json')], { encoding: 'utf8' });
+    check(r.status === 0, `fair-curves points reads the saved file (exit ${r.status} ${(r.stderr || '').trim()})`);
   }
   await page.click('#closed'); await settle();
 
