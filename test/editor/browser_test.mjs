@@ -228,6 +228,16 @@ try {
   await page.keyboard.press('c');
   await settle();
   check((await page.$$eval('#points circle.corner', (c) => c.length)) === 0 && (await status()) === s3, 'C again removes the corner');
+  // A tangent at point 2 (the T key): the row "2 tx ty" along the chord of its neighbours.
+  await page.keyboard.press('t');
+  await settle();
+  const tangentDirect = await solveDirect({ method: 'optimal', points: before, closed: false,
+    options: { tangents: [[2, before[3][0] - before[1][0], before[3][1] - before[1][1]]] } });
+  check((await page.$$eval('#points circle.tangent', (c) => c.length)) === 1 &&
+    await page.evaluate((d) => JSON.stringify(window.fairEditor.state.curves.optimal.curve) === JSON.stringify(d), tangentDirect),
+    'T fixes the tangent of point 2: the answer of a direct solve with its row');
+  await page.keyboard.press('t');
+  await settle();
 
   // ---- the overlay: kappa and cardinal beside optimal
   for (const m of ['kappa', 'cardinal']) await page.click(`#overlay-list input[data-overlay="${m}"]`);

@@ -25,7 +25,7 @@ const params = new URLSearchParams(location.search);
 const session = 'page-' + Math.random().toString(36).slice(2, 12);
 
 const state = {
-  points: [],            // {x, y, corner: bool, lambda: number|null}
+  points: [],            // {x, y, corner: bool, tangent: bool, lambda: number|null}
   closed: false,
   method: 'kappa',
   overlay: new Set(),
@@ -110,6 +110,16 @@ function requestOptions(method) {
       rows.push([i, p.x - a.x, p.y - a.y, b.x - p.x, b.y - p.y]);
     });
     if (rows.length) out.corners = rows;
+    // Tangent constraints: the direction of the chord of the neighbours (at an open end: of the
+    // end segment), after the rows typed into the tangents field.
+    const tangents = [];
+    state.points.forEach((p, i) => {
+      if (!p.tangent || n < 2) return;
+      const a = state.points[!state.closed && i === 0 ? 0 : (i - 1 + n) % n];
+      const b = state.points[!state.closed && i === n - 1 ? n - 1 : (i + 1) % n];
+      tangents.push([i, b.x - a.x, b.y - a.y]);
+    });
+    if (tangents.length) out.tangents = [...(Array.isArray(out.tangents) ? out.tangents : []), ...tangents];
     if (state.perSegmentLambda) {
       const segments = state.closed ? n : n - 1;
       const g = globalLambda();
@@ -288,13 +298,14 @@ function renderPoints() {
     const [x, y] = toScreen(p.x, p.y);
     const c = g.childNodes[2 * i], t = g.childNodes[2 * i + 1];
     // Only what changed is written (a drag moves one point of a hundred: one style recalculation).
-    const key = `${n2(x)} ${n2(y)} ${i === state.selected} ${corners && p.corner} ${i}`;
+    const key = `${n2(x)} ${n2(y)} ${i === state.selected} ${corners && p.corner} ${corners && p.tangent} ${i}`;
     if (c.__drawn === key) return;
     c.__drawn = key;
     c.setAttribute('cx', n2(x)); c.setAttribute('cy', n2(y));
     c.setAttribute('data-index', i);
     c.setAttribute('r', i === state.selected ? 6 : 5);
-    c.setAttribute('class', 'point' + (i === state.selected ? ' selected' : '') + (corners && p.corner ? ' corner' : ''));
+    c.setAttribute('class', 'point' + (i === state.selected ? ' selected' : '') + (corners && p.corner ? ' corner' : '') +
+      (corners && p.tangent ? ' tangent' : ''));
     t.setAttribute('x', n2(x + 7)); t.setAttribute('y', n2(y - 7));
     t.textContent = String(i);
   });
@@ -550,6 +561,12 @@ function renderPointPanel() {
     cb.checked = p.corner; cb.disabled = endpoint;
     cb.addEventListener('change', () => { pushUndo(); p.corner = cb.checked; changed(); });
     box.appendChild(c);
+    const t = document.createElement('label');
+    t.innerHTML = '<input type="checkbox" id="tangent-toggle"> tangent along the neighbours\' chord (T)';
+    const tb = t.querySelector('input');
+    tb.checked = !!p.tangent;
+    tb.addEventListener('change', () => { pushUndo(); p.tangent = tb.checked; changed(); });
+    box.appendChild(t);
     if (state.perSegmentLambda && (state.closed || i < n - 1)) {
       const l = document.createElement('label');
       const v = p.lambda ?? globalLambda();
@@ -624,7 +641,7 @@ canvas.addEventListener('pointerdown', (ev) => {
     pushUndo();
     const i = insertionIndex(sx, sy);
     const [x, y] = toWorld(sx, sy);
-    state.points.splice(i, 0, { x: roundWorld(x), y: roundWorld(y), corner: false, lambda: null });
+    state.points.splice(i, 0, { x: roundWorld(x), y: roundWorld(y), corner: false, tangent: false, lambda: null });
     state.selected = i;
     state.dragging = { index: i, sx, sy, moved: true, added: true };
     changed();
@@ -701,6 +718,10 @@ window.addEventListener('keydown', (ev) => {
     if (state.closed || (i > 0 && i < n - 1)) { pushUndo(); state.points[i].corner = !state.points[i].corner; changed(); }
     return;
   }
+  if ((ev.key === 't' || ev.key === 'T') && i >= 0 && state.method === 'optimal') {
+    pushUndo(); state.points[i].tangent = !state.points[i].tangent; changed();
+    return;
+  }
   const arrows = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] };
   if (arrows[ev.key] && i >= 0) {
     // One pixel (ten with Shift) in world units.
@@ -725,7 +746,7 @@ function download(blob, filename) {
 
 function loadPoints(points, closed) {
   pushUndo();
-  state.points = points.map(([x, y]) => ({ x, y, corner: false, lambda: null }));
+  state.points = points.map(([x, y]) => ({ x, y, corner: false, tangent: false, lambda: null }));
   state.closed = closed;
   $('closed').checked = closed;
   state.selected = -1;
@@ -806,7 +827,7 @@ async function start() {
   measure();
   if (!params.has('empty')) {
     // A first curve to play with: a wave of five points.
-    state.points = [[0, 0], [2, 2.2], [4.5, 1.2], [6.5, 3.6], [9.5, 2.4]].map(([x, y]) => ({ x, y, corner: false, lambda: null }));
+    state.points = [[0, 0], [2, 2.2], [4.5, 1.2], [6.5, 3.6], [9.5, 2.4]].map(([x, y]) => ({ x, y, corner: false, tangent: false, lambda: null }));
   }
   fitView();
   renderAll();

@@ -57,6 +57,16 @@ export function optionControl(opt, value, set, perSegment) {
     row.appendChild(s);
   } else if (opt.name === 'corners') {
     row.innerHTML = '<span class="muted">select a point, then “corner” below or the C key</span>';
+  } else if (opt.name === 'tangents') {
+    // Typed rows "i tx ty", and the per-point toggle (T) added to them.
+    const t = document.createElement('textarea');
+    t.placeholder = 'rows "i tx ty"; or select a point and press T';
+    t.value = Array.isArray(value) ? value.map((r) => (Array.isArray(r) ? r.join(' ') : r)).join('\n') : '';
+    t.addEventListener('change', () => {
+      const rows = t.value.split('\n').map((l) => l.trim()).filter((l) => l && !l.startsWith('#')).map((l) => l.split(/[\s,]+/).map(Number));
+      set(rows.length ? rows : '');
+    });
+    row.appendChild(t);
   } else if (opt.name === 'lambda-file') {
     row.innerHTML = '<span class="muted">per segment λ: tick “per segment”, select a point: its λ is the segment after it</span>';
   } else if (opt.type === 'file') {
