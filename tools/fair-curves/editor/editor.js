@@ -136,8 +136,8 @@ function solveBody(method, withSession) {
 }
 
 // Samples per piece for the curve, the comb and the plot: 24, fewer on long curves (about 1500
-// in all, at least 6 a piece), so that an answer is drawn within a frame.
-function samplesPerPiece(pieces) { return Math.max(6, Math.min(24, Math.ceil(1500 / Math.max(pieces, 1)))); }
+// in all, at least 3 a piece), so that an answer is drawn within a frame.
+function samplesPerPiece(pieces) { return Math.max(3, Math.min(24, Math.ceil(1500 / Math.max(pieces, 1)))); }
 
 function enoughPoints(method) { return state.points.length >= (MINIMUM_POINTS[method] || 2); }
 
@@ -298,7 +298,7 @@ function renderPoints() {
     const [x, y] = toScreen(p.x, p.y);
     const c = g.childNodes[2 * i], t = g.childNodes[2 * i + 1];
     // Only what changed is written (a drag moves one point of a hundred: one style recalculation).
-    const key = `${n2(x)} ${n2(y)} ${i === state.selected} ${corners && p.corner} ${corners && p.tangent} ${i}`;
+    const key = `${n2(x)} ${n2(y)} ${i === state.selected} ${corners && p.corner} ${corners && p.tangent} ${i} ${pts.length <= 60}`;
     if (c.__drawn === key) return;
     c.__drawn = key;
     c.setAttribute('cx', n2(x)); c.setAttribute('cy', n2(y));
@@ -307,7 +307,8 @@ function renderPoints() {
     c.setAttribute('class', 'point' + (i === state.selected ? ' selected' : '') + (corners && p.corner ? ' corner' : '') +
       (corners && p.tangent ? ' tangent' : ''));
     t.setAttribute('x', n2(x + 7)); t.setAttribute('y', n2(y - 7));
-    t.textContent = String(i);
+    // Index labels while they can be read (a dense sample set would be a smudge of digits).
+    t.textContent = pts.length <= 60 ? String(i) : '';
   });
   let d = '';
   pts.forEach((p, i) => { const [x, y] = toScreen(p.x, p.y); d += (i ? 'L' : 'M') + n2(x) + ' ' + n2(y); });
