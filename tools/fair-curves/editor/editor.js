@@ -371,7 +371,8 @@ function renderLegend() {
   if (shown.length < 2) return;
   for (const m of shown) {
     const row = document.createElement('div');
-    row.innerHTML = `<span class="swatch" style="background:${COLOURS[m]}"></span> ${m}${m === state.method ? ' <span class="muted">(comb, plot)</span>' : ''}`;
+    row.innerHTML = `<span class="swatch"></span> ${m}${m === state.method ? ' <span class="muted">(comb, plot)</span>' : ''}`;
+    row.querySelector('.swatch').style.background = COLOURS[m];  // CSSOM: no inline style for the CSP
     box.appendChild(row);
   }
 }
@@ -508,7 +509,8 @@ function buildOverlayList() {
   for (const m of state.methods) {
     const label = document.createElement('label');
     label.className = 'toggle';
-    label.innerHTML = `<input type="checkbox" data-overlay="${m.name}"> <span class="swatch" style="background:${COLOURS[m.name]}"></span> ${m.name} <span class="overlay-error" data-error="${m.name}"></span>`;
+    label.innerHTML = `<input type="checkbox" data-overlay="${m.name}"> <span class="swatch"></span> ${m.name} <span class="overlay-error" data-error="${m.name}"></span>`;
+    label.querySelector('.swatch').style.background = COLOURS[m.name];
     const box2 = label.querySelector('input');
     box2.checked = state.overlay.has(m.name);
     box2.addEventListener('change', () => {
