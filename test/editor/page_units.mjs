@@ -107,9 +107,10 @@ const close = (a, b, tol) => Math.abs(a - b) <= tol;
 {
   const pending = [];
   globalThis.fetch = (url, init) => new Promise((resolve) => pending.push({ body: JSON.parse(init.body), resolve }));
-  const answer = (i, value) => pending[i].resolve({ ok: true, status: 200, text: async () => JSON.stringify(value) });
+  const answer = (i, value) => pending[i].resolve({ ok: true, status: 200, text: async () => JSON.stringify(value),
+    headers: new Map([['Server-Timing', `app;dur=${value.v}.25`]]) });
   const applied = [];
-  const ch = new Channel('/api/solve', (r, tag, seq) => applied.push([r.data.v, tag, seq]));
+  const ch = new Channel('/api/solve', (r, tag, seq) => applied.push([r.data.v, tag, seq, r.serverMs]));
   ch.submit({ n: 1 }, 'a');
   ch.submit({ n: 2 }, 'b');
   ch.submit({ n: 3 }, 'c');
@@ -118,6 +119,7 @@ const close = (a, b, tol) => Math.abs(a - b) <= tol;
   await new Promise((r) => setTimeout(r, 10));
   check(pending.length === 2 && pending[1].body.n === 3, 'the pending requests coalesce into the newest one (2 is never sent)');
   check(applied.length === 1 && applied[0][0] === 1 && applied[0][2] === 1, 'the first answer applied');
+  check(applied[0][3] === 1.25, `the server's time read from Server-Timing (${applied[0][3]} ms)`);
   ch.reset();
   answer(1, { v: 3 });
   await new Promise((r) => setTimeout(r, 10));

@@ -3,8 +3,8 @@
 // stale answers by their sequence numbers, so a drag never queues work at the server and never
 // shows an older curve after a newer one.
 
-// POST `body` as JSON to `url`; resolves to {ok, status, data} (data: the parsed JSON answer, or
-// {error} for an error answer or a network failure).
+// POST `body` as JSON to `url`; resolves to {ok, status, data, serverMs} (data: the parsed JSON
+// answer, or {error} for an error answer or a network failure; serverMs: Server-Timing, or NaN).
 export async function postJSON(url, body) {
   let response;
   try {
@@ -19,7 +19,9 @@ export async function postJSON(url, body) {
   } catch (e) {
     data = { error: text.slice(0, 300) || `HTTP ${response.status}` };
   }
-  return { ok: response.ok, status: response.status, data };
+  // The server's own time for the answer, from its "Server-Timing: app;dur=<ms>" header.
+  const timing = /dur=([0-9.]+)/.exec(response.headers.get('Server-Timing') || '');
+  return { ok: response.ok, status: response.status, data, serverMs: timing ? Number(timing[1]) : NaN };
 }
 
 // POST a body and receive a file (export): {ok, status, blob, filename} or {ok: false, error}.

@@ -197,7 +197,8 @@ function onPrimaryAnswer(result, tag, seq, timing) {
   stats.roundTrips.push(dt);
   // Where the time went: before the request left, the request (server and transfer, answer
   // parsed), the drawing.
-  stats.phases.push({ queued: timing.sent - tag.t0, request: timing.received - timing.sent, draw: performance.now() - timing.received });
+  stats.phases.push({ queued: timing.sent - tag.t0, request: timing.received - timing.sent, server: result.serverMs,
+    draw: performance.now() - timing.received });
   $('timing').textContent = `round trip ${dt.toFixed(1)} ms`;
   scheduleMetrics();
 }
