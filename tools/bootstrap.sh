@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian 12 machine: installs what is missing, builds, runs.
 #   bash tools/bootstrap.sh demo      set up, build fair-curves, write the demo gallery to demo-out/
+#   bash tools/bootstrap.sh serve     set up, build fair-curves, start the curve editor (fair-curves serve --open)
 #   bash tools/bootstrap.sh test      set up, build everything, run every test (ctest)
 #   bash tools/bootstrap.sh sanitize  the same tests built with -fsanitize=address,undefined
 #   bash tools/bootstrap.sh bench     build and run the Google Benchmark programs
@@ -22,6 +23,14 @@ test_packages=(libfreetype-dev fonts-dejavu-core libocct-modeling-algorithms-dev
 # The Python module (python/, doc/python.md; -DFAIR_BUILD_PYTHON=ON in the test build) and its
 # tests: pybind11 and numpy to build it, pytest and scipy (the independent oracle) to test it.
 test_packages+=(python3-dev pybind11-dev python3-numpy python3-pytest python3-scipy)
+# The editor's browser test (test/editor/browser_test.mjs, doc/editor.md): Debian's chromium,
+# driven headless by puppeteer-core from npm (test/editor/package-lock.json; it never downloads a
+# browser). Node.js and npm from Debian unless a node and an npm are already on the PATH (e.g.
+# NodeSource's nodejs, which bundles npm and conflicts with Debian's npm package).
+# Only for `test` (the sanitizer stage builds no program, hence no editor tests).
+editor_test_packages=(chromium)
+command -v node >/dev/null 2>&1 || editor_test_packages+=(nodejs)
+command -v npm >/dev/null 2>&1 || editor_test_packages+=(npm)
 # Benchmark-only: Eigen 3, the peer of bench_linear_algebra (doc/linear_algebra.md).
 bench_packages=(libeigen3-dev)
 # The sanitizer stage compiles with clang: its ASan+UBSan build of a CGAL test takes half the CPU
@@ -59,9 +68,18 @@ case "${1:-}" in
     cmake --build build --target fair-curves -j "$jobs"
     ./build/tools/fair-curves/fair-curves demo --out demo-out
     echo "bootstrap: open demo-out/index.html" ;;
-  test)
-    packages+=("${test_packages[@]}")
+  serve)
     setup
+    configure build -DFAIR_BUILD_TESTS=OFF -DFAIR_BUILD_EXAMPLES=OFF
+    cmake --build build --target fair-curves -j "$jobs"
+    exec ./build/tools/fair-curves/fair-curves serve --open "${@:2}" ;;
+  test)
+    packages+=("${test_packages[@]}" "${editor_test_packages[@]}")
+    setup
+    # puppeteer-core at the locked version, no install scripts, never a browser download; the
+    # browser test must then run (FAIR_EDITOR_REQUIRE_BROWSER: a missing tool fails it).
+    (cd test/editor && PUPPETEER_SKIP_DOWNLOAD=1 npm ci --ignore-scripts --no-audit --no-fund --loglevel=error)
+    export FAIR_EDITOR_REQUIRE_BROWSER=1
     # -O2 rather than Release's -O3: the tests, the program and the Python module of this build
     # compile in 17-21 % less CPU time (GCC 12, measured on test_classic_splines, test_kappa and
     # certify_command) and run within 10 % of its speed; the benchmarks and the demo keep -O3

@@ -1,0 +1,613 @@
+#!/usr/bin/python3
+"""The API of `fair-curves serve` (issue 27; doc/editor_api.md), Python 3 standard library only.
+
+   /usr/bin/python3 editor_api.py PROGRAM [--editor-dir DIR]
+
+Starts the server on a free port and checks, against the program run directly on the same
+points (`fair-curves <command> points.json [--closed] <options> -o -`):
+  - /api/solve for the 9 methods, open and closed, and with options (kappa weights auto/value
+    and tensions, optimal lambda, lambda-file, corners, tangents and derivative terms, cardinal
+    alpha and auxiliary points, spline end conditions, csr knots): the same JSON, byte for byte;
+  - /api/export dxf/svg/svg-path/json: the program's files, byte for byte, their content types
+    and file names; the DXF read (a SPLINE; audited by ezdxf when it is importable);
+  - /api/metrics: the metrics JSON and the profile CSV's rows;
+  - kappa sessions: a warm move equals a cold solve of the moved points within 1e-9 of the extent;
+  - every bad input (issue 27, "Reliability and security"): its status code AND an error
+    message naming the problem; path traversal; body caps; half bodies, disconnects and idle
+    connections while other clients are served; a solve over --solve-timeout (503) after which
+    the server still serves.
+Exit 0 when every check holds, 1 otherwise.
+"""
+import http.client
+import json
+import math
+import os
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+
+PROGRAM = os.path.abspath(sys.argv[1])
+# --editor-dir DIR: serve the page from DIR (page development); the ctest serves the compiled-in files.
+EDITOR_DIR = ["--editor-dir", sys.argv[sys.argv.index("--editor-dir") + 1]] if "--editor-dir" in sys.argv else []
+SPLINES = ("cubic", "catmull-rom", "four-point", "quasi", "bspline")
+METHODS = ("kappa", "optimal", "cardinal", "csr") + SPLINES
+FILE_OPTIONS = ("lambda-file", "tangents", "normals", "corners", "tension")
+
+failures = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what, flush=True)
+    if not ok:
+        failures.append(what)
+    return ok
+
+
+# ------------------------------------------------------------------ the server
+class Server:
+    def __init__(self, *extra):
+        # Its own TMPDIR: the scratch directories of the requests must all be gone at the end.
+        self.tmpdir = tempfile.mkdtemp(prefix="fair-editor-server-tmp-")
+        self.proc = subprocess.Popen([PROGRAM, "serve", "--port", "0", *EDITOR_DIR, *extra], stdout=subprocess.PIPE,
+                                     stderr=subprocess.PIPE, text=True, env=dict(os.environ, TMPDIR=self.tmpdir))
+        line = self.proc.stdout.readline().rstrip("\n")
+        prefix = "fair-curves serve: listening on http://"
+        if not line.startswith(prefix) or not line.endswith("/"):
+            self.proc.kill()
+            raise SystemExit(f"unexpected first line of the server: {line!r}")
+        self.host, port = line[len(prefix):-1].rsplit(":", 1)
+        self.port = int(port)
+
+    def stop(self):
+        """SIGTERM: the server stops cleanly (exit 0)."""
+        self.proc.send_signal(signal.SIGTERM)
+        try:
+            out, err = self.proc.communicate(timeout=20)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+            out, err = self.proc.communicate()
+        left = os.listdir(self.tmpdir)
+        check(not left, f"no scratch directory left behind in TMPDIR ({left[:3]})")
+        shutil.rmtree(self.tmpdir, ignore_errors=True)
+        return self.proc.returncode, out, err
+
+    def request(self, method, path, body=None, headers=None, timeout=60):
+        c = http.client.HTTPConnection(self.host, self.port, timeout=timeout)
+        try:
+            c.request(method, path, body=body, headers=headers or {})
+            r = c.getresponse()
+            return r.status, {k.lower(): v for k, v in r.getheaders()}, r.read()
+        finally:
+            c.close()
+
+    def post(self, path, obj, raw=None):
+        body = raw if raw is not None else json.dumps(obj).encode()
+        return self.request("POST", path, body, {"Content-Type": "application/json"})
+
+
+def error_of(body):
+    try:
+        e = json.loads(body)
+        return e.get("error") if isinstance(e, dict) and set(e) == {"error"} else None
+    except ValueError:
+        return None
+
+
+# ------------------------------------------------------------------ the program itself
+def number_text(v):
+    return repr(float(v)) if isinstance(v, float) else str(v)
+
+
+def program_argv(req, scratch):
+    """The command line the API documents for a request, its files written to `scratch`."""
+    method = req["method"]
+    with open(os.path.join(scratch, "points.json"), "w") as f:
+        json.dump({"points": req["points"]}, f)
+    argv = [PROGRAM] + (["spline", "--method", method] if method in SPLINES else [method]) + ["points.json"]
+    if req.get("closed"):
+        argv.append("--closed")
+    for name, value in req.get("options", {}).items():
+        if value is True:
+            argv.append("--" + name)
+        elif value is False:
+            continue
+        elif name in FILE_OPTIONS:
+            with open(os.path.join(scratch, name + ".txt"), "w") as f:
+                for row in value:
+                    f.write(" ".join(number_text(x) for x in (row if isinstance(row, list) else [row])) + "\n")
+            argv += ["--" + name, name + ".txt"]
+        elif isinstance(value, list):
+            for v in value:
+                argv += ["--" + name, str(v)]
+        else:
+            argv += ["--" + name, number_text(value)]
+    return argv
+
+
+def run_program(req, outputs=("-o", "-")):
+    """stdout, the files written and the exit code of the program on the request's data."""
+    scratch = tempfile.mkdtemp(prefix="fair-editor-api-")
+    try:
+        argv = program_argv(req, scratch) + list(outputs)
+        r = subprocess.run(argv, cwd=scratch, capture_output=True, timeout=120)
+        files = {n: open(os.path.join(scratch, n), "rb").read() for n in os.listdir(scratch)}
+        return r.returncode, r.stdout, r.stderr.decode(), files
+    finally:
+        shutil.rmtree(scratch)
+
+
+# ------------------------------------------------------------------ data
+WAVE = [[0.0, 0.0], [1.0, 1.2], [2.5, 0.4], [3.6, 1.9], [5.0, 1.1], [6.2, 2.4]]
+RING = [[math.cos(2 * math.pi * i / 7) * (2 + 0.3 * (i % 2)), math.sin(2 * math.pi * i / 7) * (2 + 0.3 * (i % 2))] for i in range(7)]
+
+
+def solve_cases():
+    cases = []
+    for m in METHODS:
+        cases.append((f"{m} open", {"method": m, "points": WAVE, "closed": False, "options": {}}))
+        cases.append((f"{m} closed", {"method": m, "points": RING, "closed": True, "options": {}}))
+    n = len(WAVE)
+    cases += [
+        ("kappa weights auto", {"method": "kappa", "points": WAVE, "options": {"weights": "auto"}}),
+        ("kappa weights 0.8 (a number)", {"method": "kappa", "points": WAVE, "options": {"weights": 0.8}}),
+        ("kappa weights auto + tension rows + clamp", {"method": "kappa", "points": WAVE,
+                                                      "options": {"weights": "auto", "tension": [1, 1.5, 1, 0.8, 1, 1], "clamp": "0.3"}}),
+        ("optimal lambda 0.5", {"method": "optimal", "points": WAVE, "options": {"lambda": 0.5}}),
+        ("optimal lambda-file rows", {"method": "optimal", "points": WAVE, "options": {"lambda-file": [0.5, 0.9, 0.7, 0.3, 0.6]}}),
+        ("optimal closed lambda-file rows", {"method": "optimal", "points": RING, "closed": True,
+                                             "options": {"lambda-file": [0.5, 0.9, 0.7, 0.3, 0.6, 0.7, 0.8]}}),
+        ("optimal corner at point 2", {"method": "optimal", "points": WAVE,
+                                       "options": {"corners": [[2, 1.5, -0.8, 1.1, 1.5]]}}),
+        ("optimal tangent + derivative-weight + cg", {"method": "optimal", "points": WAVE,
+                                                      "options": {"tangents": [[0, 1, 1]], "derivative-weight": ["1:0.1"], "solver": "cg"}}),
+        ("optimal normal rows", {"method": "optimal", "points": WAVE, "options": {"normals": [[5, -1, 1], [2, 0.5, 1]]}}),
+        ("cardinal alpha 0.3", {"method": "cardinal", "points": WAVE, "options": {"alpha": 0.3}}),
+        ("cardinal alpha optimal", {"method": "cardinal", "points": WAVE, "options": {"alpha": "optimal"}}),
+        ("cardinal alpha 0.4 + aux points", {"method": "cardinal", "points": WAVE,
+                                             "options": {"alpha": "0.4", "aux-start": "-1,-1", "aux-end": "7,3"}}),
+        ("cardinal exact", {"method": "cardinal", "points": WAVE, "options": {"exact": True}}),
+        ("cubic end not-a-knot", {"method": "cubic", "points": WAVE, "options": {"end": "not-a-knot"}}),
+        ("cubic end clamped", {"method": "cubic", "points": WAVE,
+                               "options": {"end": "clamped", "start-derivative": "1,0", "end-derivative": "1,-1"}}),
+        ("csr knots uniform", {"method": "csr", "points": WAVE, "options": {"knots": "uniform"}}),
+        ("csr knots centripetal, closed", {"method": "csr", "points": RING, "closed": True, "options": {"knots": "centripetal"}}),
+        ("a false flag is omitted", {"method": "cardinal", "points": WAVE, "options": {"exact": False}}),
+    ]
+    assert n == 6
+    return cases
+
+
+def test_methods(s):
+    st, h, body = s.request("GET", "/api/methods")
+    check(st == 200 and h.get("content-type", "").startswith("application/json"), f"GET /api/methods: {st}")
+    methods = json.loads(body)["methods"]
+    names = [m["name"] for m in methods]
+    check(names == list(METHODS), f"/api/methods lists the 9 methods in order: {names}")
+    by = {m["name"]: m for m in methods}
+    opts = {m: {o["name"]: o for o in by[m]["options"]} for m in names}
+    check(opts["kappa"]["weights"]["type"] == "text" and opts["optimal"]["lambda-file"]["type"] == "file"
+          and opts["optimal"]["derivative-weight"]["type"] == "list" and opts["cardinal"]["exact"]["type"] == "flag",
+          "option types text / file / list / flag")
+    check(all(by[m]["command"] == "spline" for m in SPLINES) and all("method" not in opts[m] for m in SPLINES),
+          "the spline methods run `spline --method`, which is not an option")
+    forbidden = {"output", "svg", "dxf", "svg-path", "allow-unsolved", "help"}
+    check(not any(forbidden & set(opts[m]) for m in names), "no forbidden option offered")
+    for m in names:
+        help_text = subprocess.run([PROGRAM] + (["spline"] if m in SPLINES else [m]) + ["--help"],
+                                   capture_output=True, text=True).stdout
+        missing = [o for o in opts[m] if "--" + o not in help_text]
+        check(not missing and all(opts[m][o]["help"] for o in opts[m]), f"{m}: every option is the program's, with help")
+
+
+def test_solve(s):
+    for name, req in solve_cases():
+        st, h, body = s.post("/api/solve", req)
+        code, out, err, _ = run_program(req)
+        if not check(st == 200 and code in (0, 3), f"solve {name}: HTTP {st}, program exit {code} {error_of(body) or ''} {err.strip()[:200]}"):
+            continue
+        check(h.get("content-type", "").startswith("application/json"), f"solve {name}: JSON content type")
+        check(json.loads(body) == json.loads(out), f"solve {name}: the program's JSON")
+        check(body == out, f"solve {name}: byte for byte")
+
+
+def test_export(s):
+    req = {"method": "kappa", "points": WAVE, "closed": False, "options": {"weights": "auto"}}
+    expect = {"dxf": ("application/dxf", "curve.dxf"), "svg": ("image/svg+xml", "curve.svg"),
+              "svg-path": ("text/plain", "curve.txt"), "json": ("application/json", "curve.json")}
+    for fmt, (ctype, fname) in expect.items():
+        st, h, body = s.post("/api/export", dict(req, format=fmt))
+        check(st == 200 and h.get("content-type", "").startswith(ctype), f"export {fmt}: HTTP {st}, {h.get('content-type')}")
+        disp = h.get("content-disposition", "")
+        check(disp.startswith("attachment") and 'filename="curve.' in disp, f"export {fmt}: {disp}")
+        if fmt == "json":
+            _, out, _, _ = run_program(req)
+        else:
+            _, _, _, files = run_program(req, ("--" + fmt, "out.file"))
+            out = files.get("out.file")
+        check(body == out, f"export {fmt}: the program's file, byte for byte ({len(body)} bytes)")
+        if fmt == "dxf":
+            check_dxf(body, closed=False)
+        if fmt == "svg":
+            check(body.lstrip().startswith(b"<?xml") or body.lstrip().startswith(b"<svg"), "export svg: an SVG document")
+    for m in ("optimal", "cubic"):
+        st, h, body = s.post("/api/export", {"method": m, "points": RING, "closed": True, "format": "dxf"})
+        check(st == 200, f"export dxf of a closed {m}: HTTP {st}")
+        check_dxf(body, closed=True)
+    st, _, body = s.post("/api/export", dict(req, format="png"))
+    check(st == 400 and "format" in (error_of(body) or ""), f"export format png: 400 naming format: {error_of(body)}")
+    st, _, body = s.post("/api/export", req)
+    check(st == 400 and "format" in (error_of(body) or ""), f"export without format: 400 naming format: {error_of(body)}")
+
+
+def check_dxf(body, closed):
+    lines = [l.strip() for l in body.decode("ascii").splitlines()]
+    pairs = list(zip(lines[0::2], lines[1::2]))
+    check(("0", "SPLINE") in pairs and ("0", "EOF") == pairs[-1], "DXF: a SPLINE entity, ends with EOF")
+    check(("1", "AC1015") in pairs, "DXF: R2000 (AC1015)")
+    at = pairs.index(("100", "AcDbSpline"))
+    flags = next(int(v) for c, v in pairs[at:] if c == "70")
+    check(bool(flags & 1) == closed, f"DXF: SPLINE flags {flags}: closed bit {closed}")
+    try:
+        import ezdxf  # the peer reader, when installed (python3-ezdxf)
+    except ImportError:
+        print("note DXF audit skipped: ezdxf not importable")
+        return
+    with tempfile.NamedTemporaryFile(suffix=".dxf") as f:
+        f.write(body)
+        f.flush()
+        doc = ezdxf.readfile(f.name)
+        auditor = doc.audit()
+        splines = doc.modelspace().query("SPLINE")
+        check(len(auditor.errors) == 0 and len(splines) == 1, f"DXF: ezdxf audit, {len(auditor.errors)} errors, {len(splines)} SPLINE")
+
+
+def test_metrics(s):
+    req = {"method": "cardinal", "points": WAVE, "closed": False, "options": {}}
+    _, curve_text, _, _ = run_program(req)
+    curve = json.loads(curve_text)
+    for samples in (None, 5):
+        body = {"curve": curve} if samples is None else {"curve": curve, "samples": samples}
+        st, h, answer = s.post("/api/metrics", body)
+        if not check(st == 200, f"metrics samples={samples}: HTTP {st} {error_of(answer)}"):
+            continue
+        got = json.loads(answer)
+        scratch = tempfile.mkdtemp(prefix="fair-editor-metrics-")
+        try:
+            with open(os.path.join(scratch, "curve.json"), "wb") as f:
+                f.write(curve_text)
+            k = 32 if samples is None else samples
+            r = subprocess.run([PROGRAM, "metrics", "curve.json", "-o", "-", "--profile", "profile.csv", "--samples", str(k)],
+                               cwd=scratch, capture_output=True, check=True)
+            want = json.loads(r.stdout)
+            rows = open(os.path.join(scratch, "profile.csv")).read().split("\n")
+        finally:
+            shutil.rmtree(scratch)
+        profile = got.pop("profile", None)
+        check(got == want, f"metrics samples={samples}: the program's figures")
+        header = rows[0].split(",")
+        csv = [dict(zip(header, map(float, l.split(",")))) for l in rows[1:] if l]
+        check(profile is not None and len(profile) == len(csv) == (k + 1) * len(curve["pieces"]) or len(profile) == len(csv),
+              f"metrics samples={samples}: {len(profile or [])} profile rows, the CSV has {len(csv)}")
+        check(profile is not None and all(set(p) == set(header) and all(float(p[c]) == r[c] for c in header)
+                                          for p, r in zip(profile, csv)), f"metrics samples={samples}: profile rows = the CSV's")
+        check(len(got["curvature_extrema"]) > 0 and all("x" in e and "piece" in e for e in got["curvature_extrema"]),
+              "metrics: certified curvature extrema with piece and position")
+    for bad, word in ((0, "samples"), (257, "samples"), ("8", "samples")):
+        st, _, answer = s.post("/api/metrics", {"curve": curve, "samples": bad})
+        check(st == 400 and word in (error_of(answer) or ""), f"metrics samples={bad!r}: 400 naming {word}: {error_of(answer)}")
+    st, _, answer = s.post("/api/metrics", {"samples": 8})
+    check(st == 400 and "curve" in (error_of(answer) or ""), f"metrics without curve: 400 naming curve: {error_of(answer)}")
+    st, _, answer = s.post("/api/metrics", {"curve": {"pieces": "x"}})
+    check(st in (400, 422) and error_of(answer), f"metrics of a broken curve: {st}: {error_of(answer)}")
+
+
+def extent(points):
+    cx = sum(p[0] for p in points) / len(points)
+    cy = sum(p[1] for p in points) / len(points)
+    return 2 * max(math.hypot(p[0] - cx, p[1] - cy) for p in points)
+
+
+def max_piece_difference(a, b):
+    d = 0.0
+    for pa, pb in zip(a["pieces"], b["pieces"]):
+        for qa, qb in zip(pa["control_points"], pb["control_points"]):
+            d = max(d, abs(qa[0] - qb[0]), abs(qa[1] - qb[1]))
+        for wa, wb in zip(pa.get("weights", []), pb.get("weights", [])):
+            d = max(d, abs(wa - wb))
+    return d
+
+
+def test_sessions(s):
+    pts = [list(p) for p in WAVE]
+    for closed, data in ((False, pts), (True, [list(p) for p in RING])):
+        sid = f"t-{'closed' if closed else 'open'}"
+        req = {"method": "kappa", "points": data, "closed": closed, "options": {}, "session": sid}
+        st, _, body = s.post("/api/solve", req)
+        cold = {k: v for k, v in req.items() if k != "session"}
+        _, out, _, _ = run_program(cold)
+        check(st == 200 and json.loads(body) == json.loads(out), f"session {sid}: the first solve is the program's")
+        warm_count = 0
+        for step in range(6):
+            i = 1 + step % (len(data) - 2)
+            data[i] = [data[i][0] + 0.05 * (1 if step % 2 else -1), data[i][1] + 0.04]
+            st, _, body = s.post("/api/solve", dict(req, points=data))
+            warm = json.loads(body)
+            _, out, _, _ = run_program(dict(cold, points=data))
+            fresh = json.loads(out)
+            diff = max_piece_difference(warm, fresh)
+            warm_count += warm["report"]["warm_started"] is True
+            check(len(warm["pieces"]) == len(fresh["pieces"]) and diff <= 1e-9 * extent(data) and warm["status"] == fresh["status"],
+                  f"session {sid} move {step}: the warm curve = a cold solve within 1e-9 of the extent ({diff:.2e})")
+        # report.warm_started: whether the library kept the warm start (it may decline one).
+        check(warm_count >= 3, f"session {sid}: {warm_count} of 6 moves re-solved warm")
+    # Two points moved: solved afresh (not warm), the program's answer.
+    data = [list(p) for p in WAVE]
+    s.post("/api/solve", {"method": "kappa", "points": data, "session": "two"})
+    data[1][0] += 0.1
+    data[3][1] -= 0.1
+    st, _, body = s.post("/api/solve", {"method": "kappa", "points": data, "session": "two"})
+    _, out, _, _ = run_program({"method": "kappa", "points": data})
+    check(st == 200 and json.loads(body)["report"]["warm_started"] is False and json.loads(body)["pieces"] == json.loads(out)["pieces"],
+          "session: two points moved -> a cold solve, the program's pieces")
+    # Options changed: not the session's curve.
+    st, _, body = s.post("/api/solve", {"method": "kappa", "points": data, "session": "two", "options": {"weights": "auto"}})
+    _, out, _, _ = run_program({"method": "kappa", "points": data, "options": {"weights": "auto"}})
+    check(st == 200 and json.loads(body)["pieces"] == json.loads(out)["pieces"], "session: other options -> their own curve")
+    # A session on another method is refused or ignored, never mixes curves.
+    st, _, body = s.post("/api/solve", {"method": "cardinal", "points": data, "session": "two"})
+    check(st == 400 and "session" in (error_of(body) or "") or st == 200 and json.loads(body)["method"] == "cardinal",
+          f"session with cardinal: {st} {error_of(body) or 'answered cardinal'}")
+
+
+# ------------------------------------------------------------------ bad inputs
+OK3 = [[0, 0], [1, 1], [2, 0]]
+
+
+def bad_requests():
+    """(what, raw body or object, status, words the error must contain (any of))."""
+    return [
+        ("malformed JSON", b'{"method": "kappa", "points": [[0,0],', 400, ["JSON"]),
+        ("empty body", b"", 400, ["JSON", "empty"]),
+        ("NaN literal", b'{"method":"kappa","points":[[0,0],[1,NaN],[2,0]]}', 400, ["points[1][1]"]),
+        ("Infinity literal", b'{"method":"kappa","points":[[0,0],[1,Infinity],[2,0]]}', 400, ["points[1][1]"]),
+        ("1e400", b'{"method":"kappa","points":[[0,0],[1,1e400],[2,0]]}', 400, ["points[1][1]: not a finite number"]),
+        ("-1e400", b'{"method":"kappa","points":[[0,0],[1,-1e400],[2,0]]}', 400, ["points[1][1]: not a finite number"]),
+        ("not an object", [1, 2], 400, ["object"]),
+        ("no method", {"points": OK3}, 400, ["method"]),
+        ("no points", {"method": "kappa"}, 400, ["points"]),
+        ("too few points kappa", {"method": "kappa", "points": [[0, 0], [1, 1]]}, 400, ["points", "at least"]),
+        ("too few points optimal", {"method": "optimal", "points": [[0, 0]]}, 400, ["points", "at least"]),
+        ("too few points csr closed", {"method": "csr", "points": OK3, "closed": True}, 400, ["points", "at least"]),
+        ("no points at all", {"method": "cubic", "points": []}, 400, ["points"]),
+        ("unknown method", {"method": "bezier", "points": OK3}, 400, ["bezier"]),
+        ("method not a string", {"method": 3, "points": OK3}, 400, ["method"]),
+        ("points a string", {"method": "kappa", "points": "abc"}, 400, ["points"]),
+        ("a point not a pair", {"method": "kappa", "points": [[0, 0, 0], [1, 1], [2, 0]]}, 400, ["points[0]"]),
+        ("a coordinate a string", {"method": "kappa", "points": [[0, "1"], [1, 1], [2, 0]]}, 400, ["points[0][1]"]),
+        ("a coordinate null", {"method": "kappa", "points": [[0, 0], [1, None], [2, 0]]}, 400, ["points[1][1]"]),
+        ("closed a string", {"method": "kappa", "points": OK3, "closed": "yes"}, 400, ["closed"]),
+        ("options an array", {"method": "kappa", "points": OK3, "options": []}, 400, ["options"]),
+        ("option value an object", {"method": "optimal", "points": OK3, "options": {"lambda": {}}}, 400, ["options.lambda", "lambda"]),
+        ("option value a boolean for a text option", {"method": "kappa", "points": OK3, "options": {"weights": True}}, 400, ["weights"]),
+        ("unknown option", {"method": "kappa", "points": OK3, "options": {"foo": 1}}, 400, ["foo"]),
+        ("option of another method", {"method": "kappa", "points": OK3, "options": {"lambda": 0.5}}, 400, ["lambda"]),
+        ("spline method as option", {"method": "cubic", "points": OK3, "options": {"method": "quasi"}}, 400, ["method"]),
+        ("unknown member", {"method": "kappa", "points": OK3, "colour": "red"}, 400, ["colour"]),
+        ("bad session", {"method": "kappa", "points": OK3, "session": "a/b"}, 400, ["session"]),
+        ("session too long", {"method": "kappa", "points": OK3, "session": "x" * 65}, 400, ["session"]),
+        ("collinear kappa (the program refuses)", {"method": "kappa", "points": [[0, 0], [1, 0], [2, 0]]}, 422, ["collinear"]),
+        ("lambda 2 (the program refuses)", {"method": "optimal", "points": OK3, "options": {"lambda": 2}}, 422, ["lambda"]),
+        ("lambda-file rows too few", {"method": "optimal", "points": WAVE, "options": {"lambda-file": [0.5]}}, 422, ["lambda"]),
+        ("weights -1", {"method": "kappa", "points": OK3, "options": {"weights": -1}}, 422, ["weight"]),
+        ("end clamped without derivatives", {"method": "cubic", "points": OK3, "options": {"end": "clamped"}}, 422, ["derivative"]),
+        ("duplicate consecutive points", {"method": "cubic", "points": [[0, 0], [0, 0], [1, 1]]}, 422, ["repeats", "duplicate"]),
+    ] + [(f"forbidden option {o}", {"method": "kappa", "points": OK3, "options": {o: "x.out" if o != "allow-unsolved" else True}},
+          400, [o]) for o in ("output", "svg", "dxf", "svg-path", "allow-unsolved", "help", "plot")]
+
+
+def test_bad_inputs(s):
+    for what, body, status, words in bad_requests():
+        raw = body if isinstance(body, bytes) else json.dumps(body).encode()
+        st, h, answer = s.post("/api/solve", None, raw=raw)
+        e = error_of(answer)
+        check(st == status and e is not None and any(w.lower() in e.lower() for w in words)
+              and h.get("content-type", "").startswith("application/json"),
+              f"bad input, {what}: {st} (want {status}) {e!r}")
+    # The server names the problem in one line, never with a path of its scratch directory.
+    st, _, answer = s.post("/api/solve", {"method": "kappa", "points": [[0, 0], [1, 0], [2, 0]]})
+    check("/tmp" not in (error_of(answer) or ""), "a refused solve does not show the server's scratch path")
+
+
+def test_http(s):
+    cases = [("GET", "/nonexistent.html", 404, "nonexistent"), ("GET", "/../CMakeLists.txt", 404, None),
+             ("GET", "/%2e%2e/CMakeLists.txt", 404, None), ("GET", "/..%2fCMakeLists.txt", 404, None),
+             ("GET", "/%2e%2e%2f%2e%2e%2fCMakeLists.txt", 404, None), ("GET", "/editor.js/../../../etc/passwd", 404, None),
+             ("GET", "/.hidden", 404, None), ("GET", "/api/solve", 405, None), ("DELETE", "/", 405, None),
+             ("PUT", "/api/solve", 405, None), ("GET", "/api/", 404, None)]
+    for method, path, status, word in cases:
+        st, h, body = s.request(method, path)
+        check(st == status and b"cmake_minimum_required" not in body and b"root:" not in body,
+              f"{method} {path}: {st} (want {status})")
+        if word:
+            check(word in (error_of(body) or ""), f"{method} {path}: the error names it: {error_of(body)!r}")
+    st, h, body = s.request("GET", "/")
+    check(st == 200 and b"<html" in body.lower() and h.get("content-type", "").startswith("text/html"), f"GET /: the page ({st})")
+    for name, ctype in (("editor.js", "text/javascript"), ("editor.css", "text/css"), ("curve.js", "text/javascript")):
+        st, h, body = s.request("GET", "/" + name)
+        check(st == 200 and h.get("content-type", "").split(";")[0] in (ctype, "application/javascript"), f"GET /{name}: {st} {h.get('content-type')}")
+    # Raw requests: a raw path with dot segments, no Content-Length, a body over the cap, a huge head.
+    check(raw_status(s, b"GET /../../CMakeLists.txt HTTP/1.1\r\nHost: x\r\n\r\n") in (400, 404), "raw GET /../../: 400 or 404")
+    check(raw_status(s, b"GET //etc/passwd HTTP/1.1\r\nHost: x\r\n\r\n") in (400, 404), "raw GET //etc/passwd: 400 or 404")
+    st, body = raw(s, b"POST /api/solve HTTP/1.1\r\nHost: x\r\nTransfer-Encoding: chunked\r\n\r\n5\r\n{\"a\":\r\n0\r\n\r\n")
+    check(st in (411, 400), f"chunked POST: {st} {body[:120]!r}")
+    st, body = raw(s, b"POST /api/solve HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n")
+    check(st in (411, 400), f"POST without Content-Length: {st}")
+    st, body = raw(s, b"POST /api/solve HTTP/1.1\r\nHost: x\r\nContent-Length: 5000000\r\n\r\n" + b" " * 1000)
+    e = error_of(body.partition(b"\r\n\r\n")[2]) or ""
+    check(st == 413 and "4 MiB" in e.replace("4194304 bytes", "4 MiB"), f"Content-Length 5000000 (over 4 MiB): {st} {e!r}")
+    big = json.dumps({"method": "cubic", "points": [[i * 1.0, (i % 7) * 1.0] for i in range(300000)]}).encode()
+    st, answer = raw(s, b"POST /api/solve HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\nContent-Length: %d\r\n\r\n" % len(big) + big)
+    e = error_of(answer.partition(b"\r\n\r\n")[2]) or ""
+    check(st == 413 and "4 MiB" in e.replace("4194304 bytes", "4 MiB"), f"a {len(big)} byte body: {st} {e!r}")
+    too_many = json.dumps({"method": "cubic", "points": [[i * 1.0, (i % 7) * 1.0] for i in range(20001)]}).encode()
+    st, _, answer = s.post("/api/solve", None, raw=too_many)
+    check(st == 400 and "20000" in (error_of(answer) or "").replace(" ", "").replace(",", ""),
+          f"20001 points (cap 20000): {st} {error_of(answer)!r}")
+    st, body = raw(s, b"GET / HTTP/1.1\r\nHost: x\r\nX-Long: " + b"a" * 9000 + b"\r\n\r\n")
+    check(st in (431, 400), f"a 9 KiB head: {st}")
+    st, h, body = s.request("GET", "/api/methods")
+    check(st == 200, "the server still serves after the raw requests")
+
+
+def raw(s, data, timeout=30):
+    with socket.create_connection((s.host, s.port), timeout=timeout) as c:
+        try:
+            c.sendall(data)
+        except (BrokenPipeError, ConnectionResetError):
+            pass  # the server answered (413) and closed before the whole body was sent
+        chunks = []
+        try:
+            while True:
+                b = c.recv(65536)
+                if not b:
+                    break
+                chunks.append(b)
+                got = b"".join(chunks)
+                head, sep, rest = got.partition(b"\r\n\r\n")
+                if sep:
+                    length = [l for l in head.split(b"\r\n") if l.lower().startswith(b"content-length:")]
+                    if length and len(rest) >= int(length[0].split(b":")[1]):
+                        break
+        except (socket.timeout, ConnectionResetError):
+            pass
+    got = b"".join(chunks)
+    if not got.startswith(b"HTTP/1."):
+        return 0, got
+    return int(got.split(b" ", 2)[1]), got
+
+
+def raw_status(s, data):
+    return raw(s, data)[0]
+
+
+def open_idle_connections(s):
+    """An idle connection and a stalled body, opened first: every other test runs while they are
+    open (their closing after the 10 s cap is checked at the end, by check_idle_connections)."""
+    idle = socket.create_connection((s.host, s.port))
+    stalled = socket.create_connection((s.host, s.port))
+    stalled.sendall(b"POST /api/solve HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\nContent-Length: 1000\r\n\r\n{\"method\":")
+    return idle, stalled, time.monotonic()
+
+
+def test_connections(s):
+    """Half bodies then disconnects: the others served."""
+    for k in range(20):
+        half = socket.create_connection((s.host, s.port))
+        half.sendall(b"POST /api/solve HTTP/1.1\r\nHost: x\r\nContent-Length: 400\r\n\r\n{\"method\": \"kappa\", \"poi")
+        half.close()
+        st, _, body = s.post("/api/solve", {"method": "cardinal", "points": WAVE})
+        if st != 200:
+            break
+    check(st == 200, f"20 half bodies and disconnects, each followed by a solve: last {st}")
+    req = {"method": "kappa", "points": WAVE}
+    st, _, body = s.post("/api/solve", req)
+    check(st == 200 and body == run_program(req)[1], "with an idle and a stalled connection open: the program's answer")
+
+
+def check_idle_connections(idle, stalled, t0):
+    # The idle and the stalled connection are closed after 10 s (the cap), not before 5 s.
+    for name, c in (("idle", idle), ("stalled", stalled)):
+        c.settimeout(max(1.0, 25 - (time.monotonic() - t0)))
+        try:
+            b = c.recv(4096)
+            closed_after = time.monotonic() - t0
+            ok = (b == b"" or b.startswith(b"HTTP/1.1 408") or b.startswith(b"HTTP/1.1 400")) and closed_after > 5
+        except socket.timeout:
+            closed_after, ok = time.monotonic() - t0, False
+        except ConnectionResetError:
+            closed_after = time.monotonic() - t0
+            ok = closed_after > 5
+        check(ok, f"the {name} connection is closed by the server (seen closed {closed_after:.1f} s after it opened; cap 10 s)")
+        c.close()
+
+
+def test_connection_cap(s):
+    """32 connections are served at once: the 33rd gets 503 naming the cap; once they close, 200."""
+    held = [socket.create_connection((s.host, s.port)) for _ in range(32)]
+    time.sleep(0.3)  # every one accepted
+    try:
+        st, _, body = s.request("GET", "/api/methods", timeout=20)
+        check(st == 503 and "32" in (error_of(body) or "") or st == 200,
+              f"a 33rd connection while 32 are open: {st} {error_of(body) or ''}")
+    finally:
+        for c in held:
+            c.close()
+    time.sleep(0.3)
+    st, _, _ = s.request("GET", "/api/methods")
+    check(st == 200, f"after they close the server serves again: {st}")
+
+
+def test_timeout():
+    slow = Server("--solve-timeout", "1")
+    try:
+        # 20000 random points (the cap): the kappa solve takes about 11 s of CPU here, ten times
+        # the cap, so a faster machine still hits it.
+        import random
+        rnd = random.Random(3)
+        pts = [[rnd.uniform(0, 100), rnd.uniform(0, 100)] for _ in range(20000)]
+        t0 = time.monotonic()
+        st, _, body = slow.post("/api/solve", {"method": "kappa", "points": pts})
+        dt = time.monotonic() - t0
+        e = error_of(body) or ""
+        check(st == 503 and "1 s" in e and "cap" in e, f"a solve over --solve-timeout 1: {st} after {dt:.1f} s: {e!r}")
+        check(dt < 5, f"the answer comes at the cap, not after the solve ({dt:.1f} s)")
+        st, _, body = slow.post("/api/solve", {"method": "kappa", "points": WAVE})
+        check(st == 200 and json.loads(body)["status"] == "interior", f"after the timeout the server still serves: {st}")
+        st, _, body = slow.post("/api/export", {"method": "kappa", "points": pts, "format": "dxf"})
+        check(st == 503, f"an export over the cap: {st}")
+    finally:
+        code, out, err = slow.stop()
+        check(code == 0, f"--solve-timeout server: SIGTERM stops it, exit {code}")
+
+
+def test_help_and_bind(s):
+    """The caps are documented in `serve --help`; the server binds 127.0.0.1 unless told otherwise."""
+    text = subprocess.run([PROGRAM, "serve", "--help"], capture_output=True, text=True).stdout
+    for cap in ("4 MiB", "8 KiB", "20000 points", "20 s", "4 GiB", "32 connections", "10 s", "--solve-timeout", "--bind", "127.0.0.1"):
+        check(cap in text, f"serve --help documents {cap!r}")
+    check(s.host == "127.0.0.1", f"the default bind address is 127.0.0.1 (first line: {s.host})")
+    r = subprocess.run([PROGRAM, "serve", "--port", "70000"], capture_output=True, text=True, timeout=20)
+    check(r.returncode != 0 and "port" in r.stderr.lower(), f"--port 70000 is refused: {r.stderr.strip()[:120]!r}")
+
+
+def main():
+    s = Server()
+    print(f"server on {s.host}:{s.port}")
+    try:
+        connections = open_idle_connections(s)
+        test_help_and_bind(s)
+        test_methods(s)
+        test_solve(s)
+        test_export(s)
+        test_metrics(s)
+        test_sessions(s)
+        test_bad_inputs(s)
+        test_http(s)
+        test_connections(s)
+        test_timeout()
+        check_idle_connections(*connections)
+        test_connection_cap(s)
+    finally:
+        code, out, err = s.stop()
+    check(code == 0, f"SIGTERM stops the server cleanly (exit {code}; stderr {err.strip()[-300:]!r})")
+    print(f"{len(failures)} check(s) failed" if failures else "all checks passed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
