@@ -82,7 +82,7 @@ case "${1:-}" in
     export FAIR_EDITOR_REQUIRE_BROWSER=1
     # -O2 rather than Release's -O3: the tests, the program and the Python module of this build
     # compile in 17-21 % less CPU time (GCC 12, measured on test_classic_splines, test_kappa and
-    # certify_command) and run within 10 % of its speed; the benchmarks and the demo keep -O3
+    # certify_command) and run within 10 % of its speed; the benchmarks (build-bench) keep -O3
     # (doc/benchmarks.md, "CI").
     configure build -DFAIR_BUILD_TESTS=ON -DFAIR_BUILD_EXAMPLES=ON -DFAIR_BUILD_PYTHON=ON \
       -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG"
