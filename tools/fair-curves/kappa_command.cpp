@@ -64,6 +64,42 @@ void run_kappa(const Kappa_command_options& o) {
 
 } // namespace
 
+// The kappa sessions' curve of fair-curves serve (kappa_session.h): here, where the command
+// instantiates the solver and the JSON writer already; the same reader, checks and writer as
+// run_kappa.
+namespace fair_curves {
+namespace kappa {
+struct Kappa_session_curve::Impl {
+  Kappa_command_options o;
+  fair::Kappa_curve_options options;
+  std::unique_ptr<fair::Kappa_curve_2<Kernel>> curve;
+};
+
+Kappa_session_curve::Kappa_session_curve(const Kappa_command_options& o, const std::string& points,
+                                         const std::string& tensions)
+    : impl_(new Impl) {
+  impl_->o = o;
+  const fair::Kappa_curve_options asked = curve_options(o);
+  const fair::io::Point_file<Kernel> data = fair::io::parse_points_json<Kernel>(points, o.input);
+  impl_->options = solve_options(
+      o, asked, data, [&](std::size_t n) { return fair::io::parse_tensions(tensions, o.tension_file, n); });
+  impl_->curve.reset(new fair::Kappa_curve_2<Kernel>(data.points, impl_->options));
+}
+
+Kappa_session_curve::~Kappa_session_curve() = default;
+
+void Kappa_session_curve::move_point(const std::string& points, std::size_t i) {
+  const fair::io::Point_file<Kernel> data = fair::io::parse_points_json<Kernel>(points, impl_->o.input);
+  fair::io::check_point_file(data, minimum_points, impl_->options.closed, "fair-curves kappa");
+  fair::internal::require(i < data.points.size() && data.points.size() == impl_->curve->points().size(),
+                          "Kappa_session_curve::move_point: point ", i, " of ", data.points.size());
+  impl_->curve->move_point(i, data.points[i]);
+}
+
+std::string Kappa_session_curve::json() const { return curve_json(impl_->o, *impl_->curve); }
+} // namespace kappa
+} // namespace fair_curves
+
 void register_kappa_command(CLI::App& app) {
   auto options = std::make_shared<Kappa_command_options>();
   CLI::App* sub = app.add_subcommand(

@@ -2,12 +2,14 @@
 //
 // What `fair-curves kappa` makes of its options and writes for a kappa-curve: the curve options
 // of the command line, the curve JSON of -o and the one-line report. Shared by the kappa command
-// and the kappa sessions of `fair-curves serve` (serve/kappa_sessions.h), so that a curve solved
-// (or re-solved warm) inside the server is written byte for byte as the command writes it.
+// and the kappa sessions of `fair-curves serve` (kappa_session.h, defined in kappa_command.cpp), so
+// that a curve solved (or re-solved warm) inside the server is written byte for byte as the
+// command writes it.
 
 #ifndef FAIR_CURVES_KAPPA_OUTPUT_H
 #define FAIR_CURVES_KAPPA_OUTPUT_H
 
+#include "kappa_session.h"
 #include "tool_common.h"
 
 #include <fair/Kappa_curve_2.h>
@@ -30,13 +32,6 @@ namespace kappa {
 constexpr std::size_t minimum_points = 3;
 /// Exit code of an unsolved solve (outputs written, "status": "unsolved"), unless --allow-unsolved.
 constexpr int unsolved_exit_code = 3;
-
-struct Kappa_command_options {
-  std::string input, weights = "1", tension_file, clamp, json_out, svg_out, max_iterations;
-  bool closed = false;
-  bool allow_unsolved = false;
-  bool clamp_given = false; // --clamp appeared (even with an empty value, which is then rejected)
-};
 
 /// The curve options that the command-line options ask for, before the point file is read
 /// (CLI::ValidationError for a bad --weights or --clamp, or one that does not apply).

@@ -38,6 +38,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -88,6 +89,12 @@ Answer error_answer(http::status status, const std::string& message) {
   a.status = status;
   a.body = error_json(message);
   return a;
+}
+
+std::string seconds_text(double s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", s);
+  return buffer;
 }
 
 std::string signal_name(int sig) {
@@ -204,7 +211,9 @@ class Server {
     limits_.wall_seconds = options.solve_timeout;
   }
 
-  int run() {
+  /// Serves until SIGINT or SIGTERM; false when a connection's thread was still running after
+  /// the grace period (the caller then ends the process without destroying the server).
+  bool run() {
     net::io_context ioc;
     beast::error_code ec;
     const net::ip::address address = net::ip::make_address(options_.bind, ec);
@@ -231,6 +240,8 @@ class Server {
     std::function<void()> accept = [&]() {
       acceptor.async_accept([&](const beast::error_code& e, tcp::socket socket) {
         if (!e) dispatch(std::move(socket));
+        // e.g. out of descriptors: a pause instead of a busy loop of failing accepts
+        else if (e != net::error::operation_aborted) std::this_thread::sleep_for(std::chrono::milliseconds(10));
         if (acceptor.is_open()) accept();
         else signals.cancel();
       });
@@ -245,8 +256,7 @@ class Server {
     stopping_ = true;
     Child_registry::instance().kill_all();
     for (const int fd : open_fds_) ::shutdown(fd, SHUT_RDWR);
-    done_.wait_for(lock, std::chrono::seconds(5), [&] { return active_ == 0; });
-    return 0;
+    return done_.wait_for(lock, std::chrono::seconds(5), [&] { return active_ == 0; });
   }
 
  private:
@@ -264,8 +274,18 @@ class Server {
           return;
         }
         open_fds_.insert(fd);
-        std::thread([this, fd] { connection(fd); }).detach();
-        return;
+        try {
+          std::thread([this, fd] { connection(fd); }).detach();
+          return;
+        } catch (const std::system_error&) {  // no thread to be had: answer busy below
+          --active_;
+          open_fds_.erase(fd);
+          socket.assign(tcp::v4(), fd, ec);
+          if (ec) {
+            ::close(fd);
+            return;
+          }
+        }
       }
     }
     // Busy: a short answer written without blocking, then closed.
@@ -346,6 +366,16 @@ class Server {
         } else {
           read_all = true;
           stream.expires_after(idle_timeout);
+          // A client that waits for "100 Continue" before sending its body (curl does for large
+          // bodies) gets it now that the head is accepted.
+          const auto expect = parser.get().find(http::field::expect);
+          if (expect != parser.get().end() && beast::iequals(expect->value(), "100-continue") && !parser.is_done()) {
+            static const char continue_line[] = "HTTP/1.1 100 Continue\r\n\r\n";
+            ec = await(ioc, [&](auto handler) {
+              net::async_write(stream, net::buffer(continue_line, sizeof continue_line - 1), handler);
+            });
+            if (ec) return;
+          }
           ec = await(ioc, [&](auto handler) { http::async_read(stream, buffer, parser, handler); });
           if (ec == http::error::body_limit) {
             a = error_answer(http::status::payload_too_large, "the request body is over the cap of 4 MiB");
@@ -393,9 +423,16 @@ class Server {
       }
       if (path == "/api/solve" || path == "/api/export" || path == "/api/metrics") {
         if (!post) return wrong_method("POST");
+        // Server-Timing: the time the server spent on the request, so that a client can tell
+        // it from the network's and the page's (the browser test's drag round trip).
+        const auto start = std::chrono::steady_clock::now();
         const nlohmann::json body = parse_body(req.body());
-        if (path == "/api/metrics") return metrics(body);
-        return solve(body, path == "/api/export");
+        Answer a = path == "/api/metrics" ? metrics(body) : solve(body, path == "/api/export");
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        char timing[64];
+        std::snprintf(timing, sizeof timing, "app;dur=%.3f", ms);
+        a.headers.emplace_back("Server-Timing", timing);
+        return a;
       }
       if (path.rfind("/api/", 0) == 0 || path == "/api") return error_answer(http::status::not_found, "no such API endpoint: " + path);
       if (!get) return wrong_method("GET");
@@ -443,19 +480,23 @@ class Server {
   /// Runs a job in a child in its own scratch directory; `profile`: the metrics' profile file,
   /// added to the JSON as "profile".
   Answer run_job(const Child_job& job, const std::string& profile = "") {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (stopping_) return error_answer(http::status::service_unavailable, "server busy: the server is stopping");
+    }
     const Scratch_directory scratch;
     for (const auto& f : job.files) scratch.write(f.first, f.second);
     const Child_result c = run_child("/proc/self/exe", job.args, scratch.path(), limits_);
     if (!c.started) return error_answer(http::status::service_unavailable, "server busy: " + c.error);
     if (c.timed_out)
       return error_answer(http::status::service_unavailable,
-                          "the solve did not finish within the cap of " + fair_curves::format_number(limits_.wall_seconds) + " s");
+                          "the solve did not finish within the cap of " + seconds_text(limits_.wall_seconds) + " s");
     if (c.output_overflow)
       return error_answer(http::status::service_unavailable,
                           "the solve wrote more than the cap of " + std::to_string(limits_.max_output >> 20) + " MiB");
     if (c.signal == SIGXCPU || (c.signal == SIGKILL && !c.timed_out))
       return error_answer(http::status::service_unavailable, "the solve exceeded the CPU time cap of " +
-                                                                 fair_curves::format_number(limits_.wall_seconds) + " s");
+                                                                 seconds_text(limits_.wall_seconds) + " s");
     if (c.signal)
       return error_answer(http::status::internal_server_error,
                           "the solver process crashed (" + signal_name(c.signal) + ")");
@@ -528,7 +569,11 @@ void run_serve(const Serve_options& options) {
   for (const fair_curves::Command_entry& c : fair_curves::command_registry()) c.add(app);
   ::signal(SIGPIPE, SIG_IGN);
   Server server(options, method_table(app));
-  server.run();
+  if (!server.run()) {
+    // A connection's thread still runs (a solve in process): end without destroying what it uses.
+    std::cout.flush();
+    std::_Exit(0);
+  }
 }
 
 } // namespace
@@ -543,13 +588,14 @@ void register_serve_command(CLI::App& app) {
   sub->add_option("--bind", options->bind, "address to listen on (default 127.0.0.1: this machine only)");
   sub->add_flag("--open", options->open, "open the page in a browser (xdg-open)");
   sub->add_option("--editor-dir", options->editor_dir,
-                  "serve the page's files from this folder instead of the copy compiled in (page development)");
+                  "serve the page's files from this folder instead of the copy compiled in (page development)")
+      ->check(CLI::ExistingDirectory);
   sub->add_option("--solve-timeout", options->solve_timeout, "wall-clock cap of one solve in seconds (default 20)")
       ->check(CLI::Range(0.1, 3600.0));
   sub->footer("Caps: request body 4 MiB, request head 8 KiB, 20000 points, solve time --solve-timeout (20 s), "
               "solver address space 4 GiB, 32 connections at once (more: 503), a connection idle for 10 s is "
               "closed, 64 kappa sessions of at most 2000 points. The first line on stdout is "
-              "\"fair-curves serve: listening on http://HOST:PORT/\". SIGINT or SIGTERM stop the server.");
+              "\"fair-curves serve: listening on http://HOST:PORT/\". SIGINT or SIGTERM stop the server.\n");
   sub->callback([options] { run_serve(*options); });
 }
 FAIR_CURVES_COMMAND(register_serve_command)

@@ -4,9 +4,9 @@
 // (doc/editor_api.md, "kappa sessions"). A session keeps the last fair::Kappa_curve_2 it solved;
 // when the next request of the session has the same number of points, the same `closed` and
 // options, and exactly one point moved, the curve is re-solved warm by move_point (the library's
-// interactive path, a fraction of a millisecond per drag step) instead of afresh. The answer is
-// written by the kappa command's own functions (kappa_output.h) from the point file the command
-// would read (the same reader, fair::io::parse_points_json, on the same text), so it is the
+// interactive path, a fraction of a millisecond per drag step) instead of afresh. The curve is
+// solved, checked and written by the kappa command's own code (kappa_session.h, defined in
+// kappa_command.cpp) from the text of the point file the command would read, so the answer is the
 // command's JSON of that curve.
 //
 // Anything the in-process path does not handle exactly as the command (an option other than
@@ -20,10 +20,8 @@
 #ifndef FAIR_CURVES_SERVE_KAPPA_SESSIONS_H
 #define FAIR_CURVES_SERVE_KAPPA_SESSIONS_H
 
-#include "../kappa_output.h"
+#include "../kappa_session.h"
 #include "request.h"
-
-#include <fair/io/read_numbers.h>
 
 #include <array>
 #include <cstddef>
@@ -80,41 +78,32 @@ class Kappa_sessions {
         tension_text = rows_file_text(it.value());
       }
     }
-    std::unique_ptr<fair::io::Point_file<Kernel>> data;
-    fair::Kappa_curve_options options;
-    try {
-      data.reset(new fair::io::Point_file<Kernel>(fair::io::parse_points_json<Kernel>(points_file_text(r.points), o.input)));
-      options = kappa::solve_options(o, kappa::curve_options(o), *data, [&](std::size_t n) {
-        return fair::io::parse_tensions(tension_text, o.tension_file, n);
-      });
-    } catch (...) {
-      return a;  // the child says what is wrong, in the command's words
-    }
+    const std::string points = points_file_text(r.points);
     const std::string key = (r.closed ? "closed " : "open ") + r.options.dump();
     const std::shared_ptr<Session> s = session(r.session);
     std::lock_guard<std::mutex> lock(s->mutex);
     try {
       std::size_t moved = 0, differing = 0;
-      if (s->curve && s->key == key && s->points.size() == r.points.size()) {
+      const bool same = s->curve && s->key == key && s->points.size() == r.points.size();
+      if (same)
         for (std::size_t i = 0; i < r.points.size(); ++i)
           if (s->points[i] != r.points[i]) {
             moved = i;
             ++differing;
           }
-      }
-      if (s->curve && s->key == key && s->points.size() == r.points.size() && differing == 1) {
-        s->curve->move_point(moved, data->points[moved]);  // strong guarantee: unchanged if it throws
+      if (same && differing == 1) {
+        s->curve->move_point(points, moved);  // strong guarantee: unchanged if it throws
         a.warm = true;
       } else {
         s->curve.reset();
-        s->curve.reset(new fair::Kappa_curve_2<Kernel>(data->points, options));
+        s->curve.reset(new kappa::Kappa_session_curve(o, points, tension_text));
       }
       s->points = r.points;
       s->key = key;
-      a.json = kappa::curve_json(o, *s->curve);
+      a.json = s->curve->json();
       a.answered = true;
     } catch (...) {
-      s->curve.reset();  // forget the session's curve; the child answers
+      s->curve.reset();  // forget the session's curve; the child answers in the command's words
       a = Kappa_session_answer();
     }
     return a;
@@ -128,7 +117,7 @@ class Kappa_sessions {
  private:
   struct Session {
     std::mutex mutex;
-    std::unique_ptr<fair::Kappa_curve_2<Kernel>> curve;
+    std::unique_ptr<kappa::Kappa_session_curve> curve;
     std::vector<std::array<double, 2>> points;
     std::string key;  ///< closed and options of the curve
     std::list<std::string>::iterator lru;

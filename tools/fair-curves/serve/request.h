@@ -183,7 +183,70 @@ inline std::size_t minimum_points(const Solve_request& r) {
   return c ? 3 : 2;  // cubic, catmull-rom, quasi, bspline
 }
 
-/// Parses JSON text (the body), refusing what is not JSON with the parser's message.
+/// Where a JSON text stops being valid JSON, as a JSON path ("points[3][1]"): a SAX pass that
+/// only follows the path, run when parse_body fails, so that its message names the place of a
+/// number out of range (1e400) as the other errors do.
+class Json_path_tracker : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  std::string path() const {
+    std::string p;
+    for (const Frame& f : frames_) {
+      if (f.array) {
+        if (f.index >= 0) p += "[" + std::to_string(f.index) + "]";
+      } else if (!f.key.empty()) p += (p.empty() ? "" : ".") + f.key;
+    }
+    return p;
+  }
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override {
+    value();
+    frames_.push_back(Frame{false, -1, {}});
+    return true;
+  }
+  bool key(string_t& k) override {
+    frames_.back().key = k;
+    return true;
+  }
+  bool end_object() override {
+    frames_.pop_back();
+    return true;
+  }
+  bool start_array(std::size_t) override {
+    value();
+    frames_.push_back(Frame{true, -1, {}});
+    return true;
+  }
+  bool end_array() override {
+    frames_.pop_back();
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+    // The failing value is the next of an array: name it.
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+    return false;
+  }
+
+ private:
+  struct Frame {
+    bool array;
+    long long index;
+    std::string key;
+  };
+  bool value() {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+    return true;
+  }
+  std::vector<Frame> frames_;
+};
+
+/// Parses JSON text (the body), refusing what is not JSON with the parser's message and the
+/// path where it stopped; a number beyond the range of a double (1e400) is refused so too.
 inline nlohmann::json parse_body(const std::string& body) {
   try {
     return nlohmann::json::parse(body);
@@ -191,7 +254,15 @@ inline nlohmann::json parse_body(const std::string& body) {
     std::string what = e.what();
     const std::size_t bracket = what.find("] ");
     if (what.rfind("[json.exception.", 0) == 0 && bracket != std::string::npos) what = what.substr(bracket + 2);
-    throw Request_error("malformed JSON: " + what);
+    Json_path_tracker tracker;
+    try {
+      nlohmann::json::sax_parse(body, &tracker);
+    } catch (...) {
+    }
+    const std::string path = tracker.path();
+    if (e.id == 406) throw Request_error((path.empty() ? std::string() : path + ": ") +
+                                         "not a finite number (" + what + ": beyond the range of a double)");
+    throw Request_error("malformed JSON" + (path.empty() ? std::string() : " at " + path) + ": " + what);
   }
 }
 
