@@ -24,6 +24,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cctype>
 #include <cmath>
 #include <condition_variable>
 #include <cstdio>
@@ -229,6 +230,11 @@ class Server {
     const tcp::endpoint bound = acceptor.local_endpoint();
     const std::string host = bound.address().is_v6() ? "[" + bound.address().to_string() + "]" : bound.address().to_string();
     const std::string url = "http://" + host + ":" + std::to_string(bound.port()) + "/";
+    if (bound.address().is_loopback()) {
+      const std::string port = ":" + std::to_string(bound.port());
+      for (const std::string& h : {std::string("localhost"), std::string("127.0.0.1"), std::string("[::1]"), host})
+        allowed_hosts_.insert(h + port);
+    }
     std::cout << "fair-curves serve: listening on " << url << std::endl;
     if (options_.open) open_browser(url);
 
@@ -404,6 +410,16 @@ class Server {
   }
 
   Answer handle(const http::request<http::string_body>& req) {
+    // Bound to loopback, the server answers only requests addressed to loopback: a web page
+    // that rebinds its own host name to 127.0.0.1 (DNS rebinding) cannot use the API.
+    const auto host = req.find(http::field::host);
+    if (!allowed_hosts_.empty() && host != req.end()) {
+      std::string h(host->value());
+      for (char& c : h) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (!allowed_hosts_.count(h))
+        return error_answer(http::status::forbidden, "Host '" + std::string(host->value()) +
+                                                         "' is not this server (it answers localhost only)");
+    }
     std::string path(req.target());
     const std::size_t query = path.find('?');
     if (query != std::string::npos) path.resize(query);
@@ -558,6 +574,7 @@ class Server {
   std::mutex mutex_;
   std::condition_variable done_;
   std::set<int> open_fds_;
+  std::set<std::string> allowed_hosts_;  ///< Host values accepted (bound to loopback), lower case
   int active_ = 0;
   bool stopping_ = false;
 };
