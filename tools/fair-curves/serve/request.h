@@ -188,9 +188,11 @@ inline std::size_t minimum_points(const Solve_request& r) {
 /// number out of range (1e400) as the other errors do.
 class Json_path_tracker : public nlohmann::json_sax<nlohmann::json> {
  public:
+  /// The path, its first 200 characters (a body of a million '[' is a path of a million "[0]").
   std::string path() const {
     std::string p;
     for (const Frame& f : frames_) {
+      if (p.size() > 200) return p.substr(0, 200) + "...";
       if (f.array) {
         if (f.index >= 0) p += "[" + std::to_string(f.index) + "]";
       } else if (!f.key.empty()) p += (p.empty() ? "" : ".") + f.key;
