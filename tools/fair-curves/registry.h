@@ -17,14 +17,16 @@
 #ifndef FAIR_CURVES_REGISTRY_H
 #define FAIR_CURVES_REGISTRY_H
 
-#include "gallery.h"
-
 #include <CLI/CLI.hpp>
 
 #include <string>
 #include <vector>
 
 namespace fair_curves {
+
+// Only a pointer type names it here (Demo_adder): the demo cases include gallery.h; main.cpp and
+// serve_command.cpp need not parse it (fair/io/svg.h: 14 s of compile time).
+class Gallery;
 
 /// Thrown by a subcommand after it has written its outputs to make the program exit with
 /// `code` (main.cpp), e.g. 3 for an unsolved kappa-curve (doc/fair_curves_program.md).

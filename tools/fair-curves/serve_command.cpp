@@ -1,0 +1,618 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// fair-curves serve: the curve editor's HTTP server (issue 27; doc/editor_api.md). Boost.Beast
+// over one thread per connection (at most max_connections at once), each connection with its own
+// io_context so that its reads and writes have deadlines (beast::tcp_stream::expires_after) while
+// the thread blocks on a solve. Every cold solve, export and metrics request runs the program
+// itself in a child process (serve/child_process.h) on files written to the request's scratch
+// directory, so the answer is the program's own output byte for byte; kappa sessions re-solve
+// warm in process (serve/kappa_sessions.h). The page is compiled in (serve/static_assets.h).
+
+#include "registry.h"
+#include "serve/child_process.h"
+#include "serve/kappa_sessions.h"
+#include "serve/request.h"
+#include "serve/static_assets.h"
+
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/signal_set.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <cctype>
+#include <cmath>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+namespace net = boost::asio;
+namespace beast = boost::beast;
+namespace http = beast::http;
+using tcp = net::ip::tcp;
+using namespace fair_curves::serve;
+
+// Caps (doc/editor_api.md, "Caps"; also in `fair-curves serve --help`).
+constexpr std::size_t max_body = std::size_t(4) << 20;        ///< request body, bytes
+constexpr std::size_t max_head = 8 * 1024;                    ///< request line and headers, bytes
+constexpr int max_connections = 32;                           ///< served at once; more get 503
+constexpr std::chrono::seconds idle_timeout{10};              ///< to read one request
+constexpr std::chrono::seconds write_timeout{30};             ///< to write one answer
+
+struct Serve_options {
+  int port = 8080;
+  std::string bind = "127.0.0.1", editor_dir;
+  bool open = false;
+  double solve_timeout = 20;
+};
+
+/// One answer.
+struct Answer {
+  http::status status = http::status::ok;
+  std::string content_type = "application/json", body;
+  std::vector<std::pair<std::string, std::string>> headers;
+  bool close = false;  ///< close the connection after it (the request was not read to its end)
+};
+
+std::string error_json(const std::string& message) {
+  return nlohmann::json{{"error", message}}.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+Answer error_answer(http::status status, const std::string& message) {
+  Answer a;
+  a.status = status;
+  a.body = error_json(message);
+  return a;
+}
+
+std::string seconds_text(double s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", s);
+  return buffer;
+}
+
+std::string signal_name(int sig) {
+  switch (sig) {
+    case SIGSEGV: return "SIGSEGV";
+    case SIGABRT: return "SIGABRT";
+    case SIGFPE: return "SIGFPE";
+    case SIGILL: return "SIGILL";
+    case SIGBUS: return "SIGBUS";
+    case SIGKILL: return "SIGKILL";
+    case SIGXCPU: return "SIGXCPU";
+    case SIGTERM: return "SIGTERM";
+    default: return "signal " + std::to_string(sig);
+  }
+}
+
+/// The program's own message from its stderr: without "fair-curves: error: " and CLI11's "Run
+/// with --help" line.
+std::string program_message(const std::string& err) {
+  std::string s = err;
+  const std::string prefix = "fair-curves: error: ";
+  if (s.rfind(prefix, 0) == 0) s = s.substr(prefix.size());
+  const std::size_t help = s.find("Run with --help for more information.");
+  if (help != std::string::npos) s = s.substr(0, help);
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ' || s.back() == '\r')) s.pop_back();
+  if (s.empty()) s = "the program refused the data";
+  return s;
+}
+
+/// A scratch directory of one request (mkdtemp under $TMPDIR), removed with everything in it.
+class Scratch_directory {
+ public:
+  Scratch_directory() {
+    const char* tmp = std::getenv("TMPDIR");
+    std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/fair-curves-serve-XXXXXX";
+    if (!::mkdtemp(&pattern[0])) throw std::runtime_error(std::string("cannot make a scratch directory: ") + std::strerror(errno));
+    path_ = pattern;
+  }
+  ~Scratch_directory() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  Scratch_directory(const Scratch_directory&) = delete;
+  Scratch_directory& operator=(const Scratch_directory&) = delete;
+  const std::string& path() const { return path_; }
+
+  /// Writes a new file `name` (a name the server chose) with `text`.
+  void write(const std::string& name, const std::string& text) const {
+    const std::string file = path_ + "/" + name;
+    const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+    bool ok = fd >= 0;
+    std::size_t done = 0;
+    while (ok && done < text.size()) {
+      const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+      if (n <= 0) ok = false;
+      else done += static_cast<std::size_t>(n);
+    }
+    if (fd >= 0) ::close(fd);
+    if (!ok) throw std::runtime_error("cannot write the scratch file " + name);
+  }
+
+  /// The contents of the file `name`; false if there is none.
+  bool read(const std::string& name, std::string& text) const {
+    const std::string file = path_ + "/" + name;
+    const int fd = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd < 0) return false;
+    text.clear();
+    char buffer[65536];
+    ssize_t n;
+    while ((n = ::read(fd, buffer, sizeof buffer)) > 0) text.append(buffer, static_cast<std::size_t>(n));
+    ::close(fd);
+    return n == 0;
+  }
+
+ private:
+  std::string path_;
+};
+
+/// The rows of the metrics command's --profile CSV as the JSON array of /api/metrics.
+std::string profile_json(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);  // header: piece,t,arc_length,x,y,curvature
+  static const char* names[] = {"piece", "t", "arc_length", "x", "y", "curvature"};
+  std::string out = "[";
+  bool first = true;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    std::vector<std::string> fields;
+    std::stringstream ss(line);
+    std::string f;
+    while (std::getline(ss, f, ',')) fields.push_back(f);
+    if (fields.size() != 6) continue;
+    out += first ? "\n    {" : ",\n    {";
+    first = false;
+    for (int k = 0; k < 6; ++k) {
+      char* end = nullptr;
+      const double v = std::strtod(fields[std::size_t(k)].c_str(), &end);
+      char buffer[40];
+      if (k == 0) std::snprintf(buffer, sizeof buffer, "%lld", std::strtoll(fields[0].c_str(), nullptr, 10));
+      else if (std::isfinite(v)) std::snprintf(buffer, sizeof buffer, "%.17g", v);
+      else std::snprintf(buffer, sizeof buffer, "null");
+      out += std::string(k ? ", " : "") + "\"" + names[k] + "\": " + buffer;
+    }
+    out += "}";
+  }
+  return out + (first ? "]" : "\n  ]");
+}
+
+class Server {
+ public:
+  Server(const Serve_options& options, std::vector<Method_info> table)
+      : options_(options), table_(std::move(table)), methods_text_(methods_json(table_).dump(2) + "\n") {
+    limits_.wall_seconds = options.solve_timeout;
+  }
+
+  /// Serves until SIGINT or SIGTERM; false when a connection's thread was still running after
+  /// the grace period (the caller then ends the process without destroying the server).
+  bool run() {
+    net::io_context ioc;
+    beast::error_code ec;
+    const net::ip::address address = net::ip::make_address(options_.bind, ec);
+    if (ec) throw CLI::ValidationError("--bind", "not an IP address: '" + options_.bind + "'");
+    tcp::acceptor acceptor(ioc);
+    const tcp::endpoint endpoint(address, static_cast<unsigned short>(options_.port));
+    acceptor.open(endpoint.protocol(), ec);
+    if (!ec) acceptor.set_option(net::socket_base::reuse_address(true), ec);
+    if (!ec) acceptor.bind(endpoint, ec);
+    if (!ec) acceptor.listen(net::socket_base::max_listen_connections, ec);
+    if (ec) throw std::runtime_error("cannot listen on " + options_.bind + ":" + std::to_string(options_.port) + ": " + ec.message());
+    ::fcntl(acceptor.native_handle(), F_SETFD, FD_CLOEXEC);
+    const tcp::endpoint bound = acceptor.local_endpoint();
+    const std::string host = bound.address().is_v6() ? "[" + bound.address().to_string() + "]" : bound.address().to_string();
+    const std::string url = "http://" + host + ":" + std::to_string(bound.port()) + "/";
+    if (bound.address().is_loopback()) {
+      const std::string port = ":" + std::to_string(bound.port());
+      for (const std::string& h : {std::string("localhost"), std::string("127.0.0.1"), std::string("[::1]"), host})
+        allowed_hosts_.insert(h + port);
+    }
+    std::cout << "fair-curves serve: listening on " << url << std::endl;
+    if (options_.open) open_browser(url);
+
+    net::signal_set signals(ioc, SIGINT, SIGTERM);
+    signals.async_wait([&](const beast::error_code&, int) {
+      beast::error_code ignored;
+      acceptor.close(ignored);
+    });
+    std::function<void()> accept = [&]() {
+      acceptor.async_accept([&](const beast::error_code& e, tcp::socket socket) {
+        if (!e) dispatch(std::move(socket));
+        // e.g. out of descriptors: a pause instead of a busy loop of failing accepts
+        else if (e != net::error::operation_aborted) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        if (acceptor.is_open()) accept();
+        else signals.cancel();
+      });
+    };
+    accept();
+    ioc.run();
+
+    // Stopping: no new connections; the children killed, the open connections shut down, and
+    // their threads given a few seconds to end.
+    std::cout << "fair-curves serve: stopped" << std::endl;
+    std::unique_lock<std::mutex> lock(mutex_);
+    stopping_ = true;
+    Child_registry::instance().kill_all();
+    for (const int fd : open_fds_) ::shutdown(fd, SHUT_RDWR);
+    return done_.wait_for(lock, std::chrono::seconds(5), [&] { return active_ == 0; });
+  }
+
+ private:
+  /// A new connection: its own thread, or 503 when max_connections are served already.
+  void dispatch(tcp::socket socket) {
+    beast::error_code ec;
+    ::fcntl(socket.native_handle(), F_SETFD, FD_CLOEXEC);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (active_ < max_connections && !stopping_) {
+        ++active_;
+        const int fd = socket.release(ec);
+        if (ec) {
+          --active_;
+          return;
+        }
+        open_fds_.insert(fd);
+        try {
+          std::thread([this, fd] { connection(fd); }).detach();
+          return;
+        } catch (const std::system_error&) {  // no thread to be had: answer busy below
+          --active_;
+          open_fds_.erase(fd);
+          socket.assign(tcp::v4(), fd, ec);
+          if (ec) {
+            ::close(fd);
+            return;
+          }
+        }
+      }
+    }
+    // Busy: a short answer written without blocking, then closed.
+    http::response<http::string_body> res{http::status::service_unavailable, 11};
+    res.set(http::field::content_type, "application/json");
+    res.set(http::field::connection, "close");
+    res.body() = error_json("server busy: " + std::to_string(max_connections) + " connections are served at once");
+    res.prepare_payload();
+    std::ostringstream text;
+    text << res;
+    socket.non_blocking(true, ec);
+    net::write(socket, net::buffer(text.str()), ec);
+    socket.shutdown(tcp::socket::shutdown_both, ec);
+    socket.close(ec);
+  }
+
+  /// Runs one asynchronous operation of a connection to its end on the connection's io_context.
+  template <class Start>
+  static beast::error_code await(net::io_context& ioc, Start start) {
+    beast::error_code result;
+    start([&](const beast::error_code& ec, std::size_t) { result = ec; });
+    ioc.restart();
+    ioc.run();
+    return result;
+  }
+
+  void connection(int fd) {
+    {
+      net::io_context ioc;
+      beast::tcp_stream stream(ioc);
+      beast::error_code ec;
+      sockaddr_storage addr;
+      socklen_t len = sizeof addr;
+      const bool v6 = ::getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len) == 0 && addr.ss_family == AF_INET6;
+      stream.socket().assign(v6 ? tcp::v6() : tcp::v4(), fd, ec);
+      if (!ec) serve_requests(ioc, stream);
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        open_fds_.erase(fd);  // before the close: the number may be reused at once
+      }
+      stream.socket().shutdown(tcp::socket::shutdown_both, ec);
+      stream.socket().close(ec);
+      if (ec) ::close(fd);
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    --active_;
+    done_.notify_all();
+  }
+
+  void serve_requests(net::io_context& ioc, beast::tcp_stream& stream) {
+    beast::flat_buffer buffer;
+    for (;;) {
+      http::request_parser<http::string_body> parser;
+      parser.header_limit(max_head);
+      parser.body_limit(max_body);
+      stream.expires_after(idle_timeout);
+      beast::error_code ec = await(ioc, [&](auto handler) { http::async_read_header(stream, buffer, parser, handler); });
+      Answer a;
+      bool read_all = false;
+      if (ec == http::error::header_limit) {
+        a = error_answer(http::status::request_header_fields_too_large,
+                         "the request head is over the cap of " + std::to_string(max_head) + " bytes");
+      } else if (ec == http::error::body_limit) {
+        a = error_answer(http::status::payload_too_large, "the request body is over the cap of 4 MiB");
+      } else if (ec) {
+        if (ec == beast::error::timeout || ec == http::error::end_of_stream || ec == net::error::eof ||
+            ec == net::error::connection_reset || ec == net::error::operation_aborted || ec == net::error::broken_pipe)
+          return;  // closed or idle: nothing to answer
+        a = error_answer(http::status::bad_request, "malformed HTTP request: " + ec.message());
+      } else {
+        const bool post = parser.get().method() == http::verb::post;
+        if (post && (parser.chunked() || !parser.content_length())) {
+          a = error_answer(http::status::length_required, "a POST needs a Content-Length (and no chunked body)");
+        } else if (parser.content_length() && *parser.content_length() > max_body) {
+          a = error_answer(http::status::payload_too_large,
+                           "the request body of " + std::to_string(*parser.content_length()) +
+                               " bytes is over the cap of " + std::to_string(max_body) + " bytes (4 MiB)");
+        } else {
+          read_all = true;
+          stream.expires_after(idle_timeout);
+          // A client that waits for "100 Continue" before sending its body (curl does for large
+          // bodies) gets it now that the head is accepted.
+          const auto expect = parser.get().find(http::field::expect);
+          if (expect != parser.get().end() && beast::iequals(expect->value(), "100-continue") && !parser.is_done()) {
+            static const char continue_line[] = "HTTP/1.1 100 Continue\r\n\r\n";
+            ec = await(ioc, [&](auto handler) {
+              net::async_write(stream, net::buffer(continue_line, sizeof continue_line - 1), handler);
+            });
+            if (ec) return;
+          }
+          ec = await(ioc, [&](auto handler) { http::async_read(stream, buffer, parser, handler); });
+          if (ec == http::error::body_limit) {
+            a = error_answer(http::status::payload_too_large, "the request body is over the cap of 4 MiB");
+            read_all = false;
+          } else if (ec) {
+            return;  // a half body, then the client went away or idled: nothing to answer
+          } else a = handle(parser.get());
+        }
+      }
+      const bool keep_alive = read_all && !a.close && parser.is_done() && parser.get().keep_alive();
+      http::response<http::string_body> res{a.status, 11};
+      res.set(http::field::server, "fair-curves");
+      res.set(http::field::content_type, a.content_type);
+      res.set(http::field::cache_control, "no-store");
+      res.set("X-Content-Type-Options", "nosniff");
+      // The page works offline: it may load nothing from another origin.
+      res.set("Content-Security-Policy", "default-src 'self' 'unsafe-inline' data: blob:");
+      for (const auto& h : a.headers) res.set(h.first, h.second);
+      res.keep_alive(keep_alive);
+      res.body() = std::move(a.body);
+      res.prepare_payload();
+      stream.expires_after(write_timeout);
+      ec = await(ioc, [&](auto handler) { http::async_write(stream, res, handler); });
+      if (ec || !keep_alive) return;
+    }
+  }
+
+  Answer handle(const http::request<http::string_body>& req) {
+    // Bound to loopback, the server answers only requests addressed to loopback: a web page
+    // that rebinds its own host name to 127.0.0.1 (DNS rebinding) cannot use the API.
+    const auto host = req.find(http::field::host);
+    if (!allowed_hosts_.empty() && host != req.end()) {
+      std::string h(host->value());
+      for (char& c : h) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (!allowed_hosts_.count(h))
+        return error_answer(http::status::forbidden, "Host '" + std::string(host->value()) +
+                                                         "' is not this server (it answers localhost only)");
+    }
+    std::string path(req.target());
+    const std::size_t query = path.find('?');
+    if (query != std::string::npos) path.resize(query);
+    const bool get = req.method() == http::verb::get, post = req.method() == http::verb::post;
+    auto wrong_method = [&](const char* allow) {
+      Answer a = error_answer(http::status::method_not_allowed,
+                              std::string(req.method_string()) + " " + path + ": method not allowed (use " + allow + ")");
+      a.headers.emplace_back("Allow", allow);
+      return a;
+    };
+    try {
+      if (path == "/api/methods") {
+        if (!get) return wrong_method("GET");
+        Answer a;
+        a.body = methods_text_;
+        return a;
+      }
+      if (path == "/api/solve" || path == "/api/export" || path == "/api/metrics") {
+        if (!post) return wrong_method("POST");
+        // Server-Timing: the time the server spent on the request, so that a client can tell
+        // it from the network's and the page's (the browser test's drag round trip).
+        const auto start = std::chrono::steady_clock::now();
+        const nlohmann::json body = parse_body(req.body());
+        Answer a = path == "/api/metrics" ? metrics(body) : solve(body, path == "/api/export");
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        char timing[64];
+        std::snprintf(timing, sizeof timing, "app;dur=%.3f", ms);
+        a.headers.emplace_back("Server-Timing", timing);
+        return a;
+      }
+      if (path.rfind("/api/", 0) == 0 || path == "/api") return error_answer(http::status::not_found, "no such API endpoint: " + path);
+      if (!get) return wrong_method("GET");
+      const std::string name = path == "/" ? "index.html" : path.substr(1);
+      Answer a;
+      if (!find_asset(options_.editor_dir, name, a.body))
+        return error_answer(http::status::not_found, "no such file of the editor: " + path);
+      a.content_type = content_type(name);
+      return a;
+    } catch (const Request_error& e) {
+      return error_answer(static_cast<http::status>(e.status), e.what());
+    } catch (const std::bad_alloc&) {
+      return error_answer(http::status::service_unavailable, "server busy: out of memory");
+    } catch (const std::exception& e) {
+      return error_answer(http::status::internal_server_error, std::string("internal error: ") + e.what());
+    }
+  }
+
+  Answer solve(const nlohmann::json& body, bool export_request) {
+    const Solve_request r = parse_solve_request(body, table_, export_request);
+    if (!export_request && Kappa_sessions::handles(r)) {
+      Kappa_session_answer s = sessions_.solve(r);
+      if (s.answered) {
+        Answer a;
+        a.body = std::move(s.json);
+        return a;
+      }
+    }
+    const Child_job job = solve_job(r);
+    Answer a = run_job(job);
+    if (a.status == http::status::ok && export_request) {
+      const std::string ext = r.format == "svg-path" ? "txt" : r.format;
+      a.content_type = r.format == "dxf" ? "application/dxf" : r.format == "svg" ? "image/svg+xml"
+                       : r.format == "svg-path" ? "text/plain; charset=utf-8" : "application/json";
+      a.headers.emplace_back("Content-Disposition", "attachment; filename=\"curve." + ext + "\"");
+    }
+    return a;
+  }
+
+  Answer metrics(const nlohmann::json& body) {
+    const Child_job job = metrics_job(body);
+    return run_job(job, "profile.csv");
+  }
+
+  /// Runs a job in a child in its own scratch directory; `profile`: the metrics' profile file,
+  /// added to the JSON as "profile".
+  Answer run_job(const Child_job& job, const std::string& profile = "") {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (stopping_) return error_answer(http::status::service_unavailable, "server busy: the server is stopping");
+    }
+    const Scratch_directory scratch;
+    for (const auto& f : job.files) scratch.write(f.first, f.second);
+    const Child_result c = run_child("/proc/self/exe", job.args, scratch.path(), limits_);
+    if (!c.started) return error_answer(http::status::service_unavailable, "server busy: " + c.error);
+    if (c.timed_out)
+      return error_answer(http::status::service_unavailable,
+                          "the solve did not finish within the cap of " + seconds_text(limits_.wall_seconds) + " s");
+    if (c.output_overflow)
+      return error_answer(http::status::service_unavailable,
+                          "the solve wrote more than the cap of " + std::to_string(limits_.max_output >> 20) + " MiB");
+    if (c.signal == SIGXCPU || (c.signal == SIGKILL && !c.timed_out))
+      return error_answer(http::status::service_unavailable, "the solve exceeded the CPU time cap of " +
+                                                                 seconds_text(limits_.wall_seconds) + " s");
+    if (c.signal)
+      return error_answer(http::status::internal_server_error,
+                          "the solver process crashed (" + signal_name(c.signal) + ")");
+    if (c.exit_code == 1 || c.exit_code == 2) {
+      if (c.err.find("bad_alloc") != std::string::npos)
+        return error_answer(http::status::service_unavailable, "the solve exceeded the memory cap of " +
+                                                                   std::to_string(limits_.address_space >> 30) + " GiB");
+      return error_answer(http::status::unprocessable_entity, program_message(c.err));
+    }
+    if (c.exit_code != 0 && c.exit_code != 3)
+      return error_answer(http::status::internal_server_error,
+                          "the solver process failed (exit code " + std::to_string(c.exit_code) + "): " + program_message(c.err));
+    Answer a;
+    if (job.answer_file.empty()) a.body = c.out;
+    else if (!scratch.read(job.answer_file, a.body))
+      return error_answer(http::status::internal_server_error, "the program wrote no " + job.answer_file);
+    if (!profile.empty()) {
+      std::string csv;
+      const std::size_t end = a.body.rfind('}');
+      if (!scratch.read(profile, csv) || end == std::string::npos)
+        return error_answer(http::status::internal_server_error, "the metrics command wrote no profile");
+      a.body.insert(end, ",\n  \"profile\": " + profile_json(csv) + "\n");
+      // keep the closing brace on its own line as the program writes it
+      const std::size_t brace = a.body.rfind('}');
+      if (brace > 0 && a.body[brace - 1] == '\n' && brace > 1 && a.body[brace - 2] == '\n') a.body.erase(brace - 1, 1);
+    }
+    return a;
+  }
+
+  /// --open: xdg-open URL when it exists (reaped by a detached thread).
+  static void open_browser(const std::string& url) {
+    std::string found;
+    if (const char* path = std::getenv("PATH")) {
+      std::stringstream dirs(path);
+      std::string dir;
+      while (found.empty() && std::getline(dirs, dir, ':'))
+        if (!dir.empty() && ::access((dir + "/xdg-open").c_str(), X_OK) == 0) found = dir + "/xdg-open";
+    }
+    if (found.empty()) {
+      std::cout << "fair-curves serve: could not open a browser (no xdg-open): open " << url << std::endl;
+      return;
+    }
+    std::vector<std::string> args{"xdg-open", url};
+    std::vector<char*> argv{&args[0][0], &args[1][0], nullptr};
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+      ::execv(found.c_str(), argv.data());
+      ::_exit(127);
+    }
+    if (pid > 0) std::thread([pid] { int status; ::waitpid(pid, &status, 0); }).detach();
+    else std::cout << "fair-curves serve: could not open a browser: open " << url << std::endl;
+  }
+
+  Serve_options options_;
+  std::vector<Method_info> table_;
+  std::string methods_text_;
+  Child_limits limits_;
+  Kappa_sessions sessions_;
+  std::mutex mutex_;
+  std::condition_variable done_;
+  std::set<int> open_fds_;
+  std::set<std::string> allowed_hosts_;  ///< Host values accepted (bound to loopback), lower case
+  int active_ = 0;
+  bool stopping_ = false;
+};
+
+void run_serve(const Serve_options& options) {
+  // The methods and their options from the program's own subcommands, built as main.cpp builds
+  // them (this app is never parsed).
+  CLI::App app;
+  for (const fair_curves::Command_entry& c : fair_curves::command_registry()) c.add(app);
+  ::signal(SIGPIPE, SIG_IGN);
+  Server server(options, method_table(app));
+  if (!server.run()) {
+    // A connection's thread still runs (a solve in process): end without destroying what it uses.
+    std::cout.flush();
+    std::_Exit(0);
+  }
+}
+
+} // namespace
+
+void register_serve_command(CLI::App& app) {
+  auto options = std::make_shared<Serve_options>();
+  CLI::App* sub = app.add_subcommand(
+      "serve", "The curve editor: an HTTP server of the editor page and its JSON API (doc/editor_api.md); "
+               "every solve is the program's own answer");
+  sub->add_option("--port", options->port, "TCP port (default 8080; 0: a free port, printed on the first line)")
+      ->check(CLI::Range(0, 65535));
+  sub->add_option("--bind", options->bind, "address to listen on (default 127.0.0.1: this machine only)");
+  sub->add_flag("--open", options->open, "open the page in a browser (xdg-open)");
+  sub->add_option("--editor-dir", options->editor_dir,
+                  "serve the page's files from this folder instead of the copy compiled in (page development)")
+      ->check(CLI::ExistingDirectory);
+  sub->add_option("--solve-timeout", options->solve_timeout, "wall-clock cap of one solve in seconds (default 20)")
+      ->check(CLI::Range(0.1, 3600.0));
+  sub->footer("Caps: request body 4 MiB, request head 8 KiB, 20000 points, solve time --solve-timeout (20 s), "
+              "solver address space 4 GiB, 32 connections at once (more: 503), a connection idle for 10 s is "
+              "closed, 64 kappa sessions of at most 2000 points. The first line on stdout is "
+              "\"fair-curves serve: listening on http://HOST:PORT/\". SIGINT or SIGTERM stop the server.\n");
+  sub->callback([options] { run_serve(*options); });
+}
+FAIR_CURVES_COMMAND(register_serve_command)
