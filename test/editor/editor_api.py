@@ -50,11 +50,13 @@ def check(ok, what):
 
 # ------------------------------------------------------------------ the server
 class Server:
-    def __init__(self, *extra):
+    def __init__(self, *extra, path=None):
         # Its own TMPDIR: the scratch directories of the requests must all be gone at the end.
         self.tmpdir = tempfile.mkdtemp(prefix="fair-editor-server-tmp-")
-        self.proc = subprocess.Popen([PROGRAM, "serve", "--port", "0", *EDITOR_DIR, *extra], stdout=subprocess.PIPE,
-                                     stderr=subprocess.PIPE, text=True, env=dict(os.environ, TMPDIR=self.tmpdir))
+        editor_dir = [] if "--editor-dir" in extra else EDITOR_DIR
+        env = dict(os.environ, TMPDIR=self.tmpdir, **({"PATH": path} if path else {}))
+        self.proc = subprocess.Popen([PROGRAM, "serve", "--port", "0", *editor_dir, *extra], stdout=subprocess.PIPE,
+                                     stderr=subprocess.PIPE, text=True, env=env)
         line = self.proc.stdout.readline().rstrip("\n")
         prefix = "fair-curves serve: listening on http://"
         if not line.startswith(prefix) or not line.endswith("/"):
@@ -802,6 +804,60 @@ def test_solve_slots():
         check(code == 0, f"slots server: SIGTERM stops it, exit {code}")
 
 
+def test_foreign_kill(s):
+    """Finding 8: a SIGKILL the server did not send (the OOM killer, an operator) is a 500
+    naming it, not the CPU cap."""
+    answers = []
+    t = threading.Thread(target=lambda: answers.append(s.post("/api/solve", {"method": "kappa", "points": random_points(20000)})))
+    t.start()
+    kids, t0 = [], time.monotonic()
+    while not kids and time.monotonic() - t0 < 5:
+        time.sleep(0.05)
+        kids = children_of(s.proc.pid)
+    time.sleep(0.2)  # past the exec
+    for k in kids:
+        os.kill(k, signal.SIGKILL)
+    t.join(30)
+    st, _, body = answers[0] if answers else (0, {}, b"")
+    e = error_of(body) or ""
+    check(kids and st == 500 and "killed (SIGKILL)" in e and "CPU" not in e, f"a foreign SIGKILL of the solver: {st} {e!r}")
+
+
+def test_fifo_and_open():
+    """Finding 11: a FIFO among the --editor-dir files is not served and blocks nothing;
+    finding 14: the --open child does not hold the server's stdout (the server's output ends when
+    it stops, though the 'browser' runs on)."""
+    d = tempfile.mkdtemp(prefix="fair-editor-fifo-")
+    try:
+        with open(os.path.join(d, "index.html"), "w") as f:
+            f.write("<html></html>\n")
+        os.mkfifo(os.path.join(d, "x.js"))
+        bin_dir = os.path.join(d, "bin")
+        os.mkdir(bin_dir)
+        with open(os.path.join(bin_dir, "xdg-open"), "w") as f:
+            f.write('#!/bin/sh\necho $$ > "$0.pid"\nexec sleep 30\n')
+        os.chmod(os.path.join(bin_dir, "xdg-open"), 0o755)
+        srv = Server("--editor-dir", d, "--open", path=bin_dir + ":" + os.environ.get("PATH", "/usr/bin:/bin"))
+        try:
+            t0 = time.monotonic()
+            st, _, body = srv.request("GET", "/x.js", timeout=10)
+            check(st == 404 and time.monotonic() - t0 < 3, f"GET of a FIFO in --editor-dir: {st} after {time.monotonic() - t0:.1f} s")
+            st, _, _ = srv.request("GET", "/")
+            check(st == 200, f"then the page: {st}")
+        finally:
+            t0 = time.monotonic()
+            code, _, _ = srv.stop()
+            check(code == 0 and time.monotonic() - t0 < 10,
+                  f"--open server stops and its output ends although the opened 'browser' runs on ({time.monotonic() - t0:.1f} s)")
+    finally:
+        try:  # the fake browser, by its pid
+            with open(os.path.join(d, "bin", "xdg-open.pid")) as f:
+                os.kill(int(f.read()), signal.SIGKILL)
+        except (OSError, ValueError):
+            pass
+        shutil.rmtree(d, ignore_errors=True)
+
+
 def main():
     s = Server()
     print(f"server on {s.host}:{s.port}")
@@ -825,6 +881,8 @@ def main():
         test_session_iterations(s)
         test_abandoned_and_slots(s)
         test_solve_slots()
+        test_foreign_kill(s)
+        test_fifo_and_open()
         check_idle_connections(*connections)
         test_connection_cap(s)
     finally:
