@@ -634,6 +634,11 @@ def test_depth_cap(s):
     check(st in (400, 422) and "nested" not in (error_of(answer) or ""), f"61 levels: parsed ({st} {error_of(answer)!r})")
     st, _, body = s.post("/api/solve", {"method": "cubic", "points": OK3})
     check(st == 200, f"after the deep bodies the server still serves: {st}")
+    # Finding 7: the DOM's memory per container is capped by a count of arrays and objects.
+    many = b'{"method": "kappa", "points": [' + b"[]," * 300000 + b"[]]}"
+    st, _, answer = s.post("/api/solve", None, raw=many)
+    e = error_of(answer) or ""
+    check(st == 400 and "more than 300000 arrays and objects" in e, f"a body of 300001 empty arrays: {st} {e!r}")
 
 
 def test_cross_site(s):

@@ -37,6 +37,11 @@ constexpr std::size_t max_text_option = 4096;  ///< characters of one option val
 /// dump(), the metrics command's reader, which itself refuses more than 64) can overflow the
 /// stack of a connection's thread (review finding 1: 100 000 levels killed the server).
 constexpr int max_json_depth = 64;
+/// Arrays and objects in a request body. Each costs the parsed DOM ~60-80 bytes of heap for 3
+/// bytes of text (`[],`): a 4 MiB body of them was ~300 MB (review finding 7). The largest
+/// curve a metrics request can carry within the 4 MiB body cap has far fewer (a 20 000-piece
+/// cubic spline: 160 000 in 10.5 MB).
+constexpr long long max_json_containers = 300000;
 /// Rows of the metrics profile (pieces x samples): the profile is written to a file and read
 /// back into the answer; 2000 pieces x 256 samples made a 79 MB answer (review finding 5).
 constexpr long long max_profile_rows = 200000;
@@ -264,11 +269,17 @@ class Json_path_tracker : public nlohmann::json_sax<nlohmann::json> {
 inline nlohmann::json parse_body(const std::string& body) {
   // The parser itself is iterative; the callback sees the depth of every array and object as it
   // starts (the number of containers around it) and stops the parse beyond max_json_depth.
-  const nlohmann::json::parser_callback_t depth_cap = [](int depth, nlohmann::json::parse_event_t event, nlohmann::json&) {
-    if ((event == nlohmann::json::parse_event_t::object_start || event == nlohmann::json::parse_event_t::array_start) &&
-        depth >= max_json_depth)
-      throw Request_error("the JSON is nested more than " + std::to_string(max_json_depth) +
-                          " levels deep (the cap of the API)");
+  long long containers = 0;
+  const nlohmann::json::parser_callback_t depth_cap = [&containers](int depth, nlohmann::json::parse_event_t event,
+                                                                    nlohmann::json&) {
+    if (event == nlohmann::json::parse_event_t::object_start || event == nlohmann::json::parse_event_t::array_start) {
+      if (depth >= max_json_depth)
+        throw Request_error("the JSON is nested more than " + std::to_string(max_json_depth) +
+                            " levels deep (the cap of the API)");
+      if (++containers > max_json_containers)
+        throw Request_error("the JSON has more than " + std::to_string(max_json_containers) +
+                            " arrays and objects (the cap of the API)");
+    }
     return true;
   };
   try {
