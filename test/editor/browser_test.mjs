@@ -110,7 +110,7 @@ try {
   const at = (fx, fy) => [rect.x + fx * rect.w, rect.y + fy * rect.h];
   const pointCount = () => page.$$eval('#points circle.point', (c) => c.length);
   const points = () => page.evaluate(() => window.fairEditor.state.points.map((p) => [p.x, p.y]));
-  const solveDirect = (body) => page.evaluate(async (b) => (await fetch('/api/solve', { method: 'POST', body: JSON.stringify(b) })).json(), body);
+  const solveDirect = (body) => page.evaluate(async (b) => (await fetch('/api/solve', { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(b) })).json(), body);
 
   // ---- add points by clicks: a wave of six
   const clicks = [[0.1, 0.75], [0.25, 0.35], [0.42, 0.6], [0.58, 0.3], [0.74, 0.55], [0.9, 0.25]];

@@ -50,11 +50,13 @@ def check(ok, what):
 
 # ------------------------------------------------------------------ the server
 class Server:
-    def __init__(self, *extra):
+    def __init__(self, *extra, path=None):
         # Its own TMPDIR: the scratch directories of the requests must all be gone at the end.
         self.tmpdir = tempfile.mkdtemp(prefix="fair-editor-server-tmp-")
-        self.proc = subprocess.Popen([PROGRAM, "serve", "--port", "0", *EDITOR_DIR, *extra], stdout=subprocess.PIPE,
-                                     stderr=subprocess.PIPE, text=True, env=dict(os.environ, TMPDIR=self.tmpdir))
+        editor_dir = [] if "--editor-dir" in extra else EDITOR_DIR
+        env = dict(os.environ, TMPDIR=self.tmpdir, **({"PATH": path} if path else {}))
+        self.proc = subprocess.Popen([PROGRAM, "serve", "--port", "0", *editor_dir, *extra], stdout=subprocess.PIPE,
+                                     stderr=subprocess.PIPE, text=True, env=env)
         line = self.proc.stdout.readline().rstrip("\n")
         prefix = "fair-curves serve: listening on http://"
         if not line.startswith(prefix) or not line.endswith("/"):
@@ -441,30 +443,33 @@ def test_http(s):
         st, h, body = s.request("GET", "/" + name)
         check(st == 200 and h.get("content-type", "").split(";")[0] in (ctype, "application/javascript"), f"GET /{name}: {st} {h.get('content-type')}")
     # Raw requests: a raw path with dot segments, no Content-Length, a body over the cap, a huge head.
-    check(raw_status(s, b"GET /../../CMakeLists.txt HTTP/1.1\r\nHost: x\r\n\r\n") in (400, 404), "raw GET /../../: 400 or 404")
-    check(raw_status(s, b"GET //etc/passwd HTTP/1.1\r\nHost: x\r\n\r\n") in (400, 404), "raw GET //etc/passwd: 400 or 404")
-    st, body = raw(s, b"POST /api/solve HTTP/1.1\r\nHost: x\r\nTransfer-Encoding: chunked\r\n\r\n5\r\n{\"a\":\r\n0\r\n\r\n")
+    check(raw_status(s, b"GET /../../CMakeLists.txt HTTP/1.1\r\nHost: HOST\r\n\r\n") in (400, 404), "raw GET /../../: 400 or 404")
+    check(raw_status(s, b"GET //etc/passwd HTTP/1.1\r\nHost: HOST\r\n\r\n") in (400, 404), "raw GET //etc/passwd: 400 or 404")
+    st, body = raw(s, b"POST /api/solve HTTP/1.1\r\nHost: HOST\r\nContent-Type: application/json\r\nTransfer-Encoding: chunked\r\n\r\n5\r\n{\"a\":\r\n0\r\n\r\n")
     check(st in (411, 400), f"chunked POST: {st} {body[:120]!r}")
-    st, body = raw(s, b"POST /api/solve HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n")
+    st, body = raw(s, b"POST /api/solve HTTP/1.1\r\nHost: HOST\r\nContent-Type: application/json\r\nConnection: close\r\n\r\n")
     check(st in (411, 400), f"POST without Content-Length: {st}")
-    st, body = raw(s, b"POST /api/solve HTTP/1.1\r\nHost: x\r\nContent-Length: 5000000\r\n\r\n" + b" " * 1000)
+    st, body = raw(s, b"POST /api/solve HTTP/1.1\r\nHost: HOST\r\nContent-Type: application/json\r\nContent-Length: 5000000\r\n\r\n" + b" " * 1000)
     e = error_of(body.partition(b"\r\n\r\n")[2]) or ""
     check(st == 413 and "4 MiB" in e.replace("4194304 bytes", "4 MiB"), f"Content-Length 5000000 (over 4 MiB): {st} {e!r}")
     big = json.dumps({"method": "cubic", "points": [[i * 1.0, (i % 7) * 1.0] for i in range(300000)]}).encode()
-    st, answer = raw(s, b"POST /api/solve HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\nContent-Length: %d\r\n\r\n" % len(big) + big)
+    st, answer = raw(s, b"POST /api/solve HTTP/1.1\r\nHost: HOST\r\nContent-Type: application/json\r\nContent-Length: %d\r\n\r\n" % len(big) + big)
     e = error_of(answer.partition(b"\r\n\r\n")[2]) or ""
     check(st == 413 and "4 MiB" in e.replace("4194304 bytes", "4 MiB"), f"a {len(big)} byte body: {st} {e!r}")
     too_many = json.dumps({"method": "cubic", "points": [[i * 1.0, (i % 7) * 1.0] for i in range(20001)]}).encode()
     st, _, answer = s.post("/api/solve", None, raw=too_many)
     check(st == 400 and "20000" in (error_of(answer) or "").replace(" ", "").replace(",", ""),
           f"20001 points (cap 20000): {st} {error_of(answer)!r}")
-    st, body = raw(s, b"GET / HTTP/1.1\r\nHost: x\r\nX-Long: " + b"a" * 9000 + b"\r\n\r\n")
+    st, body = raw(s, b"GET / HTTP/1.1\r\nHost: HOST\r\nX-Long: " + b"a" * 9000 + b"\r\n\r\n")
     check(st in (431, 400), f"a 9 KiB head: {st}")
     st, h, body = s.request("GET", "/api/methods")
     check(st == 200, "the server still serves after the raw requests")
 
 
 def raw(s, data, timeout=30):
+    # "Host: HOST" stands for the server's own address: bound to loopback it refuses another
+    # Host (403, DNS rebinding), which the raw requests below do not mean to test.
+    data = data.replace(b"Host: HOST\r\n", b"Host: %s:%d\r\n" % (s.host.encode(), s.port))
     with socket.create_connection((s.host, s.port), timeout=timeout) as c:
         try:
             c.sendall(data)
@@ -500,7 +505,8 @@ def open_idle_connections(s):
     open (their closing after the 10 s cap is checked at the end, by check_idle_connections)."""
     idle = socket.create_connection((s.host, s.port))
     stalled = socket.create_connection((s.host, s.port))
-    stalled.sendall(b"POST /api/solve HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\nContent-Length: 1000\r\n\r\n{\"method\":")
+    stalled.sendall(b"POST /api/solve HTTP/1.1\r\nHost: %s:%d\r\nContent-Type: application/json\r\nContent-Length: 1000\r\n\r\n{\"method\":"
+                    % (s.host.encode(), s.port))
     return idle, stalled, time.monotonic()
 
 
@@ -508,7 +514,8 @@ def test_connections(s):
     """Half bodies then disconnects: the others served."""
     for k in range(20):
         half = socket.create_connection((s.host, s.port))
-        half.sendall(b"POST /api/solve HTTP/1.1\r\nHost: x\r\nContent-Length: 400\r\n\r\n{\"method\": \"kappa\", \"poi")
+        half.sendall(b"POST /api/solve HTTP/1.1\r\nHost: %s:%d\r\nContent-Type: application/json\r\nContent-Length: 400\r\n\r\n"
+                     b"{\"method\": \"kappa\", \"poi" % (s.host.encode(), s.port))
         half.close()
         st, _, body = s.post("/api/solve", {"method": "cardinal", "points": WAVE})
         if st != 200:
@@ -585,6 +592,277 @@ def test_help_and_bind(s):
     check(r.returncode != 0 and "port" in r.stderr.lower(), f"--port 70000 is refused: {r.stderr.strip()[:120]!r}")
 
 
+# ------------------------------------------------------------------ hardening (review s16)
+def children_of(pid):
+    """The pids whose parent is `pid` (the server's solver children)."""
+    kids = []
+    for d in os.listdir("/proc"):
+        if d.isdigit():
+            try:
+                with open(f"/proc/{d}/stat") as f:
+                    stat = f.read()
+                if int(stat.rsplit(")", 1)[1].split()[1]) == pid:
+                    kids.append(int(d))
+            except (OSError, IndexError, ValueError):
+                pass
+    return kids
+
+
+def random_points(n, seed=3):
+    import random
+    rnd = random.Random(seed)
+    return [[rnd.uniform(0, 100), rnd.uniform(0, 100)] for _ in range(n)]
+
+
+def test_depth_cap(s):
+    """Finding 1: JSON nested deeper than 64 levels is refused while parsing (400 naming the
+    depth) on every POST endpoint, the metrics curve and an option value included; the server lives."""
+    deep = 100000
+    bodies = [("/api/solve", b'{"method": "kappa", "points": ' + b"[" * deep + b"]" * deep + b"}"),
+              ("/api/export", b'{"method": "kappa", "format": "dxf", "points": ' + b"[" * deep + b"]" * deep + b"}"),
+              ("/api/metrics", b'{"curve": {"x": ' + b"[" * deep + b"]" * deep + b"}}"),
+              ("/api/metrics", b'{"curve": {"x": ' + b"[" * deep + b"}"),  # unclosed: still the depth
+              ("/api/solve", json.dumps({"method": "kappa", "points": OK3}).encode()[:-1]
+               + b', "options": {"weights": ' + b"[" * 70 + b"]" * 70 + b"}}")]
+    for path, body in bodies:
+        st, h, answer = s.post(path, None, raw=body)
+        e = error_of(answer) or ""
+        check(st == 400 and "nested more than 64 levels" in e and len(e) < 300,
+              f"{path}: a body nested {body.count(b'[')} levels deep: {st} {e!r}")
+    ok = b'{"curve": ' + b'{"x": ' * 60 + b"1" + b"}" * 60 + b"}"  # 61 levels: parsed, refused by the metrics command
+    st, _, answer = s.post("/api/metrics", None, raw=ok)
+    check(st in (400, 422) and "nested" not in (error_of(answer) or ""), f"61 levels: parsed ({st} {error_of(answer)!r})")
+    st, _, body = s.post("/api/solve", {"method": "cubic", "points": OK3})
+    check(st == 200, f"after the deep bodies the server still serves: {st}")
+    # Finding 7: the DOM's memory per container is capped by a count of arrays and objects.
+    many = b'{"method": "kappa", "points": [' + b"[]," * 300000 + b"[]]}"
+    st, _, answer = s.post("/api/solve", None, raw=many)
+    e = error_of(answer) or ""
+    check(st == 400 and "more than 300000 arrays and objects" in e, f"a body of 300001 empty arrays: {st} {e!r}")
+
+
+def test_cross_site(s):
+    """Finding 2: Host allow-list (loopback bind), Content-Type application/json on every POST
+    (415), a foreign Origin refused (403); the server's own Origin and the page's requests pass."""
+    req = json.dumps({"method": "cubic", "points": OK3}).encode()
+    own = f"{s.host}:{s.port}"
+    cases = [
+        ("Host evil.example", {"Host": "evil.example", "Content-Type": "application/json"}, 403, "Host 'evil.example'"),
+        ("Host evil.example:PORT", {"Host": f"evil.example:{s.port}", "Content-Type": "application/json"}, 403, "is not this server"),
+        ("Content-Type text/plain", {"Content-Type": "text/plain;charset=UTF-8"}, 415, "Content-Type must be application/json"),
+        ("Content-Type form", {"Content-Type": "application/x-www-form-urlencoded"}, 415, "application/json"),
+        ("no Content-Type", {}, 415, "application/json (got none)"),
+        ("Origin evil", {"Content-Type": "application/json", "Origin": "http://evil.example"}, 403, "Origin 'http://evil.example'"),
+        ("Origin null", {"Content-Type": "application/json", "Origin": "null"}, 403, "cross-site"),
+        ("Origin other port", {"Content-Type": "application/json", "Origin": f"http://{s.host}:{s.port + 1}"}, 403, "Origin"),
+        ("Origin https", {"Content-Type": "application/json", "Origin": f"https://{own}"}, 403, "Origin"),
+    ]
+    for what, headers, status, words in cases:
+        st, h, answer = s.request("POST", "/api/solve", req, headers)
+        e = error_of(answer) or ""
+        check(st == status and words in e, f"cross-site, {what}: {st} (want {status}) {e!r}")
+    for what, headers in (("own Origin", {"Content-Type": "application/json", "Origin": f"http://{own}"}),
+                          ("localhost Origin", {"Content-Type": "application/json", "Origin": f"http://localhost:{s.port}"}),
+                          ("charset parameter", {"Content-Type": "Application/JSON; charset=utf-8"})):
+        st, _, answer = s.request("POST", "/api/solve", req, headers)
+        check(st == 200 and "pieces" in json.loads(answer), f"cross-site, {what}: 200 ({st})")
+    # A cross-site GET with a foreign Origin is refused too; the preflight gets no CORS grant.
+    st, _, answer = s.request("GET", "/api/methods", None, {"Origin": "http://evil.example"})
+    check(st == 403 and "Origin" in (error_of(answer) or ""), f"GET with a foreign Origin: {st}")
+    st, h, _ = s.request("OPTIONS", "/api/solve", None, {"Origin": f"http://{own}", "Access-Control-Request-Method": "POST"})
+    check(st == 405 and not any(k.startswith("access-control-") for k in h), f"OPTIONS preflight: {st}, no CORS headers")
+    # The page's own requests say application/json.
+    st, _, api_js = s.request("GET", "/api.js")
+    check(st == 200 and api_js.count(b"'Content-Type': 'application/json'") >= 2, "api.js posts with Content-Type: application/json")
+    # Content Security Policy: scripts only from the server ('unsafe-inline' only for styles).
+    st, h, _ = s.request("GET", "/")
+    csp = h.get("content-security-policy", "")
+    check("script-src" not in csp and "default-src 'self' data: blob:;" in csp and "'unsafe-inline'" in csp.split("style-src", 1)[-1],
+          f"CSP without inline scripts: {csp!r}")
+
+
+def test_head(s):
+    """Finding 10: HEAD of a GET path is its head with the Content-Length and no body; a
+    kept-alive connection then answers the next request in step."""
+    st, _, page = s.request("GET", "/")
+    for path, status in (("/", 200), ("/api/methods", 200), ("/nonexistent.js", 404), ("/api/solve", 405)):
+        body = b"HEAD %s HTTP/1.1\r\nHost: HOST\r\n\r\nGET /api/methods HTTP/1.1\r\nHost: HOST\r\nConnection: close\r\n\r\n" % path.encode()
+        body = body.replace(b"Host: HOST", b"Host: %s:%d" % (s.host.encode(), s.port))
+        with socket.create_connection((s.host, s.port), timeout=10) as c:
+            c.sendall(body)
+            got = b""
+            while True:
+                b = c.recv(65536)
+                if not b:
+                    break
+                got += b
+        head, _, rest = got.partition(b"\r\n\r\n")
+        length = [int(l.split(b":")[1]) for l in head.split(b"\r\n") if l.lower().startswith(b"content-length:")]
+        check(head.startswith(b"HTTP/1.1 %d" % status) and rest.startswith(b"HTTP/1.1 200") and rest.rstrip().endswith(b"}")
+              and length and length[0] > 0 and (path != "/" or length[0] == len(page)),
+              f"HEAD {path}: {head[:12]!r}, Content-Length {length}, no body, the next answer in step ({rest[:12]!r})")
+
+
+def test_option_values(s):
+    """Finding 9: an empty option value is refused naming the option (not swallowing the next
+    argument); finding 8: user text 'bad_alloc' is the program's 422, not the memory cap."""
+    for value in ("", "  "):
+        st, _, answer = s.post("/api/solve", {"method": "kappa", "points": WAVE, "options": {"weights": value}})
+        e = error_of(answer) or ""
+        check(st == 400 and "weights: an empty value" in e, f"weights {value!r}: {st} {e!r}")
+    st, _, answer = s.post("/api/export", {"method": "optimal", "points": WAVE, "format": "dxf", "options": {"lambda": ""}})
+    check(st == 400 and "lambda: an empty value" in (error_of(answer) or ""), f"export lambda '': {st} {error_of(answer)!r}")
+    st, _, answer = s.post("/api/solve", {"method": "optimal", "points": WAVE, "options": {"derivative-weight": ["1:0.1", ""]}})
+    check(st == 400 and "derivative-weight[1]: an empty value" in (error_of(answer) or ""), f"a list item '': {st} {error_of(answer)!r}")
+    st, _, answer = s.post("/api/solve", {"method": "kappa", "points": WAVE, "options": {"weights": "bad_alloc"}})
+    e = error_of(answer) or ""
+    check(st == 422 and "weights" in e and "memory" not in e, f"weights 'bad_alloc': {st} {e!r}")
+
+
+def test_metrics_cap(s):
+    """Finding 5: the metrics profile (pieces x samples) is capped at 200000 rows (400 naming the
+    cap) instead of an answer of 79 MB."""
+    pieces = [{"control_points": [[i, 0], [i + 0.3, 1], [i + 0.6, 1], [i + 1, 0]], "degree": 3} for i in range(2000)]
+    curve = {"format": "fair-curve", "version": 1, "method": "cubic", "closed": False, "pieces": pieces}
+    st, _, answer = s.post("/api/metrics", {"curve": curve, "samples": 256})
+    e = error_of(answer) or ""
+    check(st == 400 and "200000 profile rows" in e and "2000 pieces" in e, f"2000 pieces x 256 samples: {st} {e!r}")
+
+
+def test_session_iterations(s):
+    """Finding 4: a session solve above the program's default cap of 200 Jacobians is not solved
+    in process (the child answers, so no warm re-solve); at 200 it is."""
+    for cap, warm_expected in ((200, True), ("200", True), (100000000, False), ("1e9", False)):
+        data = [list(p) for p in WAVE]
+        sid = f"iterations-{cap}"
+        req = {"method": "kappa", "points": data, "session": sid, "options": {"max-iterations": cap}}
+        s.post("/api/solve", req)
+        data[2] = [data[2][0] + 0.03, data[2][1] - 0.02]
+        st, _, body = s.post("/api/solve", dict(req, points=data))
+        _, out, _, _ = run_program({"method": "kappa", "points": data, "options": {"max-iterations": cap}})
+        a = json.loads(body)
+        check(st == 200 and (a["report"]["warm_started"] is True) == warm_expected
+              and (warm_expected or body == out),
+              f"session with max-iterations {cap!r}: warm_started {a['report']['warm_started']} (want {warm_expected})")
+
+
+def test_abandoned_and_slots(s):
+    """Finding 3: a client that closes its connection mid-solve has its child killed; finding 5:
+    the child runs with RLIMIT_FSIZE 64 MiB and RLIMIT_CORE 0."""
+    big = json.dumps({"method": "kappa", "points": random_points(20000)}).encode()
+    c = socket.create_connection((s.host, s.port))
+    c.sendall(b"POST /api/solve HTTP/1.1\r\nHost: %s:%d\r\nContent-Type: application/json\r\nContent-Length: %d\r\n\r\n"
+              % (s.host.encode(), s.port, len(big)) + big)
+    kids, t0 = [], time.monotonic()
+    while not kids and time.monotonic() - t0 < 5:
+        time.sleep(0.05)
+        kids = children_of(s.proc.pid)
+    limits = ""
+    if kids:
+        try:
+            with open(f"/proc/{kids[0]}/limits") as f:
+                limits = f.read()
+        except OSError:
+            pass
+    fsize = [l for l in limits.splitlines() if l.startswith("Max file size")]
+    core = [l for l in limits.splitlines() if l.startswith("Max core file size")]
+    check(kids and fsize and fsize[0].split()[3] == str(64 << 20) and core and core[0].split()[4] == "0",
+          f"the solver child's limits: {fsize} {core}")
+    c.close()
+    t1 = time.monotonic()
+    while children_of(s.proc.pid) and time.monotonic() - t1 < 5:
+        time.sleep(0.02)
+    gone = time.monotonic() - t1
+    check(kids and not children_of(s.proc.pid) and gone < 1.0,
+          f"the client closed mid-solve: its child killed {gone:.2f} s later (the solve takes ~11 s)")
+    st, _, _ = s.post("/api/solve", {"method": "cubic", "points": OK3})
+    check(st == 200, f"after the abandoned solve the server serves: {st}")
+
+
+def test_solve_slots():
+    """Finding 3: at most one child per core solves at once; the others wait within their solve
+    time and get 503 (busy naming the cap, or the time cap)."""
+    cores = os.cpu_count() or 2
+    slow = Server("--solve-timeout", "2")
+    try:
+        big = {"method": "kappa", "points": random_points(20000)}
+        answers, most = [], [0]
+        def one():
+            answers.append(slow.post("/api/solve", big))
+        threads = [threading.Thread(target=one) for _ in range(cores + 2)]
+        for t in threads:
+            t.start()
+        while any(t.is_alive() for t in threads):
+            most[0] = max(most[0], len(children_of(slow.proc.pid)))
+            time.sleep(0.02)
+        for t in threads:
+            t.join()
+        errors = [error_of(b) or "" for _, _, b in answers]
+        busy = [e for e in errors if f"server busy: {cores} solves run at once" in e]
+        check(all(st == 503 for st, _, _ in answers) and all("2 s" in e for e in errors),
+              f"{cores + 2} solves over the cap at once: all 503 within the 2 s cap ({len(busy)} busy): {sorted(set(errors))}")
+        check(0 < most[0] <= cores, f"at most {cores} solver children at once (seen {most[0]})")
+        st, _, _ = slow.post("/api/solve", {"method": "cubic", "points": OK3})
+        check(st == 200, f"then the server serves: {st}")
+    finally:
+        code, _, _ = slow.stop()
+        check(code == 0, f"slots server: SIGTERM stops it, exit {code}")
+
+
+def test_foreign_kill(s):
+    """Finding 8: a SIGKILL the server did not send (the OOM killer, an operator) is a 500
+    naming it, not the CPU cap."""
+    answers = []
+    t = threading.Thread(target=lambda: answers.append(s.post("/api/solve", {"method": "kappa", "points": random_points(20000)})))
+    t.start()
+    kids, t0 = [], time.monotonic()
+    while not kids and time.monotonic() - t0 < 5:
+        time.sleep(0.05)
+        kids = children_of(s.proc.pid)
+    time.sleep(0.2)  # past the exec
+    for k in kids:
+        os.kill(k, signal.SIGKILL)
+    t.join(30)
+    st, _, body = answers[0] if answers else (0, {}, b"")
+    e = error_of(body) or ""
+    check(kids and st == 500 and "killed (SIGKILL)" in e and "CPU" not in e, f"a foreign SIGKILL of the solver: {st} {e!r}")
+
+
+def test_fifo_and_open():
+    """Finding 11: a FIFO among the --editor-dir files is not served and blocks nothing;
+    finding 14: the --open child does not hold the server's stdout (the server's output ends when
+    it stops, though the 'browser' runs on)."""
+    d = tempfile.mkdtemp(prefix="fair-editor-fifo-")
+    try:
+        with open(os.path.join(d, "index.html"), "w") as f:
+            f.write("<html></html>\n")
+        os.mkfifo(os.path.join(d, "x.js"))
+        bin_dir = os.path.join(d, "bin")
+        os.mkdir(bin_dir)
+        with open(os.path.join(bin_dir, "xdg-open"), "w") as f:
+            f.write('#!/bin/sh\necho $$ > "$0.pid"\nexec sleep 30\n')
+        os.chmod(os.path.join(bin_dir, "xdg-open"), 0o755)
+        srv = Server("--editor-dir", d, "--open", path=bin_dir + ":" + os.environ.get("PATH", "/usr/bin:/bin"))
+        try:
+            t0 = time.monotonic()
+            st, _, body = srv.request("GET", "/x.js", timeout=10)
+            check(st == 404 and time.monotonic() - t0 < 3, f"GET of a FIFO in --editor-dir: {st} after {time.monotonic() - t0:.1f} s")
+            st, _, _ = srv.request("GET", "/")
+            check(st == 200, f"then the page: {st}")
+        finally:
+            t0 = time.monotonic()
+            code, _, _ = srv.stop()
+            check(code == 0 and time.monotonic() - t0 < 10,
+                  f"--open server stops and its output ends although the opened 'browser' runs on ({time.monotonic() - t0:.1f} s)")
+    finally:
+        try:  # the fake browser, by its pid
+            with open(os.path.join(d, "bin", "xdg-open.pid")) as f:
+                os.kill(int(f.read()), signal.SIGKILL)
+        except (OSError, ValueError):
+            pass
+        shutil.rmtree(d, ignore_errors=True)
+
+
 def main():
     s = Server()
     print(f"server on {s.host}:{s.port}")
@@ -600,6 +878,16 @@ def main():
         test_http(s)
         test_connections(s)
         test_timeout()
+        test_depth_cap(s)
+        test_cross_site(s)
+        test_head(s)
+        test_option_values(s)
+        test_metrics_cap(s)
+        test_session_iterations(s)
+        test_abandoned_and_slots(s)
+        test_solve_slots()
+        test_foreign_kill(s)
+        test_fifo_and_open()
         check_idle_connections(*connections)
         test_connection_cap(s)
     finally:

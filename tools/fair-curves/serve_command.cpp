@@ -22,6 +22,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cctype>
@@ -48,6 +49,7 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -157,17 +159,34 @@ class Scratch_directory {
     if (!ok) throw std::runtime_error("cannot write the scratch file " + name);
   }
 
-  /// The contents of the file `name`; false if there is none.
-  bool read(const std::string& name, std::string& text) const {
+  enum Read_result { missing, read_ok, too_big };
+
+  /// The contents of the regular file `name`, at most `cap` bytes (review finding 5: the files
+  /// the child writes count against the output cap as its pipes do).
+  Read_result read(const std::string& name, std::string& text, std::size_t cap) const {
     const std::string file = path_ + "/" + name;
-    const int fd = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-    if (fd < 0) return false;
+    const int fd = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) return missing;
+    struct stat st;
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+      ::close(fd);
+      return missing;
+    }
+    if (static_cast<unsigned long long>(st.st_size) > cap) {
+      ::close(fd);
+      return too_big;
+    }
     text.clear();
+    text.reserve(static_cast<std::size_t>(st.st_size));
     char buffer[65536];
     ssize_t n;
-    while ((n = ::read(fd, buffer, sizeof buffer)) > 0) text.append(buffer, static_cast<std::size_t>(n));
+    while ((n = ::read(fd, buffer, sizeof buffer)) > 0) {
+      text.append(buffer, static_cast<std::size_t>(n));
+      if (text.size() > cap) break;
+    }
     ::close(fd);
-    return n == 0;
+    if (text.size() > cap) return too_big;
+    return n == 0 ? read_ok : missing;
   }
 
  private:
@@ -208,7 +227,8 @@ std::string profile_json(const std::string& csv) {
 class Server {
  public:
   Server(const Serve_options& options, std::vector<Method_info> table)
-      : options_(options), table_(std::move(table)), methods_text_(methods_json(table_).dump(2) + "\n") {
+      : options_(options), table_(std::move(table)), methods_text_(methods_json(table_).dump(2) + "\n"),
+        slots_(solve_slot_count()) {
     limits_.wall_seconds = options.solve_timeout;
   }
 
@@ -260,6 +280,7 @@ class Server {
     std::cout << "fair-curves serve: stopped" << std::endl;
     std::unique_lock<std::mutex> lock(mutex_);
     stopping_ = true;
+    slots_.stop();
     Child_registry::instance().kill_all();
     for (const int fd : open_fds_) ::shutdown(fd, SHUT_RDWR);
     return done_.wait_for(lock, std::chrono::seconds(5), [&] { return active_ == 0; });
@@ -388,7 +409,7 @@ class Server {
             read_all = false;
           } else if (ec) {
             return;  // a half body, then the client went away or idled: nothing to answer
-          } else a = handle(parser.get());
+          } else a = handle(parser.get(), stream.socket().native_handle());
         }
       }
       const bool keep_alive = read_all && !a.close && parser.is_done() && parser.get().keep_alive();
@@ -398,18 +419,31 @@ class Server {
       res.set(http::field::cache_control, "no-store");
       res.set("X-Content-Type-Options", "nosniff");
       // The page works offline: it may load nothing from another origin.
-      res.set("Content-Security-Policy", "default-src 'self' 'unsafe-inline' data: blob:");
+      // No inline script (the page has none): script-src falls back to 'self'; inline styles stay.
+      res.set("Content-Security-Policy", "default-src 'self' data: blob:; style-src 'self' 'unsafe-inline'");
       for (const auto& h : a.headers) res.set(h.first, h.second);
       res.keep_alive(keep_alive);
-      res.body() = std::move(a.body);
+      // HEAD: the head of the GET answer, its Content-Length, and no body (review finding 10:
+      // a body after a HEAD answer desynchronised a kept-alive connection).
+      const bool head = read_all && parser.get().method() == http::verb::head;
+      const std::size_t length = a.body.size();
+      if (!head) res.body() = std::move(a.body);
       res.prepare_payload();
+      if (head) res.content_length(length);
       stream.expires_after(write_timeout);
       ec = await(ioc, [&](auto handler) { http::async_write(stream, res, handler); });
       if (ec || !keep_alive) return;
     }
   }
 
-  Answer handle(const http::request<http::string_body>& req) {
+  static std::string lower(beast::string_view v) {
+    std::string h(v);
+    for (char& c : h) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return h;
+  }
+
+  /// `client_fd`: the request's connection, watched while a child solves (client gone: killed).
+  Answer handle(const http::request<http::string_body>& req, int client_fd) {
     // Bound to loopback, the server answers only requests addressed to loopback: a web page
     // that rebinds its own host name to 127.0.0.1 (DNS rebinding) cannot use the API.
     const auto host = req.find(http::field::host);
@@ -420,10 +454,41 @@ class Server {
         return error_answer(http::status::forbidden, "Host '" + std::string(host->value()) +
                                                          "' is not this server (it answers localhost only)");
     }
+    // Cross-site requests (review finding 2): a browser names the page's origin; only the
+    // server's own page may use it. Bound to loopback, the origin must be http:// and an accepted
+    // Host; otherwise it must be http:// and the request's own Host.
+    const auto origin = req.find(http::field::origin);
+    if (origin != req.end()) {
+      const std::string o = lower(origin->value());
+      const bool own = o.rfind("http://", 0) == 0 &&
+                       (allowed_hosts_.empty() ? host != req.end() && o.substr(7) == lower(host->value())
+                                               : allowed_hosts_.count(o.substr(7)) > 0);
+      if (!own)
+        return error_answer(http::status::forbidden, "Origin '" + std::string(origin->value()) +
+                                                         "' is not this server's page (cross-site requests are refused)");
+    }
+    // Every POST must say Content-Type: application/json: a cross-site page can send that only
+    // after a CORS preflight (OPTIONS), which the server refuses, so its POST never comes.
+    if (req.method() == http::verb::post) {
+      const auto type = req.find(http::field::content_type);
+      std::string t = type == req.end() ? std::string() : lower(type->value());
+      const std::size_t semicolon = t.find(';');
+      if (semicolon != std::string::npos) t.resize(semicolon);
+      while (!t.empty() && (t.back() == ' ' || t.back() == '\t')) t.pop_back();
+      while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.erase(0, 1);
+      if (t != "application/json") {
+        Answer a = error_answer(http::status::unsupported_media_type,
+                                "Content-Type must be application/json (got " +
+                                    (type == req.end() ? std::string("none") : "'" + std::string(type->value()) + "'") + ")");
+        a.headers.emplace_back("Accept", "application/json");
+        return a;
+      }
+    }
     std::string path(req.target());
     const std::size_t query = path.find('?');
     if (query != std::string::npos) path.resize(query);
-    const bool get = req.method() == http::verb::get, post = req.method() == http::verb::post;
+    const bool get = req.method() == http::verb::get || req.method() == http::verb::head,
+               post = req.method() == http::verb::post;
     auto wrong_method = [&](const char* allow) {
       Answer a = error_answer(http::status::method_not_allowed,
                               std::string(req.method_string()) + " " + path + ": method not allowed (use " + allow + ")");
@@ -432,7 +497,7 @@ class Server {
     };
     try {
       if (path == "/api/methods") {
-        if (!get) return wrong_method("GET");
+        if (!get) return wrong_method("GET, HEAD");
         Answer a;
         a.body = methods_text_;
         return a;
@@ -443,7 +508,7 @@ class Server {
         // it from the network's and the page's (the browser test's drag round trip).
         const auto start = std::chrono::steady_clock::now();
         const nlohmann::json body = parse_body(req.body());
-        Answer a = path == "/api/metrics" ? metrics(body) : solve(body, path == "/api/export");
+        Answer a = path == "/api/metrics" ? metrics(body, client_fd) : solve(body, path == "/api/export", client_fd);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         char timing[64];
         std::snprintf(timing, sizeof timing, "app;dur=%.3f", ms);
@@ -451,7 +516,7 @@ class Server {
         return a;
       }
       if (path.rfind("/api/", 0) == 0 || path == "/api") return error_answer(http::status::not_found, "no such API endpoint: " + path);
-      if (!get) return wrong_method("GET");
+      if (!get) return wrong_method("GET, HEAD");
       const std::string name = path == "/" ? "index.html" : path.substr(1);
       Answer a;
       if (!find_asset(options_.editor_dir, name, a.body))
@@ -467,10 +532,11 @@ class Server {
     }
   }
 
-  Answer solve(const nlohmann::json& body, bool export_request) {
+  Answer solve(const nlohmann::json& body, bool export_request, int client_fd) {
     const Solve_request r = parse_solve_request(body, table_, export_request);
     if (!export_request && Kappa_sessions::handles(r)) {
-      Kappa_session_answer s = sessions_.solve(r);
+      Kappa_session_answer s = sessions_.solve(r, slots_, deadline_from_now());
+      if (s.busy) return busy_answer();
       if (s.answered) {
         Answer a;
         a.body = std::move(s.json);
@@ -478,7 +544,7 @@ class Server {
       }
     }
     const Child_job job = solve_job(r);
-    Answer a = run_job(job);
+    Answer a = run_job(job, client_fd);
     if (a.status == http::status::ok && export_request) {
       const std::string ext = r.format == "svg-path" ? "txt" : r.format;
       a.content_type = r.format == "dxf" ? "application/dxf" : r.format == "svg" ? "image/svg+xml"
@@ -488,36 +554,72 @@ class Server {
     return a;
   }
 
-  Answer metrics(const nlohmann::json& body) {
+  Answer metrics(const nlohmann::json& body, int client_fd) {
     const Child_job job = metrics_job(body);
-    return run_job(job, "profile.csv");
+    return run_job(job, client_fd, "profile.csv");
+  }
+
+  /// Solves at once: one per core (at least 1; 2 when the number is unknown).
+  static int solve_slot_count() {
+    const unsigned n = std::thread::hardware_concurrency();
+    return n ? static_cast<int>(n) : 2;
+  }
+
+  std::chrono::steady_clock::time_point deadline_from_now() const {
+    return std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                  std::chrono::duration<double>(limits_.wall_seconds));
+  }
+
+  Answer busy_answer() const {
+    return error_answer(http::status::service_unavailable,
+                        "server busy: " + std::to_string(slots_.count()) +
+                            " solves run at once (one per core) and none ended within the solve cap of " +
+                            seconds_text(limits_.wall_seconds) + " s");
+  }
+
+  Answer output_cap_answer() const {
+    return error_answer(http::status::service_unavailable,
+                        "the solve wrote more than the cap of " + std::to_string(limits_.max_output >> 20) + " MiB");
   }
 
   /// Runs a job in a child in its own scratch directory; `profile`: the metrics' profile file,
   /// added to the JSON as "profile".
-  Answer run_job(const Child_job& job, const std::string& profile = "") {
+  Answer run_job(const Child_job& job, int client_fd, const std::string& profile = "") {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       if (stopping_) return error_answer(http::status::service_unavailable, "server busy: the server is stopping");
     }
+    // A solve slot first; the wait counts against the solve's wall-clock cap.
+    const auto deadline = deadline_from_now();
+    const Solve_slot slot(slots_, deadline);
+    if (!slot) return busy_answer();
+    Child_limits limits = limits_;
+    limits.wall_seconds = std::max(0.01, std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count());
     const Scratch_directory scratch;
     for (const auto& f : job.files) scratch.write(f.first, f.second);
-    const Child_result c = run_child("/proc/self/exe", job.args, scratch.path(), limits_);
+    const Child_result c = run_child("/proc/self/exe", job.args, scratch.path(), limits, client_fd);
+    if (c.client_gone) {  // nobody to answer: the connection is closed after this
+      Answer gone = error_answer(http::status::service_unavailable, "the client closed the connection");
+      gone.close = true;
+      return gone;
+    }
     if (!c.started) return error_answer(http::status::service_unavailable, "server busy: " + c.error);
     if (c.timed_out)
       return error_answer(http::status::service_unavailable,
                           "the solve did not finish within the cap of " + seconds_text(limits_.wall_seconds) + " s");
-    if (c.output_overflow)
-      return error_answer(http::status::service_unavailable,
-                          "the solve wrote more than the cap of " + std::to_string(limits_.max_output >> 20) + " MiB");
-    if (c.signal == SIGXCPU || (c.signal == SIGKILL && !c.timed_out))
+    if (c.output_overflow || c.signal == SIGXFSZ) return output_cap_answer();
+    if (c.signal == SIGXCPU)
       return error_answer(http::status::service_unavailable, "the solve exceeded the CPU time cap of " +
                                                                  seconds_text(limits_.wall_seconds) + " s");
+    // A SIGKILL the server did not send (the OOM killer, an operator): said as it is (finding 8).
+    if (c.signal == SIGKILL)
+      return error_answer(http::status::internal_server_error, "the solver process was killed (SIGKILL)");
     if (c.signal)
       return error_answer(http::status::internal_server_error,
                           "the solver process crashed (" + signal_name(c.signal) + ")");
     if (c.exit_code == 1 || c.exit_code == 2) {
-      if (c.err.find("bad_alloc") != std::string::npos)
+      // Exactly what main.cpp writes for std::bad_alloc (a substring could be the user's text).
+      if (c.err == "fair-curves: error: std::bad_alloc\n")
         return error_answer(http::status::service_unavailable, "the solve exceeded the memory cap of " +
                                                                    std::to_string(limits_.address_space >> 30) + " GiB");
       return error_answer(http::status::unprocessable_entity, program_message(c.err));
@@ -527,17 +629,24 @@ class Server {
                           "the solver process failed (exit code " + std::to_string(c.exit_code) + "): " + program_message(c.err));
     Answer a;
     if (job.answer_file.empty()) a.body = c.out;
-    else if (!scratch.read(job.answer_file, a.body))
-      return error_answer(http::status::internal_server_error, "the program wrote no " + job.answer_file);
+    else {
+      const auto got = scratch.read(job.answer_file, a.body, limits_.max_output);
+      if (got == Scratch_directory::too_big) return output_cap_answer();
+      if (got != Scratch_directory::read_ok)
+        return error_answer(http::status::internal_server_error, "the program wrote no " + job.answer_file);
+    }
     if (!profile.empty()) {
       std::string csv;
       const std::size_t end = a.body.rfind('}');
-      if (!scratch.read(profile, csv) || end == std::string::npos)
+      const auto got = scratch.read(profile, csv, limits_.max_output - std::min(limits_.max_output, a.body.size()));
+      if (got == Scratch_directory::too_big) return output_cap_answer();
+      if (got != Scratch_directory::read_ok || end == std::string::npos)
         return error_answer(http::status::internal_server_error, "the metrics command wrote no profile");
       a.body.insert(end, ",\n  \"profile\": " + profile_json(csv) + "\n");
       // keep the closing brace on its own line as the program writes it
       const std::size_t brace = a.body.rfind('}');
       if (brace > 0 && a.body[brace - 1] == '\n' && brace > 1 && a.body[brace - 2] == '\n') a.body.erase(brace - 1, 1);
+      if (a.body.size() > limits_.max_output) return output_cap_answer();
     }
     return a;
   }
@@ -559,6 +668,15 @@ class Server {
     std::vector<char*> argv{&args[0][0], &args[1][0], nullptr};
     const pid_t pid = ::fork();
     if (pid == 0) {
+      // The browser it starts must not hold the server's stdout (a harness waiting for its end
+      // would hang) nor its session (review finding 14).
+      const int null_fd = ::open("/dev/null", O_RDWR);
+      if (null_fd >= 0) {
+        ::dup2(null_fd, 0);
+        ::dup2(null_fd, 1);
+        ::dup2(null_fd, 2);
+      }
+      ::setsid();
       ::execv(found.c_str(), argv.data());
       ::_exit(127);
     }
@@ -570,6 +688,7 @@ class Server {
   std::vector<Method_info> table_;
   std::string methods_text_;
   Child_limits limits_;
+  Solve_slots slots_;
   Kappa_sessions sessions_;
   std::mutex mutex_;
   std::condition_variable done_;
@@ -610,8 +729,9 @@ void register_serve_command(CLI::App& app) {
   sub->add_option("--solve-timeout", options->solve_timeout, "wall-clock cap of one solve in seconds (default 20)")
       ->check(CLI::Range(0.1, 3600.0));
   sub->footer("Caps: request body 4 MiB, request head 8 KiB, 20000 points, solve time --solve-timeout (20 s), "
-              "solver address space 4 GiB, 32 connections at once (more: 503), a connection idle for 10 s is "
-              "closed, 64 kappa sessions of at most 2000 points. The first line on stdout is "
+              "solver address space 4 GiB, child output and files 64 MiB, one solve per core at once (more wait within the solve time), 32 connections at once (more: 503), a connection idle for 10 s is "
+              "closed, 64 kappa sessions of at most 2000 points and max-iterations 200, JSON nested at most 64 levels. Bound to loopback, "
+              "only requests for localhost and without a foreign Origin are answered; every POST needs Content-Type: application/json. The first line on stdout is "
               "\"fair-curves serve: listening on http://HOST:PORT/\". SIGINT or SIGTERM stop the server.\n");
   sub->callback([options] { run_serve(*options); });
 }

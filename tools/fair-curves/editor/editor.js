@@ -22,7 +22,10 @@ const HIDDEN_OPTIONS = new Set(['closed', 'output', 'svg', 'dxf', 'svg-path', 'p
 const MINIMUM_POINTS = { kappa: 3, csr: 3 };
 
 const params = new URLSearchParams(location.search);
-const session = 'page-' + Math.random().toString(36).slice(2, 12);
+// The session id is a capability (whoever knows it can use the session): a CSPRNG's 122 bits
+// (review s16 finding 13); 127.0.0.1 and localhost are secure contexts, where randomUUID exists.
+const session = 'page-' + (globalThis.crypto && crypto.randomUUID ? crypto.randomUUID()
+  : Array.from(crypto.getRandomValues(new Uint32Array(4)), (v) => v.toString(36)).join(''));
 
 const state = {
   points: [],            // {x, y, corner: bool, tangent: bool, lambda: number|null}

@@ -17,6 +17,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <condition_variable>
 #include <cstddef>
 #include <cstring>
 #include <mutex>
@@ -40,7 +41,9 @@ namespace serve {
 struct Child_limits {
   double wall_seconds = 20;                          ///< SIGKILL after this wall-clock time
   unsigned long long address_space = 4ull << 30;     ///< RLIMIT_AS, bytes
-  std::size_t max_output = std::size_t(64) << 20;    ///< stdout + stderr captured at most; more: killed
+  /// stdout + stderr captured at most (more: killed); also RLIMIT_FSIZE of every file the child
+  /// writes and the cap on what the server reads back from its scratch directory.
+  std::size_t max_output = std::size_t(64) << 20;
 };
 
 /// What became of a child.
@@ -50,6 +53,7 @@ struct Child_result {
   int signal = 0;             ///< the signal that ended it (SIGKILL after a timeout too)
   bool timed_out = false;     ///< killed at the wall-clock deadline
   bool output_overflow = false;  ///< killed because it wrote more than max_output
+  bool client_gone = false;   ///< killed because the client closed its connection (no answer)
   std::string out, err;       ///< what it wrote on stdout and stderr
   std::string error;          ///< why it could not be started
 };
@@ -78,6 +82,63 @@ class Child_registry {
  private:
   std::mutex mutex_;
   std::set<pid_t> pids_;
+};
+
+/// A counting semaphore of the solves that run at once (children and fresh in-process kappa
+/// solves; review finding 3): more solves than cores only make every one of them slower, up to
+/// the wall-clock cap. A solve waits for a slot until its own deadline (the wait counts against
+/// the solve's time cap).
+class Solve_slots {
+ public:
+  explicit Solve_slots(int count) : count_(count), free_(count) {}
+  int count() const { return count_; }
+  /// A slot, waiting until `deadline`; false when none became free in time or the server stops.
+  bool acquire(std::chrono::steady_clock::time_point deadline) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (!cv_.wait_until(lock, deadline, [&] { return free_ > 0 || stopping_; })) return false;
+    if (stopping_) return false;
+    --free_;
+    return true;
+  }
+  void release() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      ++free_;
+    }
+    cv_.notify_one();
+  }
+  /// Every waiting solve gives up (the server stops).
+  void stop() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stopping_ = true;
+    }
+    cv_.notify_all();
+  }
+
+ private:
+  const int count_;
+  int free_;
+  bool stopping_ = false;
+  std::mutex mutex_;
+  std::condition_variable cv_;
+};
+
+/// A slot of Solve_slots held for a scope.
+class Solve_slot {
+ public:
+  Solve_slot(Solve_slots& slots, std::chrono::steady_clock::time_point deadline)
+      : slots_(slots), held_(slots.acquire(deadline)) {}
+  ~Solve_slot() {
+    if (held_) slots_.release();
+  }
+  Solve_slot(const Solve_slot&) = delete;
+  Solve_slot& operator=(const Solve_slot&) = delete;
+  explicit operator bool() const { return held_; }
+
+ private:
+  Solve_slots& slots_;
+  bool held_;
 };
 
 namespace detail {
@@ -111,9 +172,19 @@ inline void close_fd(int& fd) {
   struct rlimit cpu;
   cpu.rlim_cur = static_cast<rlim_t>(limits.wall_seconds) + 1;
   cpu.rlim_max = cpu.rlim_cur + 1;
-  if (::setrlimit(RLIMIT_AS, &as) != 0 || ::setrlimit(RLIMIT_CPU, &cpu) != 0) ::_exit(127);
+  // RLIMIT_FSIZE: no file of the child (a --profile CSV, an export) beyond the output cap
+  // (SIGXFSZ); RLIMIT_CORE 0: a crashing child writes no core into the scratch directory
+  // (review finding 5).
+  struct rlimit fsize;
+  fsize.rlim_cur = fsize.rlim_max = static_cast<rlim_t>(limits.max_output);
+  struct rlimit core;
+  core.rlim_cur = core.rlim_max = 0;
+  if (::setrlimit(RLIMIT_AS, &as) != 0 || ::setrlimit(RLIMIT_CPU, &cpu) != 0 || ::setrlimit(RLIMIT_FSIZE, &fsize) != 0 ||
+      ::setrlimit(RLIMIT_CORE, &core) != 0)
+    ::_exit(127);
   // Default dispositions for the child (the server ignores SIGPIPE; exec keeps ignored signals).
   ::signal(SIGPIPE, SIG_DFL);
+  ::signal(SIGXFSZ, SIG_DFL);
   ::execv(program, argv);
   ::_exit(127);
 }
@@ -121,8 +192,11 @@ inline void close_fd(int& fd) {
 } // namespace detail
 
 /// Runs `program` with `args` (args[0] is the program's name) in `cwd` under `limits`.
+/// `client_fd` (>= 0): the connection of the request; when its peer closes it (POLLRDHUP,
+/// POLLHUP, POLLERR; not POLLIN, which a pipelined next request raises) the child is killed and
+/// `client_gone` set, so that an abandoned request does not solve on (review finding 3).
 inline Child_result run_child(const std::string& program, const std::vector<std::string>& args,
-                              const std::string& cwd, const Child_limits& limits) {
+                              const std::string& cwd, const Child_limits& limits, int client_fd = -1) {
   Child_result r;
   // Everything the child needs is made before the fork.
   std::vector<std::string> arg_copy = args;
@@ -145,14 +219,37 @@ inline Child_result run_child(const std::string& program, const std::vector<std:
   }
   if (pid == 0) detail::exec_child(program.c_str(), argv.data(), cwd.c_str(), out_pipe[1], err_pipe[1], limits);
   r.started = true;
-  Child_registry::instance().add(pid);
-  detail::close_fd(out_pipe[1]);
-  detail::close_fd(err_pipe[1]);
   int fds[2] = {out_pipe[0], err_pipe[0]};
+  bool killed = false, reaped = false;
+  // From here on an exception (bad_alloc of a sink or of the registry) must not leave the child
+  // running unreaped (review finding 12): the guard kills, reaps and unregisters it.
+  struct Guard {
+    pid_t pid;
+    int* fds;
+    int* write_ends;
+    bool& reaped;
+    ~Guard() {
+      for (int k = 0; k < 2; ++k) {
+        detail::close_fd(fds[k]);
+        detail::close_fd(write_ends[k]);
+      }
+      if (!reaped) {
+        ::kill(pid, SIGKILL);
+        int status;
+        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+      }
+      Child_registry::instance().remove(pid);
+    }
+  };
+  int write_ends[2] = {out_pipe[1], err_pipe[1]};
+  const Guard guard{pid, fds, write_ends, reaped};
+  Child_registry::instance().add(pid);
+  detail::close_fd(write_ends[0]);
+  detail::close_fd(write_ends[1]);
   std::string* sinks[2] = {&r.out, &r.err};
   const auto deadline = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                     std::chrono::duration<double>(limits.wall_seconds));
-  bool killed = false;
   auto kill_child = [&]() {
     if (!killed) ::kill(pid, SIGKILL);
     killed = true;
@@ -166,9 +263,9 @@ inline Child_result run_child(const std::string& program, const std::vector<std:
       break;
     }
     const long long ms = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count() + 1;
-    pollfd p[2];
+    pollfd p[3];
     nfds_t n = 0;
-    int which[2];
+    int which[3];
     for (int k = 0; k < 2; ++k)
       if (fds[k] >= 0) {
         p[n].fd = fds[k];
@@ -176,6 +273,12 @@ inline Child_result run_child(const std::string& program, const std::vector<std:
         p[n].revents = 0;
         which[n++] = k;
       }
+    if (client_fd >= 0) {
+      p[n].fd = client_fd;
+      p[n].events = POLLRDHUP;
+      p[n].revents = 0;
+      which[n++] = -1;
+    }
     const int ready = ::poll(p, n, static_cast<int>(ms > 1000000 ? 1000000 : ms));
     if (ready < 0) {
       if (errno == EINTR) continue;
@@ -184,6 +287,13 @@ inline Child_result run_child(const std::string& program, const std::vector<std:
     }
     for (nfds_t i = 0; i < n; ++i) {
       if (!p[i].revents) continue;
+      if (which[i] < 0) {
+        if (p[i].revents & (POLLRDHUP | POLLHUP | POLLERR | POLLNVAL)) {
+          r.client_gone = true;
+          kill_child();
+        }
+        continue;
+      }
       const int k = which[i];
       const ssize_t got = ::read(fds[k], buffer, sizeof buffer);
       if (got > 0) {
@@ -196,7 +306,7 @@ inline Child_result run_child(const std::string& program, const std::vector<std:
         detail::close_fd(fds[k]);
       }
     }
-    if (r.output_overflow) break;
+    if (r.output_overflow || r.client_gone) break;
   }
   detail::close_fd(fds[0]);
   detail::close_fd(fds[1]);
@@ -205,8 +315,14 @@ inline Child_result run_child(const std::string& program, const std::vector<std:
   int status = 0;
   for (;;) {
     const pid_t w = ::waitpid(pid, &status, killed ? 0 : WNOHANG);
-    if (w == pid) break;
-    if (w < 0 && errno != EINTR) break;
+    if (w == pid) {
+      reaped = true;
+      break;
+    }
+    if (w < 0 && errno != EINTR) {
+      reaped = true;  // not ours to wait for any more
+      break;
+    }
     if (w == 0) {
       if (std::chrono::steady_clock::now() >= deadline) {
         r.timed_out = true;
@@ -214,7 +330,6 @@ inline Child_result run_child(const std::string& program, const std::vector<std:
       } else ::usleep(100);  // the child is exiting (its pipes are closed): a short wait
     }
   }
-  Child_registry::instance().remove(pid);
   if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
   else if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
   return r;

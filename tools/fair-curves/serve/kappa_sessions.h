@@ -21,10 +21,13 @@
 #define FAIR_CURVES_SERVE_KAPPA_SESSIONS_H
 
 #include "../kappa_session.h"
+#include "child_process.h"
 #include "request.h"
 
 #include <array>
+#include <chrono>
 #include <cstddef>
+#include <cstdlib>
 #include <list>
 #include <map>
 #include <memory>
@@ -37,11 +40,17 @@ namespace serve {
 
 constexpr std::size_t max_sessions = 64;            ///< least recently used evicted beyond
 constexpr std::size_t max_session_points = 2000;    ///< more: solved by the child, no session
+/// The kappa command's default cap on the Jacobians of a solve. A session solve runs in the
+/// server's own process, without the child's time and memory caps, so a request asking for more
+/// is solved by the child instead (review finding 4): an in-process solve is bounded by
+/// max_session_points points x this many Jacobians.
+constexpr double max_session_iterations = 200;
 
 /// The answer of the in-process path.
 struct Kappa_session_answer {
   bool answered = false;  ///< false: run the command in a child instead
   bool warm = false;      ///< solved by move_point
+  bool busy = false;      ///< a fresh solve found no free solve slot before the deadline
   std::string json;
 };
 
@@ -51,13 +60,29 @@ class Kappa_sessions {
   /// and only the options handled here.
   static bool handles(const Solve_request& r) {
     if (r.method->name != "kappa" || r.session.empty() || r.points.size() > max_session_points) return false;
-    for (auto it = r.options.begin(); it != r.options.end(); ++it)
+    for (auto it = r.options.begin(); it != r.options.end(); ++it) {
       if (it.key() != "weights" && it.key() != "tension" && it.key() != "clamp" && it.key() != "max-iterations")
         return false;
+      if (it.key() == "max-iterations") {
+        // Above the default cap (or not a number): the child, with its caps, and its message.
+        const nlohmann::json& v = it.value();
+        double n = 0;
+        if (v.is_number()) n = v.get<double>();
+        else if (v.is_string()) {
+          const std::string& t = v.get_ref<const std::string&>();
+          char* end = nullptr;
+          n = std::strtod(t.c_str(), &end);
+          if (t.empty() || *end != '\0') return false;
+        } else return false;
+        if (!(n <= max_session_iterations)) return false;
+      }
+    }
     return true;
   }
 
-  Kappa_session_answer solve(const Solve_request& r) {
+  /// Solves a session request; a fresh (not warm) solve first takes one of `slots` (waiting until
+  /// `deadline`), since it may take seconds of a core (2000 points: 1.4-1.9 s).
+  Kappa_session_answer solve(const Solve_request& r, Solve_slots& slots, std::chrono::steady_clock::time_point deadline) {
     Kappa_session_answer a;
     if (!handles(r)) return a;
     // The command's options and point file, exactly as the child would get them.
@@ -96,6 +121,11 @@ class Kappa_sessions {
         a.warm = true;
       } else {
         s->curve.reset();
+        const Solve_slot slot(slots, deadline);
+        if (!slot) {
+          a.busy = true;
+          return a;
+        }
         s->curve.reset(new kappa::Kappa_session_curve(o, points, tension_text));
       }
       s->points = r.points;

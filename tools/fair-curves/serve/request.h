@@ -32,6 +32,19 @@ namespace serve {
 /// Caps of a request (doc/editor_api.md, "Caps").
 constexpr std::size_t max_points = 20000;
 constexpr std::size_t max_text_option = 4096;  ///< characters of one option value
+/// Nesting of arrays and objects in a request body: the API needs 6 levels (a metrics request's
+/// curve); anything deeper is refused while parsing, before a recursive function (the DOM's
+/// dump(), the metrics command's reader, which itself refuses more than 64) can overflow the
+/// stack of a connection's thread (review finding 1: 100 000 levels killed the server).
+constexpr int max_json_depth = 64;
+/// Arrays and objects in a request body. Each costs the parsed DOM ~60-80 bytes of heap for 3
+/// bytes of text (`[],`): a 4 MiB body of them was ~300 MB (review finding 7). The largest
+/// curve a metrics request can carry within the 4 MiB body cap has far fewer (a 20 000-piece
+/// cubic spline: 160 000 in 10.5 MB).
+constexpr long long max_json_containers = 300000;
+/// Rows of the metrics profile (pieces x samples): the profile is written to a file and read
+/// back into the answer; 2000 pieces x 256 samples made a 79 MB answer (review finding 5).
+constexpr long long max_profile_rows = 200000;
 
 /// A request refused before anything runs: HTTP `status` (400) and the message of {"error"}.
 struct Request_error : std::runtime_error {
@@ -150,6 +163,10 @@ inline std::string option_text(const nlohmann::json& v, const std::string& path)
   }
   if (!v.is_string()) throw Request_error(path + ": expected a string or a number, got " + type_name(v));
   const std::string& s = v.get_ref<const std::string&>();
+  // An empty value would make `--name=` and the command line parser take the next argument as
+  // the value (review finding 9): refused, as a value of only white space.
+  if (s.find_first_not_of(" \t\r\n\f\v") == std::string::npos)
+    throw Request_error(path + ": an empty value (give the option a value, or leave it out)");
   if (s.find('\0') != std::string::npos) throw Request_error(path + ": the text holds a NUL character");
   if (s.size() > max_text_option)
     throw Request_error(path + ": longer than " + std::to_string(max_text_option) + " characters");
@@ -250,8 +267,23 @@ class Json_path_tracker : public nlohmann::json_sax<nlohmann::json> {
 /// Parses JSON text (the body), refusing what is not JSON with the parser's message and the
 /// path where it stopped; a number beyond the range of a double (1e400) is refused so too.
 inline nlohmann::json parse_body(const std::string& body) {
+  // The parser itself is iterative; the callback sees the depth of every array and object as it
+  // starts (the number of containers around it) and stops the parse beyond max_json_depth.
+  long long containers = 0;
+  const nlohmann::json::parser_callback_t depth_cap = [&containers](int depth, nlohmann::json::parse_event_t event,
+                                                                    nlohmann::json&) {
+    if (event == nlohmann::json::parse_event_t::object_start || event == nlohmann::json::parse_event_t::array_start) {
+      if (depth >= max_json_depth)
+        throw Request_error("the JSON is nested more than " + std::to_string(max_json_depth) +
+                            " levels deep (the cap of the API)");
+      if (++containers > max_json_containers)
+        throw Request_error("the JSON has more than " + std::to_string(max_json_containers) +
+                            " arrays and objects (the cap of the API)");
+    }
+    return true;
+  };
   try {
-    return nlohmann::json::parse(body);
+    return nlohmann::json::parse(body, depth_cap);
   } catch (const nlohmann::json::exception& e) {
     std::string what = e.what();
     const std::size_t bracket = what.find("] ");
@@ -455,6 +487,11 @@ inline Child_job metrics_job(const nlohmann::json& j) {
       throw Request_error("samples: expected an integer from 1 to 256");
     samples = s.get<long long>();
   }
+  const nlohmann::json& curve = j["curve"];
+  if (curve.contains("pieces") && curve["pieces"].is_array() &&
+      static_cast<long long>(curve["pieces"].size()) * samples > max_profile_rows)
+    throw Request_error("curve: " + std::to_string(curve["pieces"].size()) + " pieces x " + std::to_string(samples) +
+                        " samples is over the cap of " + std::to_string(max_profile_rows) + " profile rows");
   Child_job job;
   job.args = {"fair-curves", "metrics", "curve.json", "-o", "-", "--profile=profile.csv", "--samples=" + std::to_string(samples)};
   job.files.emplace_back("curve.json", j["curve"].dump());

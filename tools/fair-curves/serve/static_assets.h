@@ -74,7 +74,9 @@ inline bool find_asset(const std::string& editor_dir, const std::string& name, s
     return false;
   }
   const std::string path = editor_dir + "/" + name;
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  // O_NONBLOCK: opening a FIFO (or a device) named like a page file must not block the thread
+  // (review finding 11); only a regular file is then served, and a regular file ignores the flag.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) return false;
   struct stat st;
   bool ok = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && static_cast<std::size_t>(st.st_size) <= max_asset_size;
