@@ -98,7 +98,7 @@ public:
   /// The polygon index of each input point.
   const std::vector<std::size_t>& interpolation_indices() const { return interpolation_indices_; }
   /// The polygon vertices of the CORNER constraints (ascending): where the curve is only G0, so
-  /// that spline() is fit_cubic_spline_runs(polygon(), is_closed(), corner_vertices()).
+  /// that spline() has one C2 run between consecutive corners (fit_smoothing_spline_runs).
   std::vector<std::size_t> corner_vertices() const {
     std::vector<std::size_t> v;
     for (const Point_constraint& c : options_.constraints)

@@ -84,6 +84,7 @@ struct Measured {
   double extent_ratio = 0, distance = 0, resolution = 0;
   bool tolerance_met = true;  // the smoothing spline reached its distance (else: the interpolant of every vertex)
   std::size_t inflections = 0, extrema = 0, self_intersections = 0, input_self_intersections = 0;
+  std::size_t polygon_sign_changes = 0;  // of the discrete curvature (zeros skipped): the polygon's inflections
   fair::Optimal_curve_status status = fair::Optimal_curve_status::CAPPED;
 };
 
@@ -102,6 +103,12 @@ Measured measure(const Real_curve& c, double lambda) {
   m.resolution = fair::internal::optimal::rotation_invariant_extent(v) / o.resolution;
   m.distance = curve.spline().max_distance;
   m.tolerance_met = curve.spline_smoothing().tolerance_met;
+  double previous = 0;
+  for (double k : curve.curvatures())
+    if (k != 0) {
+      m.polygon_sign_changes += previous * k < 0;
+      previous = k;
+    }
   m.inflections = fair::inflections(curve.pieces()).count();
   m.extrema = fair::curvature_extrema(curve.pieces()).count();
   return m;
@@ -148,7 +155,7 @@ TEST(OptimalRealData, HandDrawnCurvesAreFairAtTheDefaultsAndAtLambdaHalf) {
         << "# self_intersections, input_self_intersections (GCC 12 -O3)\n";
   }
   for (const auto& setting : settings) {
-    std::vector<double> inflections, extrema;
+    std::vector<double> inflections, extrema, polygon_inflections;
     double worst_inflections = 0, worst_extrema = 0, worst_distance = 0;
     int beyond_resolution = 0, interpolants = 0;
     for (const Real_curve& c : curves) {
@@ -162,6 +169,7 @@ TEST(OptimalRealData, HandDrawnCurvesAreFairAtTheDefaultsAndAtLambdaHalf) {
       if (c.name != "greenland") {
         inflections.push_back(static_cast<double>(m.inflections) / n);
         extrema.push_back(static_cast<double>(m.extrema) / n);
+        polygon_inflections.push_back(static_cast<double>(m.polygon_sign_changes) / n);
         worst_inflections = std::max(worst_inflections, inflections.back());
         worst_extrema = std::max(worst_extrema, extrema.back());
         worst_distance = std::max(worst_distance, m.distance / m.resolution);
@@ -186,9 +194,11 @@ TEST(OptimalRealData, HandDrawnCurvesAreFairAtTheDefaultsAndAtLambdaHalf) {
     }
     // The summary of doc/optimal_curves.md's table (per input point over the 117 strokes).
     std::printf("%s: inflections median %.3f max %.3f, extrema median %.3f max %.3f, distance / resolution max %.3f "
-                "(%d strokes beyond 1; %d kept the interpolant of every vertex)\n",
+                "(%d strokes beyond 1; %d kept the interpolant of every vertex); polygon's discrete curvature sign "
+                "changes per point median %.3f max %.3f\n",
                 setting.name, median(inflections), worst_inflections, median(extrema), worst_extrema, worst_distance,
-                beyond_resolution, interpolants);
+                beyond_resolution, interpolants, median(polygon_inflections),
+                *std::max_element(polygon_inflections.begin(), polygon_inflections.end()));
     EXPECT_LE(median(inflections), setting.inflections) << setting.name;
     EXPECT_LE(worst_inflections, 1.5) << setting.name;  // the max (reached by the smoothing spline)
     EXPECT_LE(median(extrema), setting.extrema) << setting.name;
