@@ -57,36 +57,6 @@
 
 namespace fair {
 
-namespace internal {
-namespace spline {
-/// The Cubic_spline_2 of the breakpoints t and control points `control` computed on the polygon
-/// divided by `scale` (fit_scale), mapped back.
-template <class K>
-Cubic_spline_2<K> spline_from_control(const std::vector<double>& t, const std::vector<Vec2>& control, bool closed,
-                                      double scale, const char* fn) {
-  typedef typename K::FT FT;
-  // The breakpoints are chord lengths (t * scale) unless the spline's own B-spline-to-Bezier
-  // conversion (eq. 2 of Cubic_spline_2: control points times sums of knot intervals) would
-  // overflow: then they stay chord lengths / scale, the same curve reparametrised by a power of
-  // two (polygons beyond ~1e150, issue 29 #20).
-  double control_bound = 0;
-  for (const Vec2& v : control) control_bound = std::max({control_bound, std::abs(v[0]), std::abs(v[1])});
-  const double knot_bound = std::max(std::abs(t.front()), std::abs(t.back()));
-  const double knot_scale =
-      16 * (knot_bound * scale) * (control_bound * scale) <= std::numeric_limits<double>::max() / 64 ? scale : 1;
-  std::vector<FT> breakpoints;
-  breakpoints.reserve(t.size());
-  for (double x : t) breakpoints.push_back(FT(x * knot_scale));
-  std::vector<typename K::Point_2> points;
-  points.reserve(control.size());
-  for (const Vec2& v : control) points.push_back(to_point<K>(Vec2{{v[0] * scale, v[1] * scale}}));
-  Cubic_spline_2<K> spline(std::move(breakpoints), std::move(points), closed);
-  spline.check_finite_pieces(fn);
-  return spline;
-}
-} // namespace spline
-} // namespace internal
-
 /// A C2 cubic spline through every vertex and its measured distance to the polygon.
 template <class K>
 struct Polygon_spline_fit {
