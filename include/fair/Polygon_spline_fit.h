@@ -204,8 +204,9 @@ struct Polygon_smoothing_fit {
 
 /// A C2 cubic smoothing spline through `polygon`, run by run between the `corners` (G0 there, as
 /// fit_cubic_spline_runs), with a knot at every vertex (chordal breakpoints) that passes exactly
-/// through the `interpolated` vertices (indices, any order, repeats ignored), the corners and the
-/// two ends of an open polygon, and elsewhere minimises
+/// through the `interpolated` vertices (indices, any order, repeats ignored), the corners and their
+/// two neighbours (so each run leaves a corner along its polygon edge), the two ends of an open
+/// polygon, and elsewhere minimises
 ///   int |c''|^2 dt + sum_k hbar^3 |c(t_k) - v_k|^2 / (sigma a_k^2)   (Reinsch; a_k the mean
 /// interval at vertex k, hbar the run's mean: the fit follows the polygon where it is fine),
 /// with the largest sigma (bisection on log sigma, at most 40 solves per run) whose distance to the
@@ -239,7 +240,14 @@ Polygon_smoothing_fit<K> fit_smoothing_spline_runs(const std::vector<typename K:
                   corners.end());
   std::vector<bool> hard(n, false);
   for (std::size_t c : interpolated) hard[c] = true;
-  for (std::size_t c : corners) hard[c] = true;
+  // At a corner the run's first edge is kept too (its other vertex interpolated): the optimal
+  // polygon's edge at a CORNER lies on the constraint's tangent ray, and with the natural end the
+  // run leaves the corner along it (doc/optimal_curves.md, "The smoothing spline").
+  for (std::size_t c : corners) {
+    hard[c] = true;
+    hard[(c + 1) % n] = true;
+    hard[(c + n - 1) % n] = true;
+  }
   if (!closed) hard.front() = hard.back() = true;
   std::vector<std::size_t> ends;  // run r from ends[r] to ends[r + 1]
   const bool periodic = closed && corners.empty();

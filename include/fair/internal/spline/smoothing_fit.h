@@ -193,14 +193,23 @@ inline double piece_edge_distance(const std::array<optimal::Vec2, 4>& b, const o
 }
 
 /// The distance of the smoothing spline's pieces to the polygon v: the largest of the pieces'
-/// distances to their edges and of |c(t_k) - v_k|.
+/// distances to their edges and of |c(t_k) - v_k|. A piece is refined only when the distance of
+/// its farthest Bezier point from the edge exceeds the largest found so far: the distance to a
+/// segment is convex and the piece lies in the convex hull of its Bezier points, so that bound is
+/// an upper bound (most pieces are skipped; the result is the same).
 inline double polygon_distance(const std::vector<std::array<optimal::Vec2, 4>>& pieces,
                                const std::vector<optimal::Vec2>& v) {
   double out = 0;
   const std::size_t n = v.size();
+  for (std::size_t i = 0; i < pieces.size(); ++i) {  // the vertices: |c(t_k) - v_k| (open: c(t_N) = b_3 of the last)
+    const optimal::Vec2 &a = pieces[i][0], &b = pieces[i][3], &p = v[i], &q = v[(i + 1) % n];
+    out = std::max({out, std::hypot(a[0] - p[0], a[1] - p[1]), std::hypot(b[0] - q[0], b[1] - q[1])});
+  }
   for (std::size_t i = 0; i < pieces.size(); ++i) {
-    out = std::max(out, piece_edge_distance(pieces[i], v[i], v[(i + 1) % n]));
-    out = std::max(out, std::hypot(pieces[i][0][0] - v[i][0], pieces[i][0][1] - v[i][1]));
+    const optimal::Vec2 &e0 = v[i], &e1 = v[(i + 1) % n];
+    double bound = 0;
+    for (const optimal::Vec2& b : pieces[i]) bound = std::max(bound, optimal::distance_to_segment(b, e0, e1));
+    if (bound > out) out = std::max(out, piece_edge_distance(pieces[i], e0, e1));
   }
   return out;
 }
