@@ -25,6 +25,11 @@
 // the CORNER constraints of an optimal curve survive in the spline; Polygon_spline_runs::nurbs
 // is the runs as one NURBS with triple knots at the corners.
 //
+// Smoothing (fit_smoothing_spline_runs, what Optimal_curve_2::spline() delivers): the same runs and
+// knots, but only the given vertices (the optimal curve's input points), the corners and their
+// neighbours are interpolated; the others are approached within a distance, by the constrained
+// smoothing spline of internal/spline/smoothing_fit.h (Reinsch; doc/optimal_curves.md).
+//
 // max_distance: the largest distance from a point of the spline to the polygon, measured piece
 // by piece against the polygon edge the piece replaces (32 samples per piece refined by golden
 // section; relative accuracy ~1e-12 unless a piece's distance has two maxima within 1/32 of it).

@@ -8,15 +8,15 @@
 // The weight grows as the polygon is refined (w ~ 1/a^2): the adaptive polygon of an optimal
 // curve is fine where its curvature varies fast (next to the input points), and there the fit
 // must follow it; the trapezoid weight w ~ a (the discretised int |c - v|^2 dt) did the opposite
-// and measured more inflections (doc/optimal_curves.md, "The smoothing spline"). Derivation (doc/optimal_curves.md, "The
-// smoothing spline"): Reinsch's form. A cubic spline with values y_k and second derivatives g_k at
+// and measured more inflections. Derivation (doc/optimal_curves.md, "The smoothing spline"):
+// Reinsch's form. A cubic spline with values y_k and second derivatives g_k at
 // the knots is C2 iff, at every interior knot j (closed: every knot, indices mod n),
 //   (Q^T y)_j := (y_{j+1} - y_j)/h_j - (y_j - y_{j-1})/h_{j-1}
 //             = h_{j-1} g_{j-1}/6 + (h_{j-1} + h_j) g_j/3 + h_j g_{j+1}/6 =: (R g)_j,
 // and then int |c''|^2 = g^T R g. Open runs have natural ends (g_0 = g_N = 0): the minimiser over
 // free end values and slopes has c'' = 0 there (the boundary term of the first variation).
 // Minimising over y with g = R^{-1} Q^T y: W (v - y) = Q g on the free rows and y_k = v_k on the
-// hard ones, i.e. y = v - D Q g with D = diag(sigma / a_k) (0 on hard rows); substituted into
+// hard ones, i.e. y = v - D Q g with D = diag(1 / w_k) (0 on hard rows); substituted into
 // Q^T y = R g:
 //   (R + Q^T D Q) g = Q^T v,        y = v - D Q g,
 // one symmetric positive definite (R is, Q^T D Q >= 0) pentadiagonal system per coordinate
@@ -27,7 +27,8 @@
 // The smoothing weight sigma is chosen per run by bisection on log sigma so that the distance
 // (max over pieces of the largest distance of the piece from the polygon edge it replaces, and
 // over vertices of |c(t_k) - v_k|) is at most the tolerance and, when the bisection can, within
-// [0.9, 1] of it: the most smoothing the tolerance allows.
+// [0.9, 1] of it: the most smoothing the tolerance allows. The distance refines a piece only when
+// its Bezier hull can exceed the largest distance found so far (polygon_distance).
 
 #ifndef FAIR_INTERNAL_SPLINE_SMOOTHING_FIT_H
 #define FAIR_INTERNAL_SPLINE_SMOOTHING_FIT_H
@@ -223,9 +224,10 @@ struct Smoothing_run {
   bool met = true;      ///< distance <= tolerance
 };
 
-/// The caps of the bisection: log10(sigma / L^4) in [-20, 4] (L the run's chord length; beyond 4
-/// the free vertices no longer pull: the natural spline through the hard ones), at most
-/// max_solves solves, stopping once the distance is within [0.9, 1] of the tolerance.
+/// The caps of the bisection: log10(sigma / L^4) in [-20, 0] (L the run's chord length; at 0 the
+/// free vertices barely pull: nearly the natural spline through the hard ones, and larger sigma
+/// drowns R in rounding), at most smoothing_max_solves solves, stopping once the distance is
+/// within [0.9, 1] of the tolerance.
 constexpr double smoothing_log_sigma_min = -20, smoothing_log_sigma_max = 0;
 constexpr int smoothing_max_solves = 40;
 
