@@ -6,8 +6,9 @@
 // with TRUE curvature (the paper's eq. 9 is half of it, doc/optimal_curves.md), computed by a
 // hierarchical, adaptive Newton method on the normal offsets of the free vertices
 // (doc/optimal_curves.md). Points -> solver on doubles -> polygon in the user's kernel -> the C2
-// cubic spline through the polygon's vertices (fair::fit_cubic_spline_runs: C2 between CORNER
-// constraints, G0 at them), whose cubic Bezier pieces are the curve's pieces().
+// cubic smoothing spline with a knot at every polygon vertex, through the input points exactly and
+// within 0.9 of the polygon's resolution of the other vertices (fair::fit_smoothing_spline_runs: C2
+// between CORNER constraints, G0 at them; issue 25 §3), whose cubic Bezier pieces are pieces().
 
 #ifndef FAIR_OPTIMAL_CURVE_2_H
 #define FAIR_OPTIMAL_CURVE_2_H
@@ -28,8 +29,13 @@
 
 namespace fair {
 
+/// The distance from Optimal_curve_2::spline() to the optimal polygon that the smoothing fit
+/// allows, as a fraction of the polygon's resolution (rotation-invariant extent / rho):
+/// doc/optimal_curves.md, "The smoothing spline".
+constexpr double optimal_spline_distance_fraction = 0.9;
+
 /// The optimal curve through `points` (closed: no repeated last point): the optimal polygon and
-/// the C2 cubic spline through its vertices (pieces(), spline()).
+/// the C2 cubic smoothing spline of it through the points (pieces(), spline()).
 /// Errors: Invalid_input_error for too few points (< 2 open, < 3 closed), non-finite or
 /// coincident consecutive points, constraints out of range / with a zero direction / that cannot
 /// be met; Precondition_error for options outside their domain (negative or non-finite weights,
@@ -48,7 +54,7 @@ public:
   typedef typename K::Point_2 Point_2;
   /// The cubic Bezier pieces of spline(), one per polygon edge.
   typedef Bezier_2<K> Piece;
-  /// The C2 cubic spline runs through the polygon (one run without CORNER constraints).
+  /// The C2 cubic spline runs of the polygon (one run without CORNER constraints).
   typedef Polygon_spline_runs<K> Spline;
 
   /// Solves for the optimal polygon through `points`, then fits spline() through it.
@@ -92,7 +98,7 @@ public:
   /// The polygon index of each input point.
   const std::vector<std::size_t>& interpolation_indices() const { return interpolation_indices_; }
   /// The polygon vertices of the CORNER constraints (ascending): where the curve is only G0, so
-  /// that spline() is fit_cubic_spline_runs(polygon(), is_closed(), corner_vertices()).
+  /// that spline() has one C2 run between consecutive corners (fit_smoothing_spline_runs).
   std::vector<std::size_t> corner_vertices() const {
     std::vector<std::size_t> v;
     for (const Point_constraint& c : options_.constraints)
@@ -101,12 +107,16 @@ public:
     v.erase(std::unique(v.begin(), v.end()), v.end());
     return v;
   }
-  /// The C2 cubic spline through every polygon vertex (chordal breakpoints; C2 runs between the
-  /// corners, G0 at them; spline().max_distance: its distance to the polygon):
-  /// fit_cubic_spline_runs(polygon(), is_closed(), corner_vertices()). It keeps the curve's shape
-  /// because the hierarchy resolves the curvature profile, not only the sagitta (hierarchy.h,
-  /// issue 25 §3).
+  /// The C2 cubic smoothing spline of the polygon (a knot at every vertex, chordal breakpoints; C2
+  /// runs between the corners, G0 at them; spline().max_distance: its distance to the polygon):
+  /// fit_smoothing_spline_runs(polygon(), is_closed(), interpolation_indices(), corner_vertices(),
+  /// spline_smoothing().tolerance), the tolerance optimal_spline_distance_fraction times the
+  /// polygon's resolution (rotation-invariant extent / rho). It passes through the input points
+  /// exactly and smooths the ripples that interpolating every vertex of the adaptive polygon makes
+  /// (doc/optimal_curves.md, "The smoothing spline"; fit_cubic_spline_runs interpolates every vertex).
   const Spline& spline() const { return spline_; }
+  /// How spline() was smoothed (tolerance, per-run smoothing weight and bisection solves).
+  const Spline_smoothing_report& spline_smoothing() const { return smoothing_; }
   /// The cubic pieces of spline(), run after run: one per polygon edge.
   const std::vector<Piece>& pieces() const { return pieces_; }
   std::size_t number_of_pieces() const { return pieces_.size(); }
@@ -130,9 +140,17 @@ public:
   double energy() const { return report_.energy; }
 
 private:
-  /// spline_ and pieces_: the C2 cubic through every vertex, run by run between the corners.
+  /// spline_, smoothing_ and pieces_: the smoothing spline, run by run between the corners.
   void fit_spline() {
-    spline_ = fit_cubic_spline_runs<K>(polygon_, options_.closed, corner_vertices());
+    std::vector<internal::optimal::Vec2> v;
+    v.reserve(polygon_.size());
+    for (const Point_2& q : polygon_) v.push_back({{CGAL::to_double(q.x()), CGAL::to_double(q.y())}});
+    const double tolerance =
+        optimal_spline_distance_fraction * internal::optimal::rotation_invariant_extent(v) / options_.resolution;
+    Polygon_smoothing_fit<K> fit = fit_smoothing_spline_runs<K>(polygon_, options_.closed, interpolation_indices_,
+                                                                corner_vertices(), tolerance);
+    spline_ = std::move(fit.runs);
+    smoothing_ = std::move(fit.report);
     pieces_.clear();
     for (const Cubic_spline_2<K>& run : spline_.splines) {
       std::vector<Piece> q = run.polynomial_pieces();
@@ -147,6 +165,7 @@ private:
   std::vector<double> curvatures_;
   Optimal_curve_report report_;
   Spline spline_{{}, {}, 0.0};
+  Spline_smoothing_report smoothing_;
   std::vector<Piece> pieces_;
 };
 

@@ -25,6 +25,11 @@
 // the CORNER constraints of an optimal curve survive in the spline; Polygon_spline_runs::nurbs
 // is the runs as one NURBS with triple knots at the corners.
 //
+// Smoothing (fit_smoothing_spline_runs, what Optimal_curve_2::spline() delivers): the same runs and
+// knots, but only the given vertices (the optimal curve's input points), the corners and their
+// neighbours are interpolated; the others are approached within a distance, by the constrained
+// smoothing spline of internal/spline/smoothing_fit.h (Reinsch; doc/optimal_curves.md).
+//
 // max_distance: the largest distance from a point of the spline to the polygon, measured piece
 // by piece against the polygon edge the piece replaces (32 samples per piece refined by golden
 // section; relative accuracy ~1e-12 unless a piece's distance has two maxima within 1/32 of it).
@@ -41,6 +46,7 @@
 #include <fair/internal/nurbs/assembly.h>
 #include <fair/internal/optimal/spline_fit.h>
 #include <fair/internal/spline/polygon_fit.h>
+#include <fair/internal/spline/smoothing_fit.h>
 
 #include <CGAL/Simple_cartesian.h>
 
@@ -80,7 +86,6 @@ struct Polygon_quintic_fit {
 template <class K>
 Polygon_spline_fit<K> fit_cubic_spline(const std::vector<typename K::Point_2>& polygon, bool closed) {
   using namespace internal::spline;
-  typedef typename K::FT FT;
   const char* fn = "fair::fit_cubic_spline";
   const std::vector<Vec2> raw = polygon_to_double<K>(polygon, closed, fn);
   const double scale = fit_scale(raw);  // computed on raw / scale, mapped back exactly
@@ -108,24 +113,7 @@ Polygon_spline_fit<K> fit_cubic_spline(const std::vector<typename K::Point_2>& p
     for (const Kd::Point_2& d : c.spline().control_points()) control.push_back(Vec2{{d.x(), d.y()}});
   }
   const double distance = scale * internal::optimal::max_chord_distance(bezier_pieces(t, control, closed));
-  // The breakpoints are chord lengths (t * scale) unless the spline's own B-spline-to-Bezier
-  // conversion (eq. 2 of Cubic_spline_2: control points times sums of knot intervals) would
-  // overflow: then they stay chord lengths / scale, the same curve reparametrised by a power of
-  // two (polygons beyond ~1e150, issue 29 #20).
-  double control_bound = 0;
-  for (const Vec2& v : control) control_bound = std::max({control_bound, std::abs(v[0]), std::abs(v[1])});
-  const double knot_bound = std::max(std::abs(t.front()), std::abs(t.back()));
-  const double knot_scale =
-      16 * (knot_bound * scale) * (control_bound * scale) <= std::numeric_limits<double>::max() / 64 ? scale : 1;
-  std::vector<FT> breakpoints;
-  breakpoints.reserve(t.size());
-  for (double x : t) breakpoints.push_back(FT(x * knot_scale));
-  std::vector<typename K::Point_2> points;
-  points.reserve(control.size());
-  for (const Vec2& v : control) points.push_back(to_point<K>(Vec2{{v[0] * scale, v[1] * scale}}));
-  Cubic_spline_2<K> spline(std::move(breakpoints), std::move(points), closed);
-  spline.check_finite_pieces(fn);
-  return Polygon_spline_fit<K>{std::move(spline), distance};
+  return Polygon_spline_fit<K>{internal::spline::spline_from_control<K>(t, control, closed, scale, fn), distance};
 }
 
 /// Splines through every vertex that keep the polygon's corners: one C2 cubic per run between
@@ -198,6 +186,110 @@ Polygon_spline_runs<K> fit_cubic_spline_runs(const std::vector<typename K::Point
     out.splines.push_back(std::move(fit.spline));
     out.first_vertex.push_back(ends[r] % n);
     out.max_distance = std::max(out.max_distance, fit.max_distance);
+  }
+  return out;
+}
+
+/// How fit_smoothing_spline_runs chose its smoothing, run by run (doc/optimal_curves.md, "The
+/// smoothing spline").
+struct Spline_smoothing_report {
+  double tolerance = 0;  ///< the distance to the polygon asked for
+  /// Per run: sigma / L^4 (L the run's chord length; scale-free): 0 when every vertex is interpolated.
+  std::vector<double> smoothing;
+  std::vector<int> solves;  ///< per run: linear solves of the bisection (at most 40)
+  bool tolerance_met = true;  ///< false when a run's interpolant of every vertex is already farther
+};
+
+/// The smoothing spline runs of a polygon and how they were chosen.
+template <class K>
+struct Polygon_smoothing_fit {
+  Polygon_spline_runs<K> runs;
+  Spline_smoothing_report report;
+};
+
+/// A C2 cubic smoothing spline through `polygon`, run by run between the `corners` (G0 there, as
+/// fit_cubic_spline_runs), with a knot at every vertex (chordal breakpoints) that passes exactly
+/// through the `interpolated` vertices (indices, any order, repeats ignored), the corners and their
+/// two neighbours (so each run leaves a corner along its polygon edge), the two ends of an open
+/// polygon, and elsewhere minimises
+///   int |c''|^2 dt + sum_k hbar^3 |c(t_k) - v_k|^2 / (sigma a_k^2)   (Reinsch; a_k the mean
+/// interval at vertex k, hbar the run's mean: the fit follows the polygon where it is fine),
+/// with the largest sigma (bisection on log sigma, at most 40 solves per run) whose distance to the
+/// polygon (each piece from the edge it replaces, and |c(t_k) - v_k|) is <= `max_distance`, and
+/// within 0.9 of it where the bisection reaches it. Open runs have natural ends (c'' = 0),
+/// closed ones without corners are periodic. max_distance = 0 gives the natural C2 interpolant of
+/// every vertex. When that interpolant is already farther than `max_distance`, a run keeps it and
+/// report.tolerance_met is false. Derivation: internal/spline/smoothing_fit.h and the doc.
+/// \throws Invalid_input_error as fit_cubic_spline; Precondition_error for an index >= n or a
+/// negative or non-finite max_distance. Complexity O(n) per solve (pentadiagonal Cholesky).
+template <class K>
+Polygon_smoothing_fit<K> fit_smoothing_spline_runs(const std::vector<typename K::Point_2>& polygon, bool closed,
+                                                   std::vector<std::size_t> interpolated,
+                                                   std::vector<std::size_t> corners, double max_distance) {
+  using namespace internal::spline;
+  typedef internal::optimal::Vec2 V;
+  const char* fn = "fair::fit_smoothing_spline_runs";
+  internal::require(std::isfinite(max_distance) && max_distance >= 0, fn, ": max_distance ", max_distance,
+                    " must be finite and >= 0");
+  const std::vector<V> raw = polygon_to_double<K>(polygon, closed, fn);
+  const std::size_t n = polygon.size();
+  for (std::size_t c : corners) internal::require(c < n, fn, ": corner vertex ", c, " is not a vertex of the polygon of ", n, " vertices");
+  for (std::size_t c : interpolated)
+    internal::require(c < n, fn, ": interpolated vertex ", c, " is not a vertex of the polygon of ", n, " vertices");
+  const double scale = fit_scale(raw);
+  const std::vector<V> p = scaled(raw, 1 / scale);
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  if (!closed)
+    corners.erase(std::remove_if(corners.begin(), corners.end(), [n](std::size_t c) { return c == 0 || c + 1 == n; }),
+                  corners.end());
+  std::vector<bool> hard(n, false);
+  for (std::size_t c : interpolated) hard[c] = true;
+  // At a corner the run's first edge is kept too (its other vertex interpolated): the optimal
+  // polygon's edge at a CORNER lies on the constraint's tangent ray, and with the natural end the
+  // run leaves the corner along it (doc/optimal_curves.md, "The smoothing spline").
+  for (std::size_t c : corners) {
+    hard[c] = true;
+    hard[(c + 1) % n] = true;
+    hard[(c + n - 1) % n] = true;
+  }
+  if (!closed) hard.front() = hard.back() = true;
+  std::vector<std::size_t> ends;  // run r from ends[r] to ends[r + 1]
+  const bool periodic = closed && corners.empty();
+  if (periodic) ends = {0, n - 1};  // the one periodic run (its closing edge included)
+  else {
+    if (!closed) ends.push_back(0);
+    ends.insert(ends.end(), corners.begin(), corners.end());
+    if (closed) ends.push_back(corners.front() + n);  // wraps around
+    else ends.push_back(n - 1);
+  }
+  Polygon_smoothing_fit<K> out{{{}, {}, 0.0}, {}};
+  out.report.tolerance = max_distance;
+  for (std::size_t r = 0; r + 1 < ends.size(); ++r) {
+    std::vector<V> v;
+    std::vector<bool> h;
+    for (std::size_t i = ends[r]; i <= ends[r + 1]; ++i) {
+      v.push_back(p[i % n]);
+      h.push_back(hard[i % n]);
+    }
+    const std::vector<double> t = internal::optimal::chord_breakpoints(v, periodic, fn);
+    const Smoothing_run fit = smoothing_fit_run(v, t, periodic, h, max_distance / scale);
+    std::vector<std::array<Homogeneous_point<double>, 4>> b;
+    b.reserve(fit.pieces.size());
+    for (const std::array<V, 4>& piece : fit.pieces) {
+      std::array<Homogeneous_point<double>, 4> q;
+      for (std::size_t k = 0; k < 4; ++k) q[k] = Homogeneous_point<double>{piece[k][0], piece[k][1], 1.0};
+      b.push_back(q);
+    }
+    std::vector<V> control;
+    for (const Homogeneous_point<double>& c : control_from_bezier(t, b, periodic)) control.push_back(V{{c.x / c.w, c.y / c.w}});
+    out.runs.splines.push_back(spline_from_control<K>(t, control, periodic, scale, fn));
+    out.runs.first_vertex.push_back(ends[r] % n);
+    out.runs.max_distance = std::max(out.runs.max_distance, scale * fit.distance);
+    const double length = t.back() - t.front();
+    out.report.smoothing.push_back(fit.sigma / (length * length * length * length));
+    out.report.solves.push_back(fit.solves);
+    out.report.tolerance_met = out.report.tolerance_met && fit.met;
   }
   return out;
 }

@@ -106,15 +106,26 @@ TYPED_TEST(OptimiserKernels, InterpolationPointsAreTheInputPoints) {
   ASSERT_EQ(c.pieces().size(), c.number_of_pieces());
   EXPECT_EQ(c.spline().splines.size(), 1u);
   EXPECT_EQ(c.spline().splines[0].number_of_pieces(), c.number_of_pieces());
-  // Through the vertices to rounding (the fit runs in double, Polygon_spline_fit.h), in every kernel.
-  const auto near = [](const Point& a, const Point& b) {
-    return std::hypot(CGAL::to_double(a.x()) - CGAL::to_double(b.x()), CGAL::to_double(a.y()) - CGAL::to_double(b.y())) <
-           1e-13;
+  // Through the input points to rounding (the fit runs in double, Polygon_spline_fit.h), in every
+  // kernel; the other vertices within the smoothing tolerance (the smoothing spline, issue 25 §3).
+  const auto distance = [](const Point& a, const Point& b) {
+    return std::hypot(CGAL::to_double(a.x()) - CGAL::to_double(b.x()), CGAL::to_double(a.y()) - CGAL::to_double(b.y()));
   };
+  std::vector<bool> input(c.polygon().size(), false);
+  for (std::size_t i : c.interpolation_indices()) input[i] = true;
+  EXPECT_GT(c.spline_smoothing().tolerance, 0);
+  // When even the interpolant of every vertex is farther than the tolerance, that is the spline.
+  const double tolerance = c.spline_smoothing().tolerance_met ? c.spline_smoothing().tolerance : 1e-13;
   for (std::size_t j = 0; j < c.number_of_pieces(); ++j) {
     EXPECT_EQ(c.pieces()[j].degree(), 3u);
-    EXPECT_TRUE(near(c.pieces()[j].source(), c.polygon()[j])) << j;
-    EXPECT_TRUE(near(c.pieces()[j].target(), c.polygon()[j + 1])) << j;
+    EXPECT_LE(distance(c.pieces()[j].source(), c.polygon()[j]), input[j] ? 1e-13 : tolerance * (1 + 1e-9)) << j;
+    EXPECT_LE(distance(c.pieces()[j].target(), c.polygon()[j + 1]), input[j + 1] ? 1e-13 : tolerance * (1 + 1e-9)) << j;
+    if (j > 0) {
+      EXPECT_LE(distance(c.pieces()[j].source(), c.pieces()[j - 1].target()), 1e-13) << j;
+    }
+  }
+  if (c.spline_smoothing().tolerance_met) {
+    EXPECT_LE(c.spline().max_distance, tolerance * (1 + 1e-9));
   }
 }
 
@@ -533,8 +544,8 @@ TEST(OptimiserConstraints, CappedSolveIsReportedOrThrown) {
   EXPECT_NE(converged.report(), c.report());
 }
 
-// spline() is the program's spline: fit_cubic_spline_runs(polygon(), closed, corner_vertices()),
-// one C2 run between corners; pieces() its cubic pieces, run after run.
+// spline() is the program's spline: fit_smoothing_spline_runs(polygon(), closed, interpolation_indices(),
+// corner_vertices(), spline_smoothing().tolerance), one C2 run between corners; pieces() its cubic pieces.
 TEST(OptimiserConstraints, SplineIsTheFitOfThePolygonBetweenCorners) {
   for (const bool closed : {false, true}) {
     Optimal_curve_options o = raw_weights();
@@ -546,7 +557,10 @@ TEST(OptimiserConstraints, SplineIsTheFitOfThePolygonBetweenCorners) {
     const Optimal_curve_2<K> c(wave, o);
     ASSERT_EQ(c.status(), Optimal_curve_status::CONVERGED) << closed;
     EXPECT_EQ(c.is_closed(), closed);
-    const fair::Polygon_spline_runs<K> fit = fair::fit_cubic_spline_runs<K>(c.polygon(), closed, c.corner_vertices());
+    const fair::Polygon_spline_runs<K> fit =
+        fair::fit_smoothing_spline_runs<K>(c.polygon(), closed, c.interpolation_indices(), c.corner_vertices(),
+                                           c.spline_smoothing().tolerance)
+            .runs;
     ASSERT_EQ(c.spline().splines.size(), fit.splines.size());
     EXPECT_EQ(c.spline().splines.size(), closed ? 1u : 2u);  // closed: one run from the corner around
     EXPECT_EQ(c.spline().first_vertex, fit.first_vertex);

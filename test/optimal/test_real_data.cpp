@@ -8,9 +8,10 @@
 // with FAIR_WRITE_EXPECTED=<file>, measured with GCC 12 -O3):
 //  - no balloon: extent_ratio <= 1.5 (report, shape_check.h); the certified self-intersections as
 //    expected (none beyond the input's but on six strokes and Greenland: doc/optimal_curves.md);
-//  - the spline keeps the curve's shape: its certified inflections and curvature extrema
-//    (Fairness_metrics.h) as expected, and over the set the medians of the targets
-//    (inflections per input point: median <= 0.5, max <= 1.5; extrema: median <= 1.5);
+//  - the spline (the smoothing spline of Optimal_curve_2::spline()) keeps the curve's shape: its
+//    certified inflections and curvature extrema (Fairness_metrics.h) as expected, and over the set
+//    the medians measured (inflections per input point 0.333 / 0.571, extrema 1.333 / 1.429; the
+//    issue's targets: inflections median <= 0.5, max <= 1.5 (held); extrema median <= 1.5 (held));
 //  - the spline near the polygon's resolution: max_distance <= 1.25 extent / rho (measured: 1.21).
 
 #include <fair/Fairness_metrics.h>
@@ -26,6 +27,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -80,7 +82,9 @@ std::vector<Real_curve> hand_drawn() {
 
 struct Measured {
   double extent_ratio = 0, distance = 0, resolution = 0;
+  bool tolerance_met = true;  // the smoothing spline reached its distance (else: the interpolant of every vertex)
   std::size_t inflections = 0, extrema = 0, self_intersections = 0, input_self_intersections = 0;
+  std::size_t polygon_sign_changes = 0;  // of the discrete curvature (zeros skipped): the polygon's inflections
   fair::Optimal_curve_status status = fair::Optimal_curve_status::CAPPED;
 };
 
@@ -98,6 +102,13 @@ Measured measure(const Real_curve& c, double lambda) {
   for (const P& q : curve.polygon()) v.push_back({{q.x(), q.y()}});
   m.resolution = fair::internal::optimal::rotation_invariant_extent(v) / o.resolution;
   m.distance = curve.spline().max_distance;
+  m.tolerance_met = curve.spline_smoothing().tolerance_met;
+  double previous = 0;
+  for (double k : curve.curvatures())
+    if (k != 0) {
+      m.polygon_sign_changes += previous * k < 0;
+      previous = k;
+    }
   m.inflections = fair::inflections(curve.pieces()).count();
   m.extrema = fair::curvature_extrema(curve.pieces()).count();
   return m;
@@ -117,7 +128,7 @@ struct Setting {
   const char* name;
   double lambda, inflections, extrema;
 };
-const std::vector<Setting> settings = {{"defaults", -1, 0.5, 1.75}, {"lambda 0.5", 0.5, 0.6, 2.1}};
+const std::vector<Setting> settings = {{"defaults", -1, 0.34, 1.34}, {"lambda 0.5", 0.5, 0.58, 1.43}};
 
 TEST(OptimalRealData, HandDrawnCurvesAreFairAtTheDefaultsAndAtLambdaHalf) {
   const std::vector<Real_curve> curves = hand_drawn();
@@ -144,7 +155,9 @@ TEST(OptimalRealData, HandDrawnCurvesAreFairAtTheDefaultsAndAtLambdaHalf) {
         << "# self_intersections, input_self_intersections (GCC 12 -O3)\n";
   }
   for (const auto& setting : settings) {
-    std::vector<double> inflections, extrema;
+    std::vector<double> inflections, extrema, polygon_inflections;
+    double worst_inflections = 0, worst_extrema = 0, worst_distance = 0;
+    int beyond_resolution = 0, interpolants = 0;
     for (const Real_curve& c : curves) {
       const Measured m = measure(c, setting.lambda);
       const std::string what = key(c.name, setting.name);
@@ -156,6 +169,12 @@ TEST(OptimalRealData, HandDrawnCurvesAreFairAtTheDefaultsAndAtLambdaHalf) {
       if (c.name != "greenland") {
         inflections.push_back(static_cast<double>(m.inflections) / n);
         extrema.push_back(static_cast<double>(m.extrema) / n);
+        polygon_inflections.push_back(static_cast<double>(m.polygon_sign_changes) / n);
+        worst_inflections = std::max(worst_inflections, inflections.back());
+        worst_extrema = std::max(worst_extrema, extrema.back());
+        worst_distance = std::max(worst_distance, m.distance / m.resolution);
+        beyond_resolution += m.distance > m.resolution;
+        interpolants += !m.tolerance_met;
       }
       if (write) {
         out << what << " | " << m.inflections << " " << m.extrema << " " << m.extent_ratio << " " << m.self_intersections
@@ -173,7 +192,15 @@ TEST(OptimalRealData, HandDrawnCurvesAreFairAtTheDefaultsAndAtLambdaHalf) {
       EXPECT_EQ(static_cast<double>(m.self_intersections), e->second[3]) << what;
       EXPECT_EQ(static_cast<double>(m.input_self_intersections), e->second[4]) << what;
     }
+    // The summary of doc/optimal_curves.md's table (per input point over the 117 strokes).
+    std::printf("%s: inflections median %.3f max %.3f, extrema median %.3f max %.3f, distance / resolution max %.3f "
+                "(%d strokes beyond 1; %d kept the interpolant of every vertex); polygon's discrete curvature sign "
+                "changes per point median %.3f max %.3f\n",
+                setting.name, median(inflections), worst_inflections, median(extrema), worst_extrema, worst_distance,
+                beyond_resolution, interpolants, median(polygon_inflections),
+                *std::max_element(polygon_inflections.begin(), polygon_inflections.end()));
     EXPECT_LE(median(inflections), setting.inflections) << setting.name;
+    EXPECT_LE(worst_inflections, 1.5) << setting.name;  // the max (reached by the smoothing spline)
     EXPECT_LE(median(extrema), setting.extrema) << setting.name;
   }
 }

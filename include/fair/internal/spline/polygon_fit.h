@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
 //
 // The internals of fair::fit_cubic_spline (include/fair/Polygon_spline_fit.h): the polygon in
-// double, and the periodic C2 cubic interpolant solved directly for its B-spline control points.
+// double, the periodic C2 cubic interpolant solved directly for its B-spline control points, and
+// the Cubic_spline_2 built from control points computed on the scaled polygon (all the fits).
 //
 // Periodic interpolation on the breakpoints t_0 < ... < t_n (chord length, t_n closing the
 // polygon): the spline's value at t_i is the first Bezier point of piece i,
@@ -25,6 +26,7 @@
 #ifndef FAIR_INTERNAL_SPLINE_POLYGON_FIT_H
 #define FAIR_INTERNAL_SPLINE_POLYGON_FIT_H
 
+#include <fair/Cubic_spline_2.h>
 #include <fair/internal/common/input_checks.h>
 #include <fair/internal/linear_algebra/tridiagonal.h>
 #include <fair/internal/optimal/vec2.h>
@@ -36,6 +38,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace fair {
@@ -130,6 +134,32 @@ inline double fit_scale(const std::vector<optimal::Vec2>& p) {
 inline std::vector<optimal::Vec2> scaled(std::vector<optimal::Vec2> p, double factor) {
   for (optimal::Vec2& q : p) q = {{q[0] * factor, q[1] * factor}};
   return p;
+}
+
+/// The Cubic_spline_2 of the breakpoints t and control points `control` computed on the polygon
+/// divided by `scale` (fit_scale), mapped back.
+template <class K>
+Cubic_spline_2<K> spline_from_control(const std::vector<double>& t, const std::vector<Vec2>& control, bool closed,
+                                      double scale, const char* fn) {
+  typedef typename K::FT FT;
+  // The breakpoints are chord lengths (t * scale) unless the spline's own B-spline-to-Bezier
+  // conversion (eq. 2 of Cubic_spline_2: control points times sums of knot intervals) would
+  // overflow: then they stay chord lengths / scale, the same curve reparametrised by a power of
+  // two (polygons beyond ~1e150, issue 29 #20).
+  double control_bound = 0;
+  for (const Vec2& v : control) control_bound = std::max({control_bound, std::abs(v[0]), std::abs(v[1])});
+  const double knot_bound = std::max(std::abs(t.front()), std::abs(t.back()));
+  const double knot_scale =
+      16 * (knot_bound * scale) * (control_bound * scale) <= std::numeric_limits<double>::max() / 64 ? scale : 1;
+  std::vector<FT> breakpoints;
+  breakpoints.reserve(t.size());
+  for (double x : t) breakpoints.push_back(FT(x * knot_scale));
+  std::vector<typename K::Point_2> points;
+  points.reserve(control.size());
+  for (const Vec2& v : control) points.push_back(to_point<K>(Vec2{{v[0] * scale, v[1] * scale}}));
+  Cubic_spline_2<K> spline(std::move(breakpoints), std::move(points), closed);
+  spline.check_finite_pieces(fn);
+  return spline;
 }
 
 } // namespace spline

@@ -1,0 +1,293 @@
+// Copyright (c) 2026 The fair authors. Distributed under the Boost Software License 1.0.
+//
+// The engine of fair::fit_smoothing_spline_runs (include/fair/Polygon_spline_fit.h): the C2 cubic
+// smoothing spline of one run of polygon vertices v_0..v_N (closed: v_0..v_{n-1}, periodic) on
+// the chord-length knots t_k, which interpolates the "hard" vertices exactly and minimises
+//   J(c) = int |c''(t)|^2 dt + sum_{k free} w_k |c(t_k) - v_k|^2,   w_k = hbar^3 / (sigma a_k^2),
+// a_k = (h_{k-1} + h_k) / 2 the mean interval at t_k, hbar the run's mean interval, h_k = t_{k+1} - t_k.
+// The weight grows as the polygon is refined (w ~ 1/a^2): the adaptive polygon of an optimal
+// curve is fine where its curvature varies fast (next to the input points), and there the fit
+// must follow it; the trapezoid weight w ~ a (the discretised int |c - v|^2 dt) did the opposite
+// and measured more inflections. Derivation (doc/optimal_curves.md, "The smoothing spline"):
+// Reinsch's form. A cubic spline with values y_k and second derivatives g_k at
+// the knots is C2 iff, at every interior knot j (closed: every knot, indices mod n),
+//   (Q^T y)_j := (y_{j+1} - y_j)/h_j - (y_j - y_{j-1})/h_{j-1}
+//             = h_{j-1} g_{j-1}/6 + (h_{j-1} + h_j) g_j/3 + h_j g_{j+1}/6 =: (R g)_j,
+// and then int |c''|^2 = g^T R g. Open runs have natural ends (g_0 = g_N = 0): the minimiser over
+// free end values and slopes has c'' = 0 there (the boundary term of the first variation).
+// Minimising over y with g = R^{-1} Q^T y: W (v - y) = Q g on the free rows and y_k = v_k on the
+// hard ones, i.e. y = v - D Q g with D = diag(1 / w_k) (0 on hard rows); substituted into
+// Q^T y = R g:
+//   (R + Q^T D Q) g = Q^T v,        y = v - D Q g,
+// one symmetric positive definite (R is, Q^T D Q >= 0) pentadiagonal system per coordinate
+// (cyclic when closed), solved by banded Cholesky (linear_algebra/symmetric_band.h): O(n).
+// (Q g)_k is the jump of c''' at t_k, so the spline is C3 where a vertex is met (y_k = v_k).
+// sigma = 0 gives the natural (periodic) C2 interpolant of every vertex.
+//
+// The smoothing weight sigma is chosen per run by bisection on log sigma so that the distance
+// (max over pieces of the largest distance of the piece from the polygon edge it replaces, and
+// over vertices of |c(t_k) - v_k|) is at most the tolerance and, when the bisection can, within
+// [0.9, 1] of it: the most smoothing the tolerance allows. The distance refines a piece only when
+// its Bezier hull can exceed the largest distance found so far (polygon_distance).
+
+#ifndef FAIR_INTERNAL_SPLINE_SMOOTHING_FIT_H
+#define FAIR_INTERNAL_SPLINE_SMOOTHING_FIT_H
+
+#include <fair/Errors.h>
+#include <fair/internal/linear_algebra/symmetric_band.h>
+#include <fair/internal/optimal/spline_fit.h>
+#include <fair/internal/optimal/vec2.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace fair {
+namespace internal {
+namespace spline {
+
+/// Values y and second derivatives g at the knots of a C2 cubic spline (Reinsch form).
+struct Reinsch_spline {
+  std::vector<optimal::Vec2> y, g;
+};
+
+/// The smoothing spline of v on the knots t (open: t.size() == v.size(); closed: v.size() + 1,
+/// t.back() closing the polygon) for d_k = 1 / w_k (0: v_k interpolated), as the
+/// header derives, in `out`. False when the system is not positive definite to working precision
+/// (it is, mathematically, for strictly increasing t; a large sigma drowns R in rounding).
+inline bool smoothing_spline_solve(const std::vector<optimal::Vec2>& v, const std::vector<double>& t, bool closed,
+                                   const std::vector<double>& d, Reinsch_spline& out) {
+  const std::size_t nv = v.size();
+  out = Reinsch_spline{v, std::vector<optimal::Vec2>(nv, optimal::Vec2{{0, 0}})};
+  // Unknowns g_j: open j = 1..N-1 (row j - 1), closed j = 0..n-1 (row j).
+  const std::size_t unknowns = closed ? nv : (nv >= 2 ? nv - 2 : 0);
+  if (unknowns == 0) return true;  // two open vertices: the segment, y = v
+  auto h = [&](long k) {          // h_k, periodic when closed
+    const long m = static_cast<long>(t.size()) - 1;
+    if (closed) k = ((k % m) + m) % m;
+    return t[static_cast<std::size_t>(k) + 1] - t[static_cast<std::size_t>(k)];
+  };
+  auto knot = [&](long k) {  // knot index k (mod n when closed) -> row, or -1 if g_k is fixed at 0
+    if (closed) return static_cast<long>(((k % static_cast<long>(nv)) + static_cast<long>(nv)) % static_cast<long>(nv));
+    return (k >= 1 && k + 1 < static_cast<long>(nv)) ? k - 1 : -1L;
+  };
+  linear_algebra::Banded_symmetric a;
+  a.reset(unknowns, 2, closed);
+  // R: diagonal (h_{j-1} + h_j)/3, neighbours h_j / 6.
+  for (std::size_t r = 0; r < unknowns; ++r) {
+    const long j = closed ? static_cast<long>(r) : static_cast<long>(r) + 1;
+    a.at(r, r) += (h(j - 1) + h(j)) / 3;
+    const long next = knot(j + 1);
+    if (next >= 0) a.at(r, static_cast<std::size_t>(next)) += h(j) / 6;  // closed: each cyclic pair once
+  }
+  // Q^T D Q = sum_k d_k q_k q_k^T, q_k the row of vertex k: 1/h_{k-1}, -(1/h_{k-1} + 1/h_k), 1/h_k at g_{k-1}, g_k, g_{k+1}.
+  auto q_row = [&](long k, long (&idx)[3], double (&q)[3]) {
+    const double il = (closed || k > 0) ? 1 / h(k - 1) : 0, ir = (closed || k + 1 < static_cast<long>(nv)) ? 1 / h(k) : 0;
+    idx[0] = knot(k - 1);
+    idx[1] = knot(k);
+    idx[2] = knot(k + 1);
+    q[0] = il;
+    q[1] = -(il + ir);
+    q[2] = ir;
+  };
+  for (std::size_t k = 0; k < nv; ++k) {
+    if (!(d[k] > 0)) continue;
+    long idx[3];
+    double q[3];
+    q_row(static_cast<long>(k), idx, q);
+    for (int i = 0; i < 3; ++i)
+      for (int j = i; j < 3; ++j)
+        if (idx[i] >= 0 && idx[j] >= 0)
+          a.at(static_cast<std::size_t>(idx[i]), static_cast<std::size_t>(idx[j])) += d[k] * q[i] * q[j];
+  }
+  for (int c = 0; c < 2; ++c) {
+    std::vector<double> rhs(unknowns, 0.0);  // Q^T v
+    for (std::size_t k = 0; k < nv; ++k) {
+      long idx[3];
+      double q[3];
+      q_row(static_cast<long>(k), idx, q);
+      for (int i = 0; i < 3; ++i)
+        if (idx[i] >= 0) rhs[static_cast<std::size_t>(idx[i])] += q[i] * v[k][static_cast<std::size_t>(c)];
+    }
+    if (!linear_algebra::solve_banded_positive_definite(a, rhs)) return false;
+    for (std::size_t r = 0; r < unknowns; ++r) out.g[closed ? r : r + 1][static_cast<std::size_t>(c)] = rhs[r];
+  }
+  for (std::size_t k = 0; k < nv; ++k) {  // y = v - D Q g
+    if (!(d[k] > 0)) continue;
+    long idx[3];
+    double q[3];
+    q_row(static_cast<long>(k), idx, q);
+    for (int c = 0; c < 2; ++c) {
+      double qg = 0;
+      for (int i = 0; i < 3; ++i)
+        if (idx[i] >= 0) qg += q[i] * out.g[closed ? static_cast<std::size_t>(idx[i]) : static_cast<std::size_t>(idx[i]) + 1][static_cast<std::size_t>(c)];
+      out.y[k][static_cast<std::size_t>(c)] -= d[k] * qg;
+    }
+  }
+  return true;
+}
+
+/// The Bezier points of the pieces of s (piece i over [t_i, t_{i+1}]): with d = (y_{i+1} - y_i)/h,
+/// c'(t_i+) = d - h (2 g_i + g_{i+1})/6 and c'(t_{i+1}-) = d + h (g_i + 2 g_{i+1})/6,
+/// b_1 = y_i + h c'(t_i+)/3, b_2 = y_{i+1} - h c'(t_{i+1}-)/3.
+inline std::vector<std::array<optimal::Vec2, 4>> reinsch_bezier_pieces(const Reinsch_spline& s,
+                                                                       const std::vector<double>& t) {
+  const std::size_t m = t.size() - 1, n = s.y.size();
+  std::vector<std::array<optimal::Vec2, 4>> out(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::size_t j = (i + 1) % n;
+    const double h = t[i + 1] - t[i];
+    for (std::size_t c = 0; c < 2; ++c) {
+      const double y0 = s.y[i][c], y1 = s.y[j][c], g0 = s.g[i][c], g1 = s.g[j][c], dd = (y1 - y0) / h;
+      out[i][0][c] = y0;
+      out[i][1][c] = y0 + h * (dd - h * (2 * g0 + g1) / 6) / 3;
+      out[i][2][c] = y1 - h * (dd + h * (g0 + 2 * g1) / 6) / 3;
+      out[i][3][c] = y1;
+    }
+  }
+  return out;
+}
+
+/// The largest distance of a point of the cubic piece b from the segment [e0, e1]: 32 samples,
+/// then golden-section refinement around the largest (as optimal::piece_chord_distance).
+inline double piece_edge_distance(const std::array<optimal::Vec2, 4>& b, const optimal::Vec2& e0,
+                                  const optimal::Vec2& e1) {
+  const std::array<optimal::Vec2, 4> a = optimal::power_coefficients(b);
+  auto f = [&](double u) {
+    optimal::Vec2 x = a[3];
+    for (std::size_t k = 3; k-- > 0;)
+      for (std::size_t c = 0; c < 2; ++c) x[c] = x[c] * u + a[k][c];
+    return optimal::distance_to_segment(x, e0, e1);
+  };
+  const int q = optimal::fit_distance_samples;
+  int best = 0;
+  double best_value = -1;
+  for (int k = 0; k <= q; ++k) {
+    const double v = f(static_cast<double>(k) / q);
+    if (v > best_value) {
+      best_value = v;
+      best = k;
+    }
+  }
+  double lo = std::max(0.0, (best - 1.0) / q), hi = std::min(1.0, (best + 1.0) / q);
+  const double gr = 0.5 * (std::sqrt(5.0) - 1);
+  double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo), f1 = f(x1), f2 = f(x2);
+  for (int it = 0; it < optimal::fit_distance_refinements; ++it) {
+    if (f1 > f2) {
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - gr * (hi - lo);
+      f1 = f(x1);
+    } else {
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + gr * (hi - lo);
+      f2 = f(x2);
+    }
+  }
+  return std::max(best_value, std::max(f1, f2));
+}
+
+/// The distance of the smoothing spline's pieces to the polygon v: the largest of the pieces'
+/// distances to their edges and of |c(t_k) - v_k|. A piece is refined only when the distance of
+/// its farthest Bezier point from the edge exceeds the largest found so far: the distance to a
+/// segment is convex and the piece lies in the convex hull of its Bezier points, so that bound is
+/// an upper bound (most pieces are skipped; the result is the same).
+inline double polygon_distance(const std::vector<std::array<optimal::Vec2, 4>>& pieces,
+                               const std::vector<optimal::Vec2>& v) {
+  double out = 0;
+  const std::size_t n = v.size();
+  for (std::size_t i = 0; i < pieces.size(); ++i) {  // the vertices: |c(t_k) - v_k| (open: c(t_N) = b_3 of the last)
+    const optimal::Vec2 &a = pieces[i][0], &b = pieces[i][3], &p = v[i], &q = v[(i + 1) % n];
+    out = std::max({out, std::hypot(a[0] - p[0], a[1] - p[1]), std::hypot(b[0] - q[0], b[1] - q[1])});
+  }
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const optimal::Vec2 &e0 = v[i], &e1 = v[(i + 1) % n];
+    double bound = 0;
+    for (const optimal::Vec2& b : pieces[i]) bound = std::max(bound, optimal::distance_to_segment(b, e0, e1));
+    if (bound > out) out = std::max(out, piece_edge_distance(pieces[i], e0, e1));
+  }
+  return out;
+}
+
+/// One run's fit and how its smoothing weight was found.
+struct Smoothing_run {
+  std::vector<std::array<optimal::Vec2, 4>> pieces;
+  double sigma = 0;     ///< the smoothing weight used (0: every vertex interpolated)
+  double distance = 0;  ///< polygon_distance of the pieces
+  int solves = 0;       ///< linear solves (bisection steps) spent
+  bool met = true;      ///< distance <= tolerance
+};
+
+/// The caps of the bisection: log10(sigma / L^4) in [-20, 0] (L the run's chord length; at 0 the
+/// free vertices barely pull: nearly the natural spline through the hard ones, and larger sigma
+/// drowns R in rounding), at most smoothing_max_solves solves, stopping once the distance is
+/// within [0.9, 1] of the tolerance.
+constexpr double smoothing_log_sigma_min = -20, smoothing_log_sigma_max = 0;
+constexpr int smoothing_max_solves = 40;
+
+/// The smoothing spline of one run (t: its chord breakpoints; hard[k]: v_k interpolated) with the
+/// most smoothing whose distance to the polygon is <= tolerance. When even the interpolant of
+/// every vertex (sigma = 0) is farther, that interpolant is returned with met = false.
+inline Smoothing_run smoothing_fit_run(const std::vector<optimal::Vec2>& v, const std::vector<double>& t, bool closed,
+                                       const std::vector<bool>& hard, double tolerance) {
+  const std::size_t n = v.size();
+  const double length = t.back() - t.front();
+  std::vector<double> a(n), d(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double hl = (closed || k > 0) ? t[k > 0 ? k : t.size() - 1] - t[k > 0 ? k - 1 : t.size() - 2] : 0;
+    const double hr = (closed || k + 1 < n) ? t[k + 1] - t[k] : 0;
+    a[k] = (hl + hr) / 2;
+  }
+  const double mean = length / static_cast<double>(t.size() - 1);
+  const double unit_weight = mean * mean * mean;
+  Smoothing_run out;
+  auto evaluate = [&](double sigma, Smoothing_run& r) {
+    for (std::size_t k = 0; k < n; ++k) d[k] = (hard[k] || !(sigma > 0)) ? 0 : sigma * a[k] * a[k] / unit_weight;
+    Reinsch_spline s;
+    const bool solved = smoothing_spline_solve(v, t, closed, d, s);
+    ++out.solves;
+    FAIR_ASSERT_MSG(solved || sigma > 0, "fair::fit_smoothing_spline_runs: the interpolation system is singular");
+    r.sigma = sigma;
+    r.distance = std::numeric_limits<double>::infinity();  // too much smoothing for double: not taken
+    if (!solved) return;
+    r.pieces = reinsch_bezier_pieces(s, t);
+    r.distance = polygon_distance(r.pieces, v);
+  };
+  const double unit = length * length * length * length;
+  evaluate(0, out);
+  if (!(tolerance > 0)) return out;  // interpolation of every vertex asked for
+  if (!(out.distance <= tolerance)) {
+    out.met = false;
+    return out;
+  }
+  Smoothing_run best = out, trial;
+  double lo = smoothing_log_sigma_min, hi = smoothing_log_sigma_max;
+  evaluate(unit * std::pow(10.0, hi), trial);
+  if (trial.distance <= tolerance) best = trial;
+  else
+    while (out.solves < smoothing_max_solves && !(best.sigma > 0 && best.distance >= 0.9 * tolerance)) {
+      const double mid = 0.5 * (lo + hi);
+      evaluate(unit * std::pow(10.0, mid), trial);
+      if (trial.distance <= tolerance) {
+        lo = mid;
+        best = trial;
+      } else {
+        hi = mid;
+      }
+    }
+  best.solves = out.solves;
+  best.met = true;
+  return best;
+}
+
+} // namespace spline
+} // namespace internal
+} // namespace fair
+
+#endif // FAIR_INTERNAL_SPLINE_SMOOTHING_FIT_H
