@@ -2,7 +2,7 @@
 //
 // Gallery of Gumhold's optimal curves (issue 11 section 6; doc/optimal_curves.md): the figures of
 // the paper recomputed with fair::Optimal_curve_2, each drawn as the C2 cubic spline through the
-// optimal polygon (fair::fit_cubic_spline_runs: C2, G0 at corners) with its curvature plot and the measured figures of
+// optimal polygon (fair::fit_smoothing_spline_runs: C2, G0 at corners) with its curvature plot and the measured figures of
 // the solve (status, levels, vertices, iterations, energy, distance of the spline to the polygon).
 // Fig. 3 is computed from the closed form of eq. 7 (true-curvature convention, kappa = f(phi)/s).
 
@@ -150,7 +150,7 @@ void add_optimal_cases(fair_curves::Gallery& gallery) {
       "Optimal curves (Gumhold)",
       "Minimisers of F = int beta + beta_0 |kappa L0|^alpha_0 (+ curvature-derivative terms) ds on adaptive polygons "
       "(fair::Optimal_curve_2, hierarchical Newton), delivered as the C2 cubic spline through the optimal polygon "
-      "(fair::fit_cubic_spline_runs: C2, G0 at corners). The figures of Gumhold's paper, recomputed; see doc/optimal_curves.md.");
+      "(fair::fit_smoothing_spline_runs: C2 through the points within the polygon's resolution, G0 at corners). The figures of Gumhold's paper, recomputed; see doc/optimal_curves.md.");
   fair::Optimal_curve_options base;
   base.lambda = -1;  // the paper's figures state their weights: the raw weights of eq. 5 unless lambda is set
 

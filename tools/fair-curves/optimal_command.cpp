@@ -2,7 +2,7 @@
 //
 // fair-curves optimal: Gumhold's optimal curve through a point file (fair::Optimal_curve_2,
 // issue 11; doc/optimal_curves.md), delivered as the optimal polygon and the C2 cubic spline
-// through it (fair::fit_cubic_spline_runs: C2 between corners, G0 at them; with a derivative term k >= 1 also the C4 quintic). The
+// through it (fair::fit_smoothing_spline_runs: C2 between corners, G0 at them; with a derivative term k >= 1 also the C4 quintic). The
 // weights of eq. 5 (--length-weight, --curvature-weight, --curvature-exponent,
 // --derivative-weight K:BK[:AK]) or the lambda trade-off of eq. 10 (--lambda, or one lambda per
 // input segment from --lambda-file); tangent, normal and corner constraints from files (formats
