@@ -155,42 +155,7 @@ inline std::vector<std::array<optimal::Vec2, 4>> reinsch_bezier_pieces(const Rei
 /// then golden-section refinement around the largest (as optimal::piece_chord_distance).
 inline double piece_edge_distance(const std::array<optimal::Vec2, 4>& b, const optimal::Vec2& e0,
                                   const optimal::Vec2& e1) {
-  const std::array<optimal::Vec2, 4> a = optimal::power_coefficients(b);
-  auto f = [&](double u) {
-    optimal::Vec2 x = a[3];
-    for (std::size_t k = 3; k-- > 0;)
-      for (std::size_t c = 0; c < 2; ++c) x[c] = x[c] * u + a[k][c];
-    return optimal::distance_to_segment(x, e0, e1);
-  };
-  const int q = optimal::fit_distance_samples;
-  int best = 0;
-  double best_value = -1;
-  for (int k = 0; k <= q; ++k) {
-    const double v = f(static_cast<double>(k) / q);
-    if (v > best_value) {
-      best_value = v;
-      best = k;
-    }
-  }
-  double lo = std::max(0.0, (best - 1.0) / q), hi = std::min(1.0, (best + 1.0) / q);
-  const double gr = 0.5 * (std::sqrt(5.0) - 1);
-  double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo), f1 = f(x1), f2 = f(x2);
-  for (int it = 0; it < optimal::fit_distance_refinements; ++it) {
-    if (f1 > f2) {
-      hi = x2;
-      x2 = x1;
-      f2 = f1;
-      x1 = hi - gr * (hi - lo);
-      f1 = f(x1);
-    } else {
-      lo = x1;
-      x1 = x2;
-      f1 = f2;
-      x2 = lo + gr * (hi - lo);
-      f2 = f(x2);
-    }
-  }
-  return std::max(best_value, std::max(f1, f2));
+  return optimal::sampled_segment_distance(optimal::power_coefficients(b), e0, e1);
 }
 
 /// The distance of the smoothing spline's pieces to the polygon v: the largest of the pieces'
