@@ -11,6 +11,9 @@ points (`fair-curves <command> points.json [--closed] <options> -o -`):
   - /api/export dxf/svg/svg-path/json: the program's files, byte for byte, their content types
     and file names; the DXF read (a SPLINE; audited by ezdxf when it is importable);
   - /api/metrics: the metrics JSON and the profile CSV's rows;
+  - the WebSocket /api/ws (a stdlib client below): answers byte for byte those of /api/solve,
+    errors with their HTTP status and id, Host/Origin 403 on the upgrade, the 4 MiB cap (1009),
+    binary messages (1003), the connection cap and SIGTERM with sockets open;
   - kappa sessions: a warm move equals a cold solve of the moved points within 1e-9 of the extent;
   - every bad input (issue 27, "Reliability and security"): its status code AND an error
     message naming the problem; path traversal; body caps; half bodies, disconnects and idle
@@ -1012,6 +1015,17 @@ def test_websocket(s):
         ws = WebSocket(s, headers)
         check(ws.status == 403 and not ws.upgraded, f"ws upgrade with {what}: {ws.status}")
         ws.close()
+    # open sockets count against the 32 connections; SIGTERM stops the server with them open
+    srv = Server()
+    sockets = [WebSocket(srv) for _ in range(32)]
+    st, _, body = srv.request("GET", "/api/methods")
+    check(sum(w.upgraded for w in sockets) == 32 and st == 503 and "32 connections" in (error_of(body) or ""),
+          f"32 open WebSockets are 32 connections: the 33rd gets {st}")
+    t0 = time.monotonic()
+    code, _, _ = srv.stop()
+    check(code == 0 and time.monotonic() - t0 < 10, f"SIGTERM with 32 WebSockets open: exit {code} after {time.monotonic() - t0:.1f} s")
+    for w in sockets:
+        w.close()
     st, _, body = s.request("GET", "/api/ws")
     check(st == 426 and "WebSocket" in (error_of(body) or ""), f"GET /api/ws without an upgrade: {st}")
 
