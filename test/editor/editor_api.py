@@ -11,6 +11,9 @@ points (`fair-curves <command> points.json [--closed] <options> -o -`):
   - /api/export dxf/svg/svg-path/json: the program's files, byte for byte, their content types
     and file names; the DXF read (a SPLINE; audited by ezdxf when it is importable);
   - /api/metrics: the metrics JSON and the profile CSV's rows;
+  - the WebSocket /api/ws (a stdlib client below): answers byte for byte those of /api/solve,
+    errors with their HTTP status and id, Host/Origin 403 on the upgrade, the 4 MiB cap (1009),
+    binary messages (1003), the connection cap and SIGTERM with sockets open;
   - kappa sessions: a warm move equals a cold solve of the moved points within 1e-9 of the extent;
   - every bad input (issue 27, "Reliability and security"): its status code AND an error
     message naming the problem; path traversal; body caps; half bodies, disconnects and idle
@@ -863,6 +866,170 @@ def test_fifo_and_open():
         shutil.rmtree(d, ignore_errors=True)
 
 
+# ------------------------------------------------------------------ the WebSocket /api/ws
+class WebSocket:
+    """A minimal RFC 6455 client (stdlib only): the upgrade handshake, masked text frames out,
+    unmasked frames in with the 7-bit, 16-bit (126) and 64-bit (127) lengths."""
+
+    def __init__(self, s, headers=None, timeout=30):
+        import base64
+        import hashlib
+        self.sock = socket.create_connection((s.host, s.port), timeout=timeout)
+        key = base64.b64encode(os.urandom(16)).decode()
+        head = {"Host": f"{s.host}:{s.port}", "Upgrade": "websocket", "Connection": "Upgrade",
+                "Sec-WebSocket-Key": key, "Sec-WebSocket-Version": "13", **(headers or {})}
+        self.sock.sendall(("GET /api/ws HTTP/1.1\r\n" + "".join(f"{k}: {v}\r\n" for k, v in head.items()) + "\r\n").encode())
+        data = b""
+        while b"\r\n\r\n" not in data:
+            chunk = self.sock.recv(4096)
+            if not chunk:
+                break
+            data += chunk
+        head_text, _, self.rest = data.partition(b"\r\n\r\n")
+        lines = head_text.decode("latin-1").split("\r\n")
+        self.status = int(lines[0].split()[1]) if len(lines[0].split()) > 1 else 0
+        self.headers = {k.strip().lower(): v.strip() for k, _, v in (l.partition(":") for l in lines[1:])}
+        accept = base64.b64encode(hashlib.sha1((key + "258EAFA5-E914-47DA-95CA-C5AB0DC85B11").encode()).digest()).decode()
+        self.upgraded = self.status == 101 and self.headers.get("sec-websocket-accept") == accept
+
+    def send(self, payload, opcode=1):
+        if isinstance(payload, str):
+            payload = payload.encode()
+        n = len(payload)
+        head = bytes([0x80 | opcode])
+        if n < 126:
+            head += bytes([0x80 | n])
+        elif n < 65536:
+            head += bytes([0x80 | 126]) + n.to_bytes(2, "big")
+        else:
+            head += bytes([0x80 | 127]) + n.to_bytes(8, "big")
+        mask = os.urandom(4)
+        self.sock.sendall(head + mask + bytes(b ^ mask[i % 4] for i, b in enumerate(payload)))
+
+    def _read(self, n):
+        while len(self.rest) < n:
+            chunk = self.sock.recv(65536)
+            if not chunk:
+                raise EOFError("the server closed the connection")
+            self.rest += chunk
+        out, self.rest = self.rest[:n], self.rest[n:]
+        return out
+
+    def recv(self):
+        """(opcode, payload) of the next whole message (continuation frames joined)."""
+        opcode, payload = None, b""
+        while True:
+            b0, b1 = self._read(2)
+            if b1 & 0x80:
+                raise ValueError("a masked frame from the server")
+            n = b1 & 0x7F
+            if n == 126:
+                n = int.from_bytes(self._read(2), "big")
+            elif n == 127:
+                n = int.from_bytes(self._read(8), "big")
+            data = self._read(n)
+            if opcode is None:
+                opcode = b0 & 0x0F
+            payload += data
+            if b0 & 0x80:
+                return opcode, payload
+
+    def close(self):
+        self.sock.close()
+
+
+def test_websocket(s):
+    """/api/ws (doc/editor_api.md, "WebSocket"): answers byte for byte those of POST /api/solve,
+    errors with the HTTP status and the id, the Host/Origin checks, the caps."""
+    pts = random_points(100, seed=11)
+    own = f"{s.host}:{s.port}"
+    ws = WebSocket(s, {"Origin": f"http://{own}"})
+    if not check(ws.upgraded, f"GET /api/ws upgrades to a WebSocket (status {ws.status})"):
+        return
+    try:
+        for req in (dict(method="kappa", points=pts, closed=False, options={}),
+                    dict(method="cubic", points=pts[:10], closed=True, options={}),
+                    dict(method="cubic", points=random_points(1500, seed=12), closed=False, options={})):
+            ws.send(json.dumps(req))
+            op, answer = ws.recv()
+            st, _, body = s.post("/api/solve", req)
+            check(op == 1 and st == 200 and answer == body,
+                  f"ws: {req['method']} ({len(req['points'])} points) answer equals POST /api/solve's bytes ({len(answer)} bytes)")
+        # a kappa session started and moved once over the socket, and the same over POST
+        moved = [p[:] for p in pts]
+        moved[50][0] += 0.01
+        req = dict(method="kappa", points=pts, closed=False, options={})
+        ws.send(json.dumps(dict(req, session="ws-test-1")))
+        ws.recv()
+        ws.send(json.dumps(dict(req, points=moved, session="ws-test-1")))
+        op, answer = ws.recv()
+        s.post("/api/solve", dict(req, session="ws-test-2"))
+        st, _, body = s.post("/api/solve", dict(req, points=moved, session="ws-test-2"))
+        check(op == 1 and st == 200 and answer == body,
+              f"ws: a kappa session's drag step equals POST /api/solve's bytes ({len(answer)} bytes)")
+        # errors: the HTTP status /api/solve gives, its message, and the id (when the request has one)
+        for request, id_, status, words in (
+                (dict(method="kappa", points=[[0, 0]], closed=False), 7, 400, "points"),
+                (dict(method="nope", points=pts[:5]), 8, 400, "unknown method 'nope'"),
+                ('{"method": "kappa", "points": [[0, 0], [1, NaN]]}', None, 400, "malformed JSON")):
+            text = request if isinstance(request, str) else json.dumps(dict(request, **({"id": id_} if id_ is not None else {})))
+            st, _, post_body = s.post("/api/solve", None, raw=(request if isinstance(request, str) else json.dumps(request)).encode())
+            ws.send(text)
+            op, answer = ws.recv()
+            e = json.loads(answer)
+            check(op == 1 and st == status and e.get("status") == status and words in e.get("error", "")
+                  and e["error"] == error_of(post_body) and e.get("id") == id_ and set(e) <= {"error", "status", "id"},
+                  f"ws error: status {e.get('status')} id {e.get('id')} {e.get('error', '')[:70]!r}")
+        ws.send(json.dumps(dict(method="kappa", points=pts[:5], id="x")))
+        e = json.loads(ws.recv()[1])
+        check(e.get("status") == 400 and "id: expected a number" in e.get("error", ""), f"ws: a non-numeric id: {e}")
+        # the socket still serves after the errors
+        ws.send(json.dumps(dict(method="cubic", points=pts[:10], closed=False, options={})))
+        op, answer = ws.recv()
+        check(op == 1 and json.loads(answer).get("pieces"), "ws: serves on after errors")
+        # a binary message closes the socket with 1003 and a reason
+        ws.send(b"\x00\x01", opcode=2)
+        op, answer = ws.recv()
+        code = int.from_bytes(answer[:2], "big") if len(answer) >= 2 else None
+        check(op == 8 and code == 1003 and b"binary" in answer, f"ws: a binary message closes the socket ({code}, {answer[2:]!r})")
+    except (OSError, EOFError, ValueError) as e:
+        check(False, f"ws: {e}")
+    finally:
+        ws.close()
+    # a message over the 4 MiB cap: closed with 1009
+    ws = WebSocket(s)
+    try:
+        # a frame head declaring 4 MiB + 1 bytes (the 64-bit length) and the start of its payload:
+        # the server refuses it from the head, without reading the rest
+        ws.sock.sendall(bytes([0x81, 0x80 | 127]) + ((4 << 20) + 1).to_bytes(8, "big") + b"\0\0\0\0" + b'{"method": "kappa"')
+        op, answer = ws.recv()
+        code = int.from_bytes(answer[:2], "big") if len(answer) >= 2 else None
+        check(op == 8 and code == 1009, f"ws: a message over 4 MiB closes the socket ({code})")
+    except (OSError, EOFError) as e:
+        check(False, f"ws: a message over 4 MiB closes the socket with 1009 (got {e!r})")
+    finally:
+        ws.close()
+    # a foreign Origin or Host: 403 on the upgrade
+    for what, headers in (("Origin evil", {"Origin": "http://evil.example"}),
+                          ("Host evil", {"Host": f"evil.example:{s.port}"})):
+        ws = WebSocket(s, headers)
+        check(ws.status == 403 and not ws.upgraded, f"ws upgrade with {what}: {ws.status}")
+        ws.close()
+    # open sockets count against the 32 connections; SIGTERM stops the server with them open
+    srv = Server()
+    sockets = [WebSocket(srv) for _ in range(32)]
+    st, _, body = srv.request("GET", "/api/methods")
+    check(sum(w.upgraded for w in sockets) == 32 and st == 503 and "32 connections" in (error_of(body) or ""),
+          f"32 open WebSockets are 32 connections: the 33rd gets {st}")
+    t0 = time.monotonic()
+    code, _, _ = srv.stop()
+    check(code == 0 and time.monotonic() - t0 < 10, f"SIGTERM with 32 WebSockets open: exit {code} after {time.monotonic() - t0:.1f} s")
+    for w in sockets:
+        w.close()
+    st, _, body = s.request("GET", "/api/ws")
+    check(st == 426 and "WebSocket" in (error_of(body) or ""), f"GET /api/ws without an upgrade: {st}")
+
+
 def main():
     s = Server()
     print(f"server on {s.host}:{s.port}")
@@ -880,6 +1047,7 @@ def main():
         test_timeout()
         test_depth_cap(s)
         test_cross_site(s)
+        test_websocket(s)
         test_head(s)
         test_option_values(s)
         test_metrics_cap(s)

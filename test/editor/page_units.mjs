@@ -1,7 +1,7 @@
 // Unit tests of the page's modules in Node (no browser): the evaluation of the pieces (curve.js)
 // against closed forms and finite differences, the point-file reader (pointfile.js), the outcome
 // words (status.js) against the program's summary lines, and the request channel (api.js):
-// one request in flight, coalescing, stale answers dropped.
+// one request in flight, coalescing, stale answers dropped; the drag steps' WebSocket (SolveSocket).
 //   node page_units.mjs EDITOR_DIR
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
@@ -11,7 +11,7 @@ const load = (f) => import(pathToFileURL(path.join(dir, f)).href);
 const { preparePiece, evaluate, curvature, sampleCurve, arcLengthAt } = await load('curve.js');
 const { parsePointFile } = await load('pointfile.js');
 const { outcomeWords } = await load('status.js');
-const { Channel } = await load('api.js');
+const { Channel, SolveSocket } = await load('api.js');
 
 let failures = 0;
 function check(ok, what) { console.log((ok ? 'ok   ' : 'FAIL ') + what); if (!ok) failures++; }
@@ -128,6 +128,60 @@ const close = (a, b, tol) => Math.abs(a - b) <= tol;
   answer(2, { v: 4 });
   await new Promise((r) => setTimeout(r, 10));
   check(applied.length === 2 && applied[1][0] === 4 && applied[1][2] === 4 && !ch.busy, 'the next answer applied, seq 4, channel idle');
+}
+
+// ---- api.js: the drag steps' WebSocket (a fake WebSocket; fetch answers at once)
+{
+  const sockets = [];
+  class FakeSocket {
+    static CONNECTING = 0; static OPEN = 1; static CLOSING = 2; static CLOSED = 3;
+    constructor(url) { this.url = url; this.readyState = 0; this.sent = []; sockets.push(this); }
+    send(text) { this.sent.push(JSON.parse(text)); }
+    open() { this.readyState = 1; }
+    answer(text) { this.onmessage({ data: text }); }
+    close() { this.readyState = 3; this.onclose({}); }
+  }
+  globalThis.WebSocket = FakeSocket;
+  globalThis.location = { protocol: 'http:', host: '127.0.0.1:8080' };
+  const fetched = [];
+  globalThis.fetch = async (url, init) => {
+    fetched.push(JSON.parse(init.body));
+    return { ok: true, status: 200, headers: { get: () => null }, text: async () => '{"v": "fetch"}' };
+  };
+  const tick = () => new Promise((r) => setTimeout(r, 5));
+  const socket = new SolveSocket('/api/ws');
+  const applied = [];
+  const ch = new Channel('/api/solve', (r) => applied.push(r), socket);
+  ch.submit({ n: 1 }, 't');  // no session: fetch, no socket opened
+  await tick();
+  check(fetched.length === 1 && sockets.length === 0 && applied[0].via === 'fetch', 'a request without a session goes by fetch and opens no socket');
+  ch.submit({ n: 2, session: 's' }, 't');  // the first drag step: fetch, and the socket opened
+  await tick();
+  check(fetched.length === 2 && sockets.length === 1 && sockets[0].url === 'ws://127.0.0.1:8080/api/ws',
+    'the first drag step goes by fetch and opens the socket lazily');
+  sockets[0].open();
+  ch.submit({ n: 3, session: 's' }, 't');
+  await tick();
+  check(sockets[0].sent.length === 1 && sockets[0].sent[0].n === 3 && ch.busy, 'a drag step over the open socket, in flight');
+  ch.submit({ n: 4, session: 's' }, 't');
+  ch.submit({ n: 5, session: 's' }, 't');
+  check(sockets[0].sent.length === 1, 'one message in flight: newer steps wait and coalesce');
+  sockets[0].answer('{"pieces": [], "v": "ws"}');
+  await tick();
+  check(applied.at(-1).via === 'ws' && applied.at(-1).ok && applied.at(-1).data.v === 'ws', 'the answer matched by order and applied');
+  check(sockets[0].sent.length === 2 && sockets[0].sent[1].n === 5, 'then the newest pending step (5; 4 never sent)');
+  sockets[0].answer('{"error": "points: bad", "status": 400, "id": 5}');
+  await tick();
+  check(!applied.at(-1).ok && applied.at(-1).status === 400 && applied.at(-1).data.error === 'points: bad', 'an error message: its status and error');
+  ch.submit({ n: 6, session: 's' }, 't');
+  await tick();
+  sockets[0].close();  // closed with the step in flight: sent again by fetch
+  await tick();
+  check(fetched.at(-1).n === 6 && applied.at(-1).via === 'fetch' && !ch.busy, 'a step whose socket closed goes by fetch');
+  ch.submit({ n: 7, session: 's' }, 't');
+  await tick();
+  check(sockets.length === 2 && fetched.at(-1).n === 7, 'the next drag step opens the socket again (and goes by fetch)');
+  check(socket.sent === 3, `the socket counted its messages (${socket.sent})`);
 }
 
 console.log(failures ? `${failures} check(s) failed` : 'all checks passed');

@@ -18,6 +18,7 @@
 #include <boost/asio/signal_set.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -36,6 +37,7 @@
 #include <iostream>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -58,6 +60,7 @@ namespace {
 namespace net = boost::asio;
 namespace beast = boost::beast;
 namespace http = beast::http;
+namespace websocket = beast::websocket;
 using tcp = net::ip::tcp;
 using namespace fair_curves::serve;
 
@@ -67,6 +70,7 @@ constexpr std::size_t max_head = 8 * 1024;                    ///< request line 
 constexpr int max_connections = 32;                           ///< served at once; more get 503
 constexpr std::chrono::seconds idle_timeout{10};              ///< to read one request
 constexpr std::chrono::seconds write_timeout{30};             ///< to write one answer
+constexpr std::chrono::seconds ws_idle_timeout{300};          ///< an open /api/ws without a message
 
 struct Serve_options {
   int port = 8080;
@@ -333,9 +337,16 @@ class Server {
   template <class Start>
   static beast::error_code await(net::io_context& ioc, Start start) {
     beast::error_code result;
-    start([&](const beast::error_code& ec, std::size_t) { result = ec; });
+    bool done = false;
+    start([&](const beast::error_code& ec, auto&&...) {
+      result = ec;
+      done = true;
+    });
+    // Until this operation's handler ran: a WebSocket keeps its idle timer waiting between
+    // operations, so the context never runs out of work while the socket is open.
     ioc.restart();
-    ioc.run();
+    while (!done && ioc.run_one()) {
+    }
     return result;
   }
 
@@ -409,6 +420,14 @@ class Server {
             read_all = false;
           } else if (ec) {
             return;  // a half body, then the client went away or idled: nothing to answer
+          } else if (websocket::is_upgrade(parser.get()) && target_path(parser.get()) == "/api/ws") {
+            // The WebSocket of the drag steps: the same Host and Origin checks as every request.
+            std::optional<Answer> refused = foreign(parser.get());
+            if (!refused) {
+              serve_websocket(ioc, stream, parser.release());
+              return;
+            }
+            a = std::move(*refused);
           } else a = handle(parser.get(), stream.socket().native_handle());
         }
       }
@@ -442,8 +461,78 @@ class Server {
     return h;
   }
 
-  /// `client_fd`: the request's connection, watched while a child solves (client gone: killed).
-  Answer handle(const http::request<http::string_body>& req, int client_fd) {
+  static std::string target_path(const http::request<http::string_body>& req) {
+    std::string path(req.target());
+    const std::size_t query = path.find('?');
+    if (query != std::string::npos) path.resize(query);
+    return path;
+  }
+
+  /// GET /api/ws upgraded (doc/editor_api.md, "WebSocket"): each text message is the body of a
+  /// POST /api/solve and gets one text message back, the bytes /api/solve would answer, or on an
+  /// error {"error", "status"[, "id"]}. The connection stays counted against max_connections.
+  void serve_websocket(net::io_context& ioc, beast::tcp_stream& stream, http::request<http::string_body> req) {
+    stream.expires_never();  // the websocket's own timers from here on
+    websocket::stream<beast::tcp_stream&> ws(stream);
+    websocket::stream_base::timeout timeouts;
+    timeouts.handshake_timeout = write_timeout;
+    timeouts.idle_timeout = ws_idle_timeout;
+    timeouts.keep_alive_pings = false;
+    ws.set_option(timeouts);
+    ws.read_message_max(max_body);  // over it: closed with 1009 (message too big)
+    // One frame a message, and no Nagle: a message written in pieces waited for the client's
+    // delayed ACK (a 47 ms median drag round trip in the browser test before, measured).
+    ws.auto_fragment(false);
+    beast::error_code nodelay_ec;
+    stream.socket().set_option(tcp::no_delay(true), nodelay_ec);
+    ws.set_option(websocket::stream_base::decorator([](websocket::response_type& res) { res.set(http::field::server, "fair-curves"); }));
+    beast::error_code ec = await(ioc, [&](auto handler) { ws.async_accept(req, handler); });
+    if (ec) return;
+    const int client_fd = stream.socket().native_handle();
+    beast::flat_buffer buffer;
+    for (;;) {
+      buffer.clear();
+      ec = await(ioc, [&](auto handler) { ws.async_read(buffer, handler); });
+      if (ec) return;  // closed, idle, too big (Beast sent the close frame), or the server stops
+      if (!ws.got_text()) {
+        await(ioc, [&](auto handler) {
+          ws.async_close(websocket::close_reason(websocket::close_code::unknown_data,
+                                                 "binary messages are not accepted: send the JSON of a solve as text"),
+                         handler);
+        });
+        return;
+      }
+      const std::string text = beast::buffers_to_string(buffer.data());
+      nlohmann::json id;
+      Answer a = api_request("/api/solve", [&] {
+        nlohmann::json j = parse_body(text);
+        // "id" (WebSocket only): echoed in an error answer; answers come in the order of the requests.
+        if (j.is_object() && j.contains("id")) {
+          if (!j["id"].is_number()) throw Request_error("id: expected a number, got " + type_name(j["id"]));
+          id = j["id"];
+          j.erase("id");
+        }
+        return j;
+      }, client_fd);
+      if (a.close) return;  // the client went away during a child's solve
+      std::string out;
+      if (a.status == http::status::ok) out = std::move(a.body);
+      else {
+        nlohmann::json e = nlohmann::json::parse(a.body, nullptr, false);
+        if (!e.is_object()) e = nlohmann::json{{"error", a.body}};
+        e["status"] = static_cast<int>(a.status);
+        if (!id.is_null()) e["id"] = id;
+        out = e.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+      }
+      ws.text(true);
+      ec = await(ioc, [&](auto handler) { ws.async_write(net::buffer(out), handler); });
+      if (ec) return;
+    }
+  }
+
+  /// Not this server's page: the Host is not one the server answers, or the Origin is foreign
+  /// (the 403 answer); nullopt otherwise.
+  std::optional<Answer> foreign(const http::request<http::string_body>& req) const {
     // Bound to loopback, the server answers only requests addressed to loopback: a web page
     // that rebinds its own host name to 127.0.0.1 (DNS rebinding) cannot use the API.
     const auto host = req.find(http::field::host);
@@ -467,6 +556,12 @@ class Server {
         return error_answer(http::status::forbidden, "Origin '" + std::string(origin->value()) +
                                                          "' is not this server's page (cross-site requests are refused)");
     }
+    return std::nullopt;
+  }
+
+  /// `client_fd`: the request's connection, watched while a child solves (client gone: killed).
+  Answer handle(const http::request<http::string_body>& req, int client_fd) {
+    if (std::optional<Answer> refused = foreign(req)) return std::move(*refused);
     // Every POST must say Content-Type: application/json: a cross-site page can send that only
     // after a CORS preflight (OPTIONS), which the server refuses, so its POST never comes.
     if (req.method() == http::verb::post) {
@@ -506,15 +601,10 @@ class Server {
         if (!post) return wrong_method("POST");
         // Server-Timing: the time the server spent on the request, so that a client can tell
         // it from the network's and the page's (the browser test's drag round trip).
-        const auto start = std::chrono::steady_clock::now();
-        const nlohmann::json body = parse_body(req.body());
-        Answer a = path == "/api/metrics" ? metrics(body, client_fd) : solve(body, path == "/api/export", client_fd);
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        char timing[64];
-        std::snprintf(timing, sizeof timing, "app;dur=%.3f", ms);
-        a.headers.emplace_back("Server-Timing", timing);
-        return a;
+        return api_request(path, [&] { return parse_body(req.body()); }, client_fd);
       }
+      if (path == "/api/ws")
+        return error_answer(http::status::upgrade_required, "GET /api/ws: a WebSocket upgrade is required");
       if (path.rfind("/api/", 0) == 0 || path == "/api") return error_answer(http::status::not_found, "no such API endpoint: " + path);
       if (!get) return wrong_method("GET, HEAD");
       const std::string name = path == "/" ? "index.html" : path.substr(1);
@@ -522,6 +612,28 @@ class Server {
       if (!find_asset(options_.editor_dir, name, a.body))
         return error_answer(http::status::not_found, "no such file of the editor: " + path);
       a.content_type = content_type(name);
+      return a;
+    } catch (const Request_error& e) {
+      return error_answer(static_cast<http::status>(e.status), e.what());
+    } catch (const std::bad_alloc&) {
+      return error_answer(http::status::service_unavailable, "server busy: out of memory");
+    } catch (const std::exception& e) {
+      return error_answer(http::status::internal_server_error, std::string("internal error: ") + e.what());
+    }
+  }
+
+  /// One API request (`path` one of /api/solve, /api/export, /api/metrics) of the body `parse`
+  /// returns: the POSTs' and the WebSocket's common path, its errors as answers.
+  template <class Parse>
+  Answer api_request(const std::string& path, Parse parse, int client_fd) {
+    try {
+      const auto start = std::chrono::steady_clock::now();
+      const nlohmann::json body = parse();
+      Answer a = path == "/api/metrics" ? metrics(body, client_fd) : solve(body, path == "/api/export", client_fd);
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      char timing[64];
+      std::snprintf(timing, sizeof timing, "app;dur=%.3f", ms);
+      a.headers.emplace_back("Server-Timing", timing);
       return a;
     } catch (const Request_error& e) {
       return error_answer(static_cast<http::status>(e.status), e.what());
@@ -730,7 +842,7 @@ void register_serve_command(CLI::App& app) {
       ->check(CLI::Range(0.1, 3600.0));
   sub->footer("Caps: request body 4 MiB, request head 8 KiB, 20000 points, solve time --solve-timeout (20 s), "
               "solver address space 4 GiB, child output and files 64 MiB, one solve per core at once (more wait within the solve time), 32 connections at once (more: 503), a connection idle for 10 s is "
-              "closed, 64 kappa sessions of at most 2000 points and max-iterations 200, JSON nested at most 64 levels. Bound to loopback, "
+              "closed (an open WebSocket /api/ws: after 300 s without a message; messages 4 MiB), 64 kappa sessions of at most 2000 points and max-iterations 200, JSON nested at most 64 levels. Bound to loopback, "
               "only requests for localhost and without a foreign Origin are answered; every POST needs Content-Type: application/json. The first line on stdout is "
               "\"fair-curves serve: listening on http://HOST:PORT/\". SIGINT or SIGTERM stop the server.\n");
   sub->callback([options] { run_serve(*options); });

@@ -3,7 +3,7 @@
 // kappa(s) plot evaluated here (curve.js), the certified extrema and inflections marked from
 // POST /api/metrics. No framework, no build step, nothing fetched but the server's API.
 import { sampleCurve, arcLengthAt } from './curve.js';
-import { Channel, postJSON, postForFile } from './api.js';
+import { Channel, SolveSocket, postJSON, postForFile } from './api.js';
 import { outcomeWords, fmt } from './status.js';
 import { optionControl } from './options.js';
 import { parsePointFile } from './pointfile.js';
@@ -144,7 +144,9 @@ function samplesPerPiece(pieces) { return Math.max(3, Math.min(24, Math.ceil(150
 
 function enoughPoints(method) { return state.points.length >= (MINIMUM_POINTS[method] || 2); }
 
-const primary = new Channel('/api/solve', onPrimaryAnswer);
+// The drag steps (kappa session) go over the WebSocket while it is open (doc/editor_api.md).
+const solveSocket = new SolveSocket('/api/ws');
+const primary = new Channel('/api/solve', onPrimaryAnswer, solveSocket);
 const overlayChannels = {};
 const metricsChannel = new Channel('/api/metrics', onMetricsAnswer);
 let metricsTimer = 0;
@@ -206,7 +208,7 @@ function onPrimaryAnswer(result, tag, seq, timing) {
   // Where the time went: before the request left, the request (server and transfer, answer
   // parsed), the drawing.
   stats.phases.push({ queued: timing.sent - tag.t0, request: timing.received - timing.sent, server: result.serverMs,
-    draw: performance.now() - timing.received });
+    draw: performance.now() - timing.received, via: result.via });
   $('timing').textContent = `round trip ${dt.toFixed(1)} ms`;
   scheduleMetrics();
 }
@@ -854,6 +856,9 @@ async function start() {
 window.fairEditor.busy = () => primary.busy || metricsChannel.busy || metricsTimer !== 0 ||
   Object.entries(overlayChannels).some(([m, c]) => state.overlay.has(m) && c.busy);
 window.fairEditor.primaryBusy = () => primary.busy;
+// The drag steps sent over the WebSocket (the browser test checks that the drag used it).
+window.fairEditor.socketSent = () => solveSocket.sent;
+window.fairEditor.socketOpen = () => solveSocket.open;
 window.fairEditor.screenOf = (i) => toScreen(state.points[i].x, state.points[i].y);
 window.fairEditor.loadPoints = loadPoints;
 window.fairEditor.ready = start();
