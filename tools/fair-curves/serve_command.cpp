@@ -590,7 +590,7 @@ class Server {
       a.headers.emplace_back("Allow", allow);
       return a;
     };
-    try {
+    return answered([&]() -> Answer {
       if (path == "/api/methods") {
         if (!get) return wrong_method("GET, HEAD");
         Answer a;
@@ -613,6 +613,15 @@ class Server {
         return error_answer(http::status::not_found, "no such file of the editor: " + path);
       a.content_type = content_type(name);
       return a;
+    });
+  }
+
+  /// What `f` answers, or the error answer of what it throws: a Request_error with its status, 503
+  /// when memory ran out, 500 for anything else (a bug of the server, named).
+  template <class F>
+  Answer answered(F f) {
+    try {
+      return f();
     } catch (const Request_error& e) {
       return error_answer(static_cast<http::status>(e.status), e.what());
     } catch (const std::bad_alloc&) {
@@ -626,7 +635,7 @@ class Server {
   /// returns: the POSTs' and the WebSocket's common path, its errors as answers.
   template <class Parse>
   Answer api_request(const std::string& path, Parse parse, int client_fd) {
-    try {
+    return answered([&]() -> Answer {
       const auto start = std::chrono::steady_clock::now();
       const nlohmann::json body = parse();
       Answer a = path == "/api/metrics" ? metrics(body, client_fd) : solve(body, path == "/api/export", client_fd);
@@ -635,13 +644,7 @@ class Server {
       std::snprintf(timing, sizeof timing, "app;dur=%.3f", ms);
       a.headers.emplace_back("Server-Timing", timing);
       return a;
-    } catch (const Request_error& e) {
-      return error_answer(static_cast<http::status>(e.status), e.what());
-    } catch (const std::bad_alloc&) {
-      return error_answer(http::status::service_unavailable, "server busy: out of memory");
-    } catch (const std::exception& e) {
-      return error_answer(http::status::internal_server_error, std::string("internal error: ") + e.what());
-    }
+    });
   }
 
   Answer solve(const nlohmann::json& body, bool export_request, int client_fd) {
