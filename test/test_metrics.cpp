@@ -285,6 +285,95 @@ TEST(Metrics, LibraryRationalPieces) {
   EXPECT_LT(fair::max_circle_deviation(arc, P(0, 0), 1.0).max_deviation, 1e-15);
 }
 
+// The exact form is scaled to primitive integers before D and N are built (pieces.h,
+// make_primitive_integer): D is homogeneous of degree 3 and N of degree 8 in (X, Y, W), so they
+// must be c^3 and c^8 times the polynomials of the unscaled rational form, for one c > 0.
+TEST(Metrics, PrimitiveIntegerFormScalesDAndNByPositivePowers) {
+  typedef SC_gmpq::Point_2 P;
+  typedef CGAL::Gmpq Q;
+  typedef fair::Bernstein_polynomial<Q> B;
+  std::mt19937_64 rng(2929);
+  std::uniform_int_distribution<long> num(-999999, 999999), den(1, 999999);
+  for (int trial = 0; trial < 12; ++trial) {
+    const std::size_t degree = 2 + static_cast<std::size_t>(trial % 3);
+    Test_rational_piece<SC_gmpq> piece;
+    for (std::size_t i = 0; i <= degree; ++i) {
+      piece.cp.push_back(P(Q(num(rng), den(rng)), Q(num(rng), den(rng))));
+      piece.w.push_back(Q(1 + den(rng), den(rng)));
+    }
+    std::vector<Q> X, Y, W;
+    for (std::size_t i = 0; i <= degree; ++i) {
+      X.push_back(piece.w[i] * piece.cp[i].x());
+      Y.push_back(piece.w[i] * piece.cp[i].y());
+      W.push_back(piece.w[i]);
+    }
+    const fair::internal::metrics::Homogeneous_form raw{B(X), B(Y), B(W)};
+    const fair::internal::metrics::Homogeneous_form h = fair::internal::metrics::homogeneous_exact(piece);
+    // Primitive integers: denominators 1, gcd of the numerators 1.
+    CGAL::Gmpz g(0);
+    for (const B* p : {&h.X, &h.Y, &h.W})
+      for (const Q& c : p->coefficients()) {
+        ASSERT_EQ(c.denominator(), CGAL::Gmpz(1));
+        g = CGAL::gcd(g, c.numerator());
+      }
+    EXPECT_EQ(g, CGAL::Gmpz(1));
+    const Q c = h.W.coefficients()[0] / W[0];
+    ASSERT_GT(c, Q(0));
+    const auto expect_scaled = [](const B& scaled, const B& unscaled, const Q& factor) {
+      ASSERT_EQ(scaled.degree(), unscaled.degree());
+      for (std::size_t k = 0; k <= scaled.degree(); ++k) EXPECT_EQ(scaled.coefficients()[k], factor * unscaled.coefficients()[k]);
+    };
+    expect_scaled(h.X, raw.X, c);
+    expect_scaled(fair::internal::metrics::curvature_sign_polynomial(h),
+                  fair::internal::metrics::curvature_sign_polynomial(raw), c * c * c);
+    const Q c4 = c * c * c * c;
+    expect_scaled(fair::internal::metrics::curvature_derivative_sign_polynomial(h),
+                  fair::internal::metrics::curvature_derivative_sign_polynomial(raw), c4 * c4);
+  }
+}
+
+// The work caps of the certification (pieces.h): a piece beyond the piece cap is sampled, a curve
+// gets max(3e9, 3e7 per piece); pieces with distinct 12-digit denominators of degree 12 are
+// sampled for N (issue 29 #4: 11 s at degree 30 before), and 300 cheap exact cubics stay certified.
+TEST(Metrics, CertificationWorkIsCapped) {
+  using fair::internal::metrics::Certification_budget;
+  Certification_budget budget(10);  // 3e9
+  EXPECT_FALSE(budget.allows(fair::internal::metrics::max_certified_piece_work * 1.01));
+  for (int k = 0; k < 6; ++k) EXPECT_TRUE(budget.take(5e8)) << k;
+  EXPECT_FALSE(budget.take(5e8));
+  EXPECT_TRUE(budget.take(0));
+  Certification_budget long_curve(1000);  // 3e10
+  for (int k = 0; k < 60; ++k) EXPECT_TRUE(long_curve.take(5e8)) << k;
+  EXPECT_FALSE(long_curve.take(1));
+
+  typedef SC_gmpq::Point_2 P;
+  typedef CGAL::Gmpq Q;
+  std::mt19937_64 rng(2930);
+  std::uniform_int_distribution<long> num(-999999999999L, 999999999999L), den(1, 999999999999L);
+  std::vector<P> cp;
+  std::vector<Q> w;
+  for (int i = 0; i <= 12; ++i) {
+    cp.push_back(P(Q(CGAL::Gmpz(num(rng)), CGAL::Gmpz(den(rng))), Q(CGAL::Gmpz(num(rng)), CGAL::Gmpz(den(rng)))));
+    w.push_back(Q(CGAL::Gmpz(den(rng)), CGAL::Gmpz(den(rng))));
+  }
+  const std::vector<fair::Rational_bezier_2<SC_gmpq>> heavy{fair::Rational_bezier_2<SC_gmpq>(cp, w)};
+  const auto h = fair::internal::metrics::homogeneous_exact(heavy[0]);
+  EXPECT_GT(fair::internal::metrics::predicted_work(h, 8, 6), fair::internal::metrics::max_certified_piece_work);
+  EXPECT_FALSE(fair::curvature_extrema(heavy).certified);
+
+  std::uniform_int_distribution<int> small(-40, 40);
+  std::vector<fair::Bezier_2<SC_gmpq>> cheap;
+  P start(0, 0);
+  for (int i = 0; i < 300; ++i) {
+    const P a(start.x() + small(rng), start.y() + small(rng)), b(a.x() + small(rng), a.y() + small(rng)),
+        e(b.x() + small(rng), b.y() + small(rng));
+    cheap.emplace_back(start, a, b, e);
+    start = e;
+  }
+  EXPECT_TRUE(fair::inflections(cheap).certified);
+  EXPECT_TRUE(fair::curvature_extrema(cheap).certified);
+}
+
 TEST(Metrics, CircleDeviationOfTheCubicQuarterCircle) {
   // The classic cubic approximation of a quarter circle, handle k = 4 (sqrt 2 - 1) / 3: the radial
   // error peaks at about 2.7e-4. The certified candidates must dominate a dense sampling.

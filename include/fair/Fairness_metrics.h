@@ -171,9 +171,10 @@ Circle_deviation max_circle_deviation(const std::vector<Piece>& curve, const typ
                     " must be finite and >= 0");
   Circle_deviation out;
   const double cx = CGAL::to_double(center.x()), cy = CGAL::to_double(center.y());
+  internal::metrics::Certification_budget budget(curve.size());
   for (std::size_t i = 0; i < curve.size(); ++i) {
     internal::metrics::Piece_jet<Piece> jet(curve[i]);
-    const std::vector<double> ts = internal::metrics::circle_deviation_candidates(curve[i], center, out.certified);
+    const std::vector<double> ts = internal::metrics::circle_deviation_candidates(curve[i], center, budget, out.certified);
     for (double t : ts) {
       const internal::metrics::Jet j = jet(t);
       const double d = std::fabs(std::hypot(j.x - cx, j.y - cy) - radius);

@@ -31,12 +31,12 @@ constexpr int generic_deviation_samples = 4096;
 /// points. `certified` is cleared when they come from sampling (generic pieces).
 template <class Piece>
 std::vector<double> circle_deviation_candidates(const Piece& piece, const typename Piece::Point_2& center,
-                                                bool& certified) {
+                                                Certification_budget& budget, bool& certified) {
   std::vector<double> ts{0.0, 1.0};
   if constexpr (is_bernstein_form(kind_of<Piece>)) {
     const Homogeneous_form h = homogeneous_exact(piece);
-    if (polynomial_bits(h.X) + polynomial_bits(h.Y) + polynomial_bits(h.W) > max_certified_polynomial_bits / 4) {
-      certified = false;  // the products below would exceed the cap anyway (features.h)
+    if (!budget.allows(predicted_work(h, 3, 1))) {
+      certified = false;  // G (degree 3 in the form) would exceed the caps (pieces.h)
       for (int k = 1; k < generic_deviation_samples; ++k) ts.push_back(double(k) / generic_deviation_samples);
       return ts;
     }
@@ -44,7 +44,7 @@ std::vector<double> circle_deviation_candidates(const Piece& piece, const typena
     const Bernstein_polynomial<CGAL::Gmpq> Bx = h.X - Cx * h.W, By = h.Y - Cy * h.W;
     const Bernstein_polynomial<CGAL::Gmpq> G =
         (Bx * Bx.derivative() + By * By.derivative()) * h.W - (Bx * Bx + By * By) * h.W.derivative();
-    if (!G.is_zero() && polynomial_bits(G) > max_certified_polynomial_bits) {
+    if (!G.is_zero() && !budget.take(polynomial_work(G))) {
       certified = false;
       for (int k = 1; k < generic_deviation_samples; ++k) ts.push_back(double(k) / generic_deviation_samples);
     } else if (!G.is_zero()) {

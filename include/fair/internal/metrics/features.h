@@ -111,23 +111,26 @@ Feature_report certified_features(const std::vector<Piece>& curve, Feature_kind 
   } else {
     int last = 0;          // last nonzero gap sign along the curve
     int first = 0;         // first nonzero gap sign along the curve
+    Certification_budget budget(curve.size());
     for (std::size_t i = 0; i < curve.size(); ++i) {
       const Homogeneous_form h = homogeneous_exact(curve[i]);
-      // Building D and N multiplies the form's polynomials: a form whose size is already a
-      // quarter of the cap gives polynomials beyond it (degree-40 random p/q: 24 s in the
-      // products alone), so it is sampled without them.
-      if (polynomial_bits(h.X) + polynomial_bits(h.Y) + polynomial_bits(h.W) > max_certified_polynomial_bits / 4) {
+      // Building D (degree 3 in the form) and N (degree 8) costs more than isolating their
+      // roots: a piece whose polynomial would exceed the caps is sampled before any product
+      // (degree-30 random p/q: 11 s in the products alone, issue 29 #4). The prediction is
+      // checked against the budget here, the actual work below.
+      const bool inflection = which == Feature_kind::INFLECTION;
+      if (!budget.allows(predicted_work(h, inflection ? 3 : 8, inflection ? 3 : 6))) {
         report.certified = false;
         sampled_features(curve[i], i, which, last, first, report);
         continue;
       }
       const Bernstein_polynomial<CGAL::Gmpq> p =
-          which == Feature_kind::INFLECTION ? curvature_sign_polynomial(h) : curvature_derivative_sign_polynomial(h);
+          inflection ? curvature_sign_polynomial(h) : curvature_derivative_sign_polynomial(h);
       if (p.is_zero()) {
         report.degenerate_pieces.push_back(i);
         continue;
       }
-      if (polynomial_bits(p) > max_certified_polynomial_bits) {
+      if (!budget.take(polynomial_work(p))) {
         report.certified = false;
         sampled_features(curve[i], i, which, last, first, report);
         continue;

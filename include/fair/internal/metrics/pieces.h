@@ -17,8 +17,11 @@
 #include <fair/internal/common/exact_conversion.h>
 
 #include <CGAL/Gmpq.h>
+#include <CGAL/Gmpz.h>
+#include <gmp.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <type_traits>
@@ -208,6 +211,39 @@ struct Homogeneous_form {
   Bernstein_polynomial<CGAL::Gmpq> X, Y, W;
 };
 
+/// Scales the coefficients of X, Y, W by one positive rational so that they become integers with
+/// no common factor: multiplies by the lcm of their denominators, divides by the gcd of the
+/// numerators. Every polynomial built from the form (D, N of the features, G of the circle
+/// deviation) is homogeneous in (X, Y, W) of a fixed degree k, so the scaling multiplies it by a
+/// positive constant^k: its roots and signs are unchanged. Why: with coordinates p/q of distinct
+/// denominators, every coefficient of a product over the rationals carries the lcm of many
+/// denominators and each rational operation a gcd of that size (issue 29 #4: a degree-30 piece
+/// with random 12-digit p/q spent 11 s in GMP's gcd building N, before the size cap sampled it).
+/// In integer form the size of the form is what the products will carry, so the cap on it
+/// (features.h) decides before any product, and the arithmetic has no large gcds.
+inline void make_primitive_integer(std::vector<CGAL::Gmpq>& X, std::vector<CGAL::Gmpq>& Y, std::vector<CGAL::Gmpq>& W) {
+  struct Integer {  // an mpz_t that clears itself
+    mpz_t v;
+    Integer() { mpz_init(v); }
+    ~Integer() { mpz_clear(v); }
+    Integer(const Integer&) = delete;
+    Integer& operator=(const Integer&) = delete;
+  } l, g;
+  mpz_set_ui(l.v, 1);
+  for (const std::vector<CGAL::Gmpq>* p : {&X, &Y, &W})
+    for (const CGAL::Gmpq& c : *p) mpz_lcm(l.v, l.v, mpq_denref(c.mpq()));
+  const CGAL::Gmpq scale{CGAL::Gmpz(l.v)};
+  for (std::vector<CGAL::Gmpq>* p : {&X, &Y, &W})
+    for (CGAL::Gmpq& c : *p) {
+      c = c * scale;
+      mpz_gcd(g.v, g.v, mpq_numref(c.mpq()));
+    }
+  if (mpz_cmp_ui(g.v, 1) <= 0) return;  // all zero (not a valid piece) or already primitive
+  const CGAL::Gmpq inverse(CGAL::Gmpz(1), CGAL::Gmpz(g.v));
+  for (std::vector<CGAL::Gmpq>* p : {&X, &Y, &W})
+    for (CGAL::Gmpq& c : *p) c = c * inverse;
+}
+
 template <class P>
 Homogeneous_form homogeneous_exact(const P& piece) {
   using common::to_gmpq;
@@ -221,29 +257,78 @@ Homogeneous_form homogeneous_exact(const P& piece) {
     Y.push_back(wi * to_gmpq(cp[i].y()));
     W.push_back(wi);
   }
+  if (kind_of<P> == Piece_kind::POLYNOMIAL_BEZIER) W.assign(1, CGAL::Gmpq(1));
+  make_primitive_integer(X, Y, W);
   Homogeneous_form h;
   h.X = Bernstein_polynomial<CGAL::Gmpq>(X);
   h.Y = Bernstein_polynomial<CGAL::Gmpq>(Y);
-  h.W = kind_of<P> == Piece_kind::POLYNOMIAL_BEZIER ? Bernstein_polynomial<CGAL::Gmpq>(std::vector<CGAL::Gmpq>(1, CGAL::Gmpq(1)))
-                                  : Bernstein_polynomial<CGAL::Gmpq>(W);
+  h.W = Bernstein_polynomial<CGAL::Gmpq>(W);
   return h;
 }
 
-/// Cap on the size of the exact polynomial of one piece (D or N of the
-/// features, the critical-point polynomial of the circle deviation), in bits summed over the
-/// numerators and denominators of its Bernstein coefficients: root isolation costs grow with the
-/// degree times this size, and a degree-40 piece with random 12-digit p/q coordinates took 16 s
-/// (issue 29 #4). Beyond the cap the piece's features are found by sampling (certified = false,
-/// reported); the program's own exact curves stay far below it (doc/fairness_metrics.md).
-constexpr std::size_t max_certified_polynomial_bits = 60000;
+/// Caps on the work of certifying exact polynomials (D or N of the features, G of the circle
+/// deviation), measured as the polynomial's size in bits (summed over the numerators and
+/// denominators of its Bernstein coefficients) times (degree + 1)^2: building it (products of
+/// the form's polynomials) and isolating its roots (Descartes' rule on Bernstein coefficients)
+/// both grow about so. Measured (release, one piece, doc/fairness_metrics.md): 5.6e8 -> 0.15 s,
+/// 1.5e9 -> 0.33 s, 4.6e9 -> 2.4 s, 1.2e10 -> 2.2 s; the 59 exact cubics of `cardinal --exact`
+/// through 60 points: 1.0e9 in all, 0.11 s. A piece whose work would exceed either cap is
+/// sampled instead (certified = false, reported):
+///  - one piece: 5e8 (about 0.15 s); a rational cubic with 12-digit p/q coordinates needs 2e7;
+///  - one curve: max(3e9, 3e7 per piece), so that a file of pieces each just under the piece cap
+///    is not 100 x 0.15 s (issue 29's oracle: under 1 s below 100 pieces), while the program's own
+///    exact curves (at most 2e7 a piece, as above) stay certified at any length.
+constexpr double max_certified_piece_work = 5e8;
+constexpr double min_certified_curve_work = 3e9;
+constexpr double certified_work_per_piece = 3e7;
 
-/// The size of an exact Bernstein polynomial in bits (see max_certified_polynomial_bits).
+/// The size of an exact Bernstein polynomial in bits.
 inline std::size_t polynomial_bits(const Bernstein_polynomial<CGAL::Gmpq>& p) {
   std::size_t bits = 0;
   for (const CGAL::Gmpq& c : p.coefficients())
     bits += mpz_sizeinbase(mpq_numref(c.mpq()), 2) + mpz_sizeinbase(mpq_denref(c.mpq()), 2);
   return bits;
 }
+
+/// The work of certifying p: bits * (degree + 1)^2.
+inline double polynomial_work(const Bernstein_polynomial<CGAL::Gmpq>& p) {
+  const double d1 = static_cast<double>(p.degree()) + 1;
+  return static_cast<double>(polynomial_bits(p)) * d1 * d1;
+}
+
+/// The work of a polynomial homogeneous of degree k in the (primitive integer) form h, of degree
+/// k deg(h) - degree_drop, predicted before it is built (building costs more than isolating):
+/// its coefficients have about k times the bits of the form's largest one (the binomial factors
+/// of the Bernstein products add O(k deg) bits: the prediction is 0.7-1.0 of the actual size,
+/// measured). D of the features: k = 3, degree 3d - 3; N: k = 8, degree 8d - 6; G of the circle
+/// deviation: k = 3, degree 3d - 1.
+inline double predicted_work(const Homogeneous_form& h, std::size_t k, std::size_t degree_drop) {
+  std::size_t largest = 0, degree = 0;
+  for (const Bernstein_polynomial<CGAL::Gmpq>* p : {&h.X, &h.Y, &h.W}) {
+    degree = std::max(degree, p->degree());
+    for (const CGAL::Gmpq& c : p->coefficients()) largest = std::max(largest, mpz_sizeinbase(mpq_numref(c.mpq()), 2));
+  }
+  const double d1 = static_cast<double>(k * degree > degree_drop ? k * degree - degree_drop : 0) + 1;
+  return d1 * static_cast<double>(k * largest) * d1 * d1;
+}
+
+/// The certification work left for one curve (see max_certified_piece_work).
+class Certification_budget {
+public:
+  explicit Certification_budget(std::size_t pieces)
+      : left_(std::max(min_certified_curve_work, certified_work_per_piece * static_cast<double>(pieces))) {}
+  /// Whether one piece may spend `work`.
+  bool allows(double work) const { return work <= max_certified_piece_work && work <= left_; }
+  /// Takes `work` from the budget if one piece may spend it; false (nothing taken) otherwise.
+  bool take(double work) {
+    if (!allows(work)) return false;
+    left_ -= work;
+    return true;
+  }
+
+private:
+  double left_;
+};
 
 } // namespace metrics
 } // namespace internal
