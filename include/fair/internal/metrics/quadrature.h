@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <queue>
 #include <vector>
 
 namespace fair {
@@ -68,24 +67,31 @@ Gk_interval gauss_kronrod_15(F& f, double a, double b, const char* what) {
 /// \throws Non_convergence_error when options.max_subintervals is reached first.
 template <class F>
 Quadrature_estimate adaptive_integral(F f, double a, double b, const Quadrature_options& options, const char* what) {
-  std::priority_queue<Gk_interval> heap;
+  // A binary max-heap on the error, kept in a vector (std::push_heap / pop_heap) so that the
+  // re-summation below is one linear pass: copying and popping a priority_queue cost
+  // O(n log n) per re-summation, most of the time of a run that ends at the cap (a fuzz input,
+  // a near-circle whose curvature variation is rounding noise: issue 29).
+  std::vector<Gk_interval> heap;
+  heap.reserve(std::min<std::size_t>(options.max_subintervals, 1u << 16) + 1);
+  const auto push = [&heap](const Gk_interval& g) {
+    heap.push_back(g);
+    std::push_heap(heap.begin(), heap.end());
+  };
   Quadrature_estimate out;
   const std::size_t m = std::max<std::size_t>(1, options.initial_subintervals);
   double value = 0, error = 0;
   for (std::size_t i = 0; i < m; ++i) {
     const double lo = a + (b - a) * double(i) / double(m), hi = (i + 1 == m) ? b : a + (b - a) * double(i + 1) / double(m);
-    heap.push(gauss_kronrod_15(f, lo, hi, what));
+    push(gauss_kronrod_15(f, lo, hi, what));
   }
   std::size_t count = m;
   auto totals = [&]() {
     // Re-sum from the heap contents to avoid drift from repeated add/subtract.
-    std::priority_queue<Gk_interval> copy = heap;
     value = 0;
     error = 0;
-    while (!copy.empty()) {
-      value += copy.top().kronrod;
-      error += copy.top().error;
-      copy.pop();
+    for (const Gk_interval& g : heap) {
+      value += g.kronrod;
+      error += g.error;
     }
   };
   totals();
@@ -95,16 +101,17 @@ Quadrature_estimate adaptive_integral(F f, double a, double b, const Quadrature_
       throw Non_convergence_error(message(what, ": adaptive quadrature reached ", count,
                                           " subintervals with error estimate ", error, " for value ", value),
                                   count, error);
-    const Gk_interval worst = heap.top();
-    heap.pop();
+    std::pop_heap(heap.begin(), heap.end());
+    const Gk_interval worst = heap.back();
+    heap.pop_back();
     const double mid = 0.5 * (worst.a + worst.b);
     if (!(worst.a < mid && mid < worst.b)) { // interval at machine resolution: cannot refine
-      heap.push(worst);
+      push(worst);
       break;
     }
     const Gk_interval l = gauss_kronrod_15(f, worst.a, mid, what), r = gauss_kronrod_15(f, mid, worst.b, what);
-    heap.push(l);
-    heap.push(r);
+    push(l);
+    push(r);
     ++count;
     value += l.kronrod + r.kronrod - worst.kronrod;
     error += l.error + r.error - worst.error;
