@@ -29,10 +29,8 @@
 
 namespace fair {
 
-/// The distance from Optimal_curve_2::spline() to the optimal polygon that the smoothing fit
-/// allows, as a fraction of the polygon's resolution (rotation-invariant extent / rho):
-/// doc/optimal_curves.md, "The smoothing spline".
-constexpr double optimal_spline_distance_fraction = 0.9;
+// fair::optimal_spline_distance_fraction (0.9 of the resolution): internal/spline/smoothing_runs.h,
+// shared with the hierarchy, which refines the polygon until the spline can keep it.
 
 /// The optimal curve through `points` (closed: no repeated last point): the optimal polygon and
 /// the C2 cubic smoothing spline of it through the points (pieces(), spline()).

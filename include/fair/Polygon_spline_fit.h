@@ -47,6 +47,7 @@
 #include <fair/internal/optimal/spline_fit.h>
 #include <fair/internal/spline/polygon_fit.h>
 #include <fair/internal/spline/smoothing_fit.h>
+#include <fair/internal/spline/smoothing_runs.h>
 
 #include <CGAL/Simple_cartesian.h>
 
