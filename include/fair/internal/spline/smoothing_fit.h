@@ -187,6 +187,8 @@ struct Smoothing_run {
   double distance = 0;  ///< polygon_distance of the pieces
   int solves = 0;       ///< linear solves (bisection steps) spent
   bool met = true;      ///< distance <= tolerance
+  std::vector<double> d;         ///< the inverse weights d_k = 1 / w_k used (0: interpolated)
+  std::vector<double> residual;  ///< |c(t_k) - v_k|
 };
 
 /// The caps of the bisection: log10(sigma / L^4) in [-20, 0] (L the run's chord length; at 0 the
@@ -195,6 +197,12 @@ struct Smoothing_run {
 /// within [0.9, 1] of the tolerance.
 constexpr double smoothing_log_sigma_min = -20, smoothing_log_sigma_max = 0;
 constexpr int smoothing_max_solves = 40;
+/// The band steps after the bisection (file comment, "Per-vertex weights"): at most
+/// smoothing_band_steps solves, the residual aimed at smoothing_band_target of the tolerance (and
+/// that factor again after a step that left the tolerance), each weight changed by at most
+/// smoothing_band_clamp per step.
+constexpr int smoothing_band_steps = 20;
+constexpr double smoothing_band_target = 0.9, smoothing_band_clamp = 4;
 
 /// The smoothing spline of one run (t: its chord breakpoints; hard[k]: v_k interpolated) with the
 /// most smoothing whose distance to the polygon is <= tolerance. When even the interpolant of
@@ -212,17 +220,25 @@ inline Smoothing_run smoothing_fit_run(const std::vector<optimal::Vec2>& v, cons
   const double mean = length / static_cast<double>(t.size() - 1);
   const double unit_weight = mean * mean * mean;
   Smoothing_run out;
-  auto evaluate = [&](double sigma, Smoothing_run& r) {
-    for (std::size_t k = 0; k < n; ++k) d[k] = (hard[k] || !(sigma > 0)) ? 0 : sigma * a[k] * a[k] / unit_weight;
+  // One solve with the inverse weights dd: the pieces, their distance and the residuals in r.
+  auto solve_with = [&](const std::vector<double>& dd, Smoothing_run& r) {
     Reinsch_spline s;
-    const bool solved = smoothing_spline_solve(v, t, closed, d, s);
+    const bool solved = smoothing_spline_solve(v, t, closed, dd, s);
     ++out.solves;
-    FAIR_ASSERT_MSG(solved || sigma > 0, "fair::fit_smoothing_spline_runs: the interpolation system is singular");
-    r.sigma = sigma;
     r.distance = std::numeric_limits<double>::infinity();  // too much smoothing for double: not taken
-    if (!solved) return;
+    if (!solved) return false;
     r.pieces = reinsch_bezier_pieces(s, t);
     r.distance = polygon_distance(r.pieces, v);
+    r.d = dd;
+    r.residual.resize(n);
+    for (std::size_t k = 0; k < n; ++k) r.residual[k] = std::hypot(s.y[k][0] - v[k][0], s.y[k][1] - v[k][1]);
+    return true;
+  };
+  auto evaluate = [&](double sigma, Smoothing_run& r) {
+    for (std::size_t k = 0; k < n; ++k) d[k] = (hard[k] || !(sigma > 0)) ? 0 : sigma * a[k] * a[k] / unit_weight;
+    const bool solved = solve_with(d, r);
+    FAIR_ASSERT_MSG(solved || sigma > 0, "fair::fit_smoothing_spline_runs: the interpolation system is singular");
+    r.sigma = sigma;
   };
   const double unit = length * length * length * length;
   evaluate(0, out);
@@ -246,6 +262,27 @@ inline Smoothing_run smoothing_fit_run(const std::vector<optimal::Vec2>& v, cons
         hi = mid;
       }
     }
+  // The band (file comment, "Per-vertex weights"): d_k <- d_k (tau / r_k)^gamma, each step
+  // accepted only when the whole distance stays within the tolerance, else tau shrinks.
+  double target = smoothing_band_target * tolerance;
+  Smoothing_run current = best;
+  for (int it = 0; it < smoothing_band_steps && best.sigma > 0; ++it) {
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!(current.d[k] > 0)) {
+        d[k] = 0;
+        continue;
+      }
+      const double f = std::sqrt(target / std::max(current.residual[k], 1e-6 * tolerance));  // gamma = 1/2
+      d[k] = current.d[k] * std::min(smoothing_band_clamp, std::max(1 / smoothing_band_clamp, f));
+    }
+    solve_with(d, trial);
+    if (trial.distance <= tolerance) {
+      best = trial;
+      current = trial;
+    } else {
+      target *= smoothing_band_target;
+    }
+  }
   best.solves = out.solves;
   best.met = true;
   return best;
