@@ -151,24 +151,24 @@ inline std::vector<std::array<optimal::Vec2, 4>> reinsch_bezier_pieces(const Rei
   return out;
 }
 
-/// The largest distance of a point of the cubic piece b from the segment [e0, e1]: 32 samples,
-/// then golden-section refinement around the largest (as optimal::piece_chord_distance).
-inline double piece_edge_distance(const std::array<optimal::Vec2, 4>& b, const optimal::Vec2& e0,
-                                  const optimal::Vec2& e1) {
+/// The largest distance of a point of the piece b from the segment [e0, e1]: 32 samples, then
+/// golden-section refinement around the largest (as optimal::piece_chord_distance).
+template <std::size_t N>
+double piece_edge_distance(const std::array<optimal::Vec2, N>& b, const optimal::Vec2& e0, const optimal::Vec2& e1) {
   return optimal::sampled_segment_distance(optimal::power_coefficients(b), e0, e1);
 }
 
-/// The distance of the smoothing spline's pieces to the polygon v: the largest of the pieces'
-/// distances to their edges and of |c(t_k) - v_k|. A piece is refined only when the distance of
-/// its farthest Bezier point from the edge exceeds the largest found so far: the distance to a
-/// segment is convex and the piece lies in the convex hull of its Bezier points, so that bound is
-/// an upper bound (most pieces are skipped; the result is the same).
-inline double polygon_distance(const std::vector<std::array<optimal::Vec2, 4>>& pieces,
-                               const std::vector<optimal::Vec2>& v) {
+/// The distance of the smoothing spline's pieces (degree N - 1) to the polygon v: the largest of
+/// the pieces' distances to their edges and of |c(t_k) - v_k|. A piece is refined only when the
+/// distance of its farthest Bezier point from the edge exceeds the largest found so far: the
+/// distance to a segment is convex and the piece lies in the convex hull of its Bezier points, so
+/// that bound is an upper bound (most pieces are skipped; the result is the same).
+template <std::size_t N>
+double polygon_distance(const std::vector<std::array<optimal::Vec2, N>>& pieces, const std::vector<optimal::Vec2>& v) {
   double out = 0;
   const std::size_t n = v.size();
-  for (std::size_t i = 0; i < pieces.size(); ++i) {  // the vertices: |c(t_k) - v_k| (open: c(t_N) = b_3 of the last)
-    const optimal::Vec2 &a = pieces[i][0], &b = pieces[i][3], &p = v[i], &q = v[(i + 1) % n];
+  for (std::size_t i = 0; i < pieces.size(); ++i) {  // the vertices: |c(t_k) - v_k| (open: the last point of the last)
+    const optimal::Vec2 &a = pieces[i][0], &b = pieces[i][N - 1], &p = v[i], &q = v[(i + 1) % n];
     out = std::max({out, std::hypot(a[0] - p[0], a[1] - p[1]), std::hypot(b[0] - q[0], b[1] - q[1])});
   }
   for (std::size_t i = 0; i < pieces.size(); ++i) {
@@ -180,21 +180,23 @@ inline double polygon_distance(const std::vector<std::array<optimal::Vec2, 4>>& 
   return out;
 }
 
-/// One run's fit and how its smoothing weight was found.
-struct Smoothing_run {
-  std::vector<std::array<optimal::Vec2, 4>> pieces;
-  double sigma = 0;     ///< the smoothing weight used (0: every vertex interpolated)
+/// One run's fit (pieces of degree N - 1) and how its smoothing weight was found.
+template <std::size_t N>
+struct Smoothing_run_of {
+  std::vector<std::array<optimal::Vec2, N>> pieces;
+  double sigma = 0;     ///< the smoothing weight of the bisection (0: every vertex interpolated)
   double distance = 0;  ///< polygon_distance of the pieces
-  int solves = 0;       ///< linear solves (bisection steps) spent
+  int solves = 0;       ///< linear solves (bisection and band steps) spent
   bool met = true;      ///< distance <= tolerance
   std::vector<double> d;         ///< the inverse weights d_k = 1 / w_k used (0: interpolated)
   std::vector<double> residual;  ///< |c(t_k) - v_k|
 };
+typedef Smoothing_run_of<4> Smoothing_run;
 
-/// The caps of the bisection: log10(sigma / L^4) in [-20, 0] (L the run's chord length; at 0 the
-/// free vertices barely pull: nearly the natural spline through the hard ones, and larger sigma
-/// drowns R in rounding), at most smoothing_max_solves solves, stopping once the distance is
-/// within [0.9, 1] of the tolerance.
+/// The caps of the bisection: log10(sigma / L^(p+1)) in [-20, 0] (L the run's chord length, p = 3
+/// cubic, 5 quintic; at 0 the free vertices barely pull: nearly the natural spline through the hard
+/// ones, and larger sigma drowns the energy matrix in rounding), at most smoothing_max_solves
+/// solves, stopping once the distance is within [0.9, 1] of the tolerance.
 constexpr double smoothing_log_sigma_min = -20, smoothing_log_sigma_max = 0;
 constexpr int smoothing_max_solves = 40;
 /// The band steps after the bisection (file comment, "Per-vertex weights"): at most
@@ -204,11 +206,16 @@ constexpr int smoothing_max_solves = 40;
 constexpr int smoothing_band_steps = 20;
 constexpr double smoothing_band_target = 0.9, smoothing_band_clamp = 4;
 
-/// The smoothing spline of one run (t: its chord breakpoints; hard[k]: v_k interpolated) with the
-/// most smoothing whose distance to the polygon is <= tolerance. When even the interpolant of
-/// every vertex (sigma = 0) is farther, that interpolant is returned with met = false.
-inline Smoothing_run smoothing_fit_run(const std::vector<optimal::Vec2>& v, const std::vector<double>& t, bool closed,
-                                       const std::vector<bool>& hard, double tolerance) {
+/// The smoothing fit of one run (t: its chord breakpoints; hard[k]: v_k interpolated) with the
+/// most smoothing whose distance to the polygon is <= tolerance, for the energy of order p
+/// (3: the cubic's int |c''|^2; 5: the quintic's int |c'''|^2; the weights scale as h^-p).
+/// solve(d, pieces, values) solves the smoothing system for the inverse weights d (false when it
+/// is not positive definite to working precision). When even the interpolant of every vertex
+/// (sigma = 0) is farther, that interpolant is returned with met = false.
+template <std::size_t N, class Solve>
+Smoothing_run_of<N> smoothing_fit_run_with(const std::vector<optimal::Vec2>& v, const std::vector<double>& t, bool closed,
+                                           const std::vector<bool>& hard, double tolerance, int p, Solve solve) {
+  typedef Smoothing_run_of<N> Run;
   const std::size_t n = v.size();
   const double length = t.back() - t.front();
   std::vector<double> a(n), d(n);
@@ -218,36 +225,33 @@ inline Smoothing_run smoothing_fit_run(const std::vector<optimal::Vec2>& v, cons
     a[k] = (hl + hr) / 2;
   }
   const double mean = length / static_cast<double>(t.size() - 1);
-  const double unit_weight = mean * mean * mean;
-  Smoothing_run out;
+  const double unit_weight = std::pow(mean, p), unit = std::pow(length, p + 1);
+  Run out;
   // One solve with the inverse weights dd: the pieces, their distance and the residuals in r.
-  auto solve_with = [&](const std::vector<double>& dd, Smoothing_run& r) {
-    Reinsch_spline s;
-    const bool solved = smoothing_spline_solve(v, t, closed, dd, s);
+  auto solve_with = [&](const std::vector<double>& dd, Run& r) {
+    std::vector<optimal::Vec2> y;
     ++out.solves;
     r.distance = std::numeric_limits<double>::infinity();  // too much smoothing for double: not taken
-    if (!solved) return false;
-    r.pieces = reinsch_bezier_pieces(s, t);
+    if (!solve(dd, r.pieces, y)) return false;
     r.distance = polygon_distance(r.pieces, v);
     r.d = dd;
     r.residual.resize(n);
-    for (std::size_t k = 0; k < n; ++k) r.residual[k] = std::hypot(s.y[k][0] - v[k][0], s.y[k][1] - v[k][1]);
+    for (std::size_t k = 0; k < n; ++k) r.residual[k] = std::hypot(y[k][0] - v[k][0], y[k][1] - v[k][1]);
     return true;
   };
-  auto evaluate = [&](double sigma, Smoothing_run& r) {
+  auto evaluate = [&](double sigma, Run& r) {
     for (std::size_t k = 0; k < n; ++k) d[k] = (hard[k] || !(sigma > 0)) ? 0 : sigma * a[k] * a[k] / unit_weight;
     const bool solved = solve_with(d, r);
     FAIR_ASSERT_MSG(solved || sigma > 0, "fair::fit_smoothing_spline_runs: the interpolation system is singular");
     r.sigma = sigma;
   };
-  const double unit = length * length * length * length;
   evaluate(0, out);
   if (!(tolerance > 0)) return out;  // interpolation of every vertex asked for
   if (!(out.distance <= tolerance)) {
     out.met = false;
     return out;
   }
-  Smoothing_run best = out, trial;
+  Run best = out, trial;
   double lo = smoothing_log_sigma_min, hi = smoothing_log_sigma_max;
   evaluate(unit * std::pow(10.0, hi), trial);
   if (trial.distance <= tolerance) best = trial;
@@ -262,17 +266,17 @@ inline Smoothing_run smoothing_fit_run(const std::vector<optimal::Vec2>& v, cons
         hi = mid;
       }
     }
-  // The band (file comment, "Per-vertex weights"): d_k <- d_k (tau / r_k)^gamma, each step
+  // The band (file comment, "Per-vertex weights"): d_k <- d_k (tau / r_k)^(1/2), each step
   // accepted only when the whole distance stays within the tolerance, else tau shrinks.
   double target = smoothing_band_target * tolerance;
-  Smoothing_run current = best;
+  Run current = best;
   for (int it = 0; it < smoothing_band_steps && best.sigma > 0; ++it) {
     for (std::size_t k = 0; k < n; ++k) {
       if (!(current.d[k] > 0)) {
         d[k] = 0;
         continue;
       }
-      const double f = std::sqrt(target / std::max(current.residual[k], 1e-6 * tolerance));  // gamma = 1/2
+      const double f = std::sqrt(target / std::max(current.residual[k], 1e-6 * tolerance));
       d[k] = current.d[k] * std::min(smoothing_band_clamp, std::max(1 / smoothing_band_clamp, f));
     }
     solve_with(d, trial);
@@ -286,6 +290,20 @@ inline Smoothing_run smoothing_fit_run(const std::vector<optimal::Vec2>& v, cons
   best.solves = out.solves;
   best.met = true;
   return best;
+}
+
+/// The cubic smoothing spline of one run (smoothing_fit_run_with, p = 3, Reinsch's system).
+inline Smoothing_run smoothing_fit_run(const std::vector<optimal::Vec2>& v, const std::vector<double>& t, bool closed,
+                                       const std::vector<bool>& hard, double tolerance) {
+  return smoothing_fit_run_with<4>(v, t, closed, hard, tolerance, 3,
+                                   [&](const std::vector<double>& d, std::vector<std::array<optimal::Vec2, 4>>& pieces,
+                                       std::vector<optimal::Vec2>& y) {
+                                     Reinsch_spline s;
+                                     if (!smoothing_spline_solve(v, t, closed, d, s)) return false;
+                                     pieces = reinsch_bezier_pieces(s, t);
+                                     y = s.y;
+                                     return true;
+                                   });
 }
 
 } // namespace spline
