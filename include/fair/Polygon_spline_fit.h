@@ -218,7 +218,9 @@ struct Polygon_smoothing_fit {
 /// interval at vertex k, hbar the run's mean: the fit follows the polygon where it is fine),
 /// with the largest sigma (bisection on log sigma, at most 40 solves per run) whose distance to the
 /// polygon (each piece from the edge it replaces, and |c(t_k) - v_k|) is <= `max_distance`, and
-/// within 0.9 of it where the bisection reaches it. Open runs have natural ends (c'' = 0),
+/// within 0.9 of it where the bisection reaches it; then up to 20 band steps re-weight the free
+/// vertices one by one towards the band-constrained spline (every free vertex up to 0.9
+/// max_distance away; internal/spline/smoothing_fit.h), each kept only within `max_distance`. Open runs have natural ends (c'' = 0),
 /// closed ones without corners are periodic. max_distance = 0 gives the natural C2 interpolant of
 /// every vertex. When that interpolant is already farther than `max_distance`, a run keeps it and
 /// report.tolerance_met is false. Derivation: internal/spline/smoothing_fit.h and the doc.
@@ -240,11 +242,7 @@ Polygon_smoothing_fit<K> fit_smoothing_spline_runs(const std::vector<typename K:
     internal::require(c < n, fn, ": interpolated vertex ", c, " is not a vertex of the polygon of ", n, " vertices");
   const double scale = fit_scale(raw);
   const std::vector<V> p = scaled(raw, 1 / scale);
-  std::sort(corners.begin(), corners.end());
-  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
-  if (!closed)
-    corners.erase(std::remove_if(corners.begin(), corners.end(), [n](std::size_t c) { return c == 0 || c + 1 == n; }),
-                  corners.end());
+  corners = normalised_corners(std::move(corners), n, closed);
   std::vector<bool> hard(n, false);
   for (std::size_t c : interpolated) hard[c] = true;
   // At a corner the run's first edge is kept too (its other vertex interpolated): the optimal
@@ -256,15 +254,9 @@ Polygon_smoothing_fit<K> fit_smoothing_spline_runs(const std::vector<typename K:
     hard[(c + n - 1) % n] = true;
   }
   if (!closed) hard.front() = hard.back() = true;
-  std::vector<std::size_t> ends;  // run r from ends[r] to ends[r + 1]
-  const bool periodic = closed && corners.empty();
-  if (periodic) ends = {0, n - 1};  // the one periodic run (its closing edge included)
-  else {
-    if (!closed) ends.push_back(0);
-    ends.insert(ends.end(), corners.begin(), corners.end());
-    if (closed) ends.push_back(corners.front() + n);  // wraps around
-    else ends.push_back(n - 1);
-  }
+  const Run_layout layout = run_layout(n, closed, corners);  // run r from ends[r] to ends[r + 1]
+  const std::vector<std::size_t>& ends = layout.ends;
+  const bool periodic = layout.periodic;
   Polygon_smoothing_fit<K> out{{{}, {}, 0.0}, {}};
   out.report.tolerance = max_distance;
   for (std::size_t r = 0; r + 1 < ends.size(); ++r) {

@@ -29,6 +29,20 @@
 // over vertices of |c(t_k) - v_k|) is at most the tolerance and, when the bisection can, within
 // [0.9, 1] of it: the most smoothing the tolerance allows. The distance refines a piece only when
 // its Bezier hull can exceed the largest distance found so far (polygon_distance).
+//
+// Per-vertex weights (the band). The tolerance asks for the band-constrained spline
+//   min int |c''|^2  subject to  |c(t_k) - v_k| <= tau at the free vertices, c(t_k) = v_k at the hard ones.
+// Its Lagrangian int |c''|^2 + sum mu_k (|c(t_k) - v_k|^2 - tau^2), mu_k >= 0, is J with w_k = mu_k,
+// so for fixed multipliers the minimiser is the smoothing spline above with d_k = 1/mu_k, whose
+// residual is r_k = c(t_k) - v_k = -d_k (Q g)_k; complementary slackness asks |r_k| = tau wherever
+// mu_k > 0, i.e. mu_k = |(Q g)_k| / tau: a fixed point of d_k <- d_k tau / |r_k|. A single sigma
+// spends the tolerance only at the few vertices that bind (the weight law a_k^-2 is a guess of
+// where the fit may move); after the bisection, smoothing_band_steps damped steps
+//   d_k <- d_k (tau / |r_k|)^(1/2),  the factor clamped to [1/4, 4],  tau = 0.9 tolerance,
+// let every free vertex use it. A step is kept only when the whole distance (pieces included: a
+// piece between two vertices at tau can bulge beyond it) stays within the tolerance; otherwise
+// tau shrinks by 0.9 and the step is retried from the last kept weights. (No convergence proof:
+// measured on the 117 Quick, Draw! strokes, doc/optimal_curves.md.)
 
 #ifndef FAIR_INTERNAL_SPLINE_SMOOTHING_FIT_H
 #define FAIR_INTERNAL_SPLINE_SMOOTHING_FIT_H

@@ -9,10 +9,11 @@
 //
 // Form. Piece i is the quintic Hermite interpolant of (p, m, s) = value, first and second
 // derivative at t_i and t_{i+1} (internal/optimal/spline_fit.h), so every such curve is C2 and
-// int |c'''|^2 = sum_i z_i^T K_i z_i, z_i = (p_i, p_{i+1}, m_i, H_i s_i, m_{i+1}, H_{i+1} s_{i+1}),
-// K_i = S M S / h_i^5 (M = quintic_jerk_matrix, S = diag(1, 1, h, h^2/H_i, h, h^2/H_{i+1}), H the
-// mean interval at a knot: a scaling of the unknowns only). J is a quadratic in the unknowns
-// u = (p_k, m_k, H_k s_k) per knot (p_k fixed at v_k on the hard knots); its minimiser solves
+// int |c'''|^2 = sum_i z_i^T K_i z_i, z_i = (p_i, p_{i+1}, H_i m_i, H_i^2 s_i, H_{i+1} m_{i+1},
+// H_{i+1}^2 s_{i+1}), K_i = S M S / h_i^5 (M = quintic_jerk_matrix, S = diag(1, 1, h/H_i, h^2/H_i^2,
+// h/H_{i+1}, h^2/H_{i+1}^2), H the mean interval at a knot: a scaling of the unknowns only, which
+// gives all of them the unit of a length and the entries of K_i one order, h^-5). J is a quadratic in the unknowns
+// u = (p_k, H_k m_k, H_k^2 s_k) per knot (p_k fixed at v_k on the hard knots); its minimiser solves
 //   (sum_i P_i^T K_i P_i + W) u = W v,    W = diag(w_k on the p_k of the free knots),
 // with the hard p_k eliminated (identity rows, their columns moved to the right-hand side). With 3
 // unknowns per knot ordered knot by knot a piece couples indices 3i .. 3i + 5: half-bandwidth 5,
@@ -67,7 +68,7 @@ inline bool smoothing_quintic_solve(const std::vector<optimal::Vec2>& v, const s
   for (std::size_t i = 0; i < edges; ++i) {
     const std::size_t j = (i + 1) % n;
     const double hi = h[i], scale = 1 / (hi * hi * hi * hi * hi);
-    const double S[6] = {1, 1, hi, hi * hi / H[i], hi, hi * hi / H[j]};
+    const double S[6] = {1, 1, hi / H[i], hi * hi / (H[i] * H[i]), hi / H[j], hi * hi / (H[j] * H[j])};
     const std::size_t u[6] = {3 * i, 3 * j, 3 * i + 1, 3 * i + 2, 3 * j + 1, 3 * j + 2};
     // a local index is fixed when it is the value of a hard knot
     const bool fixed[6] = {hard(i), hard(j), false, false, false, false};
@@ -100,8 +101,8 @@ inline bool smoothing_quintic_solve(const std::vector<optimal::Vec2>& v, const s
   for (std::size_t k = 0; k < n; ++k)
     for (int x = 0; x < 2; ++x) {
       y[k][x] = hard(k) ? v[k][x] : rhs[x][3 * k];  // exact on the hard knots
-      m[k][x] = rhs[x][3 * k + 1];
-      s[k][x] = rhs[x][3 * k + 2] / H[k];
+      m[k][x] = rhs[x][3 * k + 1] / H[k];
+      s[k][x] = rhs[x][3 * k + 2] / (H[k] * H[k]);
     }
   pieces = optimal::quintic_bezier_pieces(y, t, m, s);
   return true;
