@@ -198,7 +198,7 @@ struct Spline_smoothing_report {
   double tolerance = 0;  ///< the distance to the polygon asked for
   /// Per run: sigma / L^4 (L the run's chord length; scale-free): 0 when every vertex is interpolated.
   std::vector<double> smoothing;
-  std::vector<int> solves;  ///< per run: linear solves of the bisection (at most 40)
+  std::vector<int> solves;  ///< per run: linear solves of the bisection and the band steps (at most 40 together)
   bool tolerance_met = true;  ///< false when a run's interpolant of every vertex is already farther
 };
 
@@ -216,9 +216,9 @@ struct Polygon_smoothing_fit {
 /// polygon, and elsewhere minimises
 ///   int |c''|^2 dt + sum_k hbar^3 |c(t_k) - v_k|^2 / (sigma a_k^2)   (Reinsch; a_k the mean
 /// interval at vertex k, hbar the run's mean: the fit follows the polygon where it is fine),
-/// with the largest sigma (bisection on log sigma, at most 40 solves per run) whose distance to the
+/// with the largest sigma (bisection on log sigma; at most 40 solves per run with the band steps) whose distance to the
 /// polygon (each piece from the edge it replaces, and |c(t_k) - v_k|) is <= `max_distance`, and
-/// within 0.9 of it where the bisection reaches it; then up to 20 band steps re-weight the free
+/// within 0.9 of it where the bisection reaches it; then up to 25 band steps re-weight the free
 /// vertices one by one towards the band-constrained spline (every free vertex up to 0.9
 /// max_distance away; internal/spline/smoothing_fit.h), each kept only within `max_distance`. Open runs have natural ends (c'' = 0),
 /// closed ones without corners are periodic. max_distance = 0 gives the natural C2 interpolant of

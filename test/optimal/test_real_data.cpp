@@ -10,7 +10,7 @@
 //    expected (none beyond the input's but on six strokes and Greenland: doc/optimal_curves.md);
 //  - the spline (the smoothing spline of Optimal_curve_2::spline()) keeps the curve's shape: its
 //    certified inflections and curvature extrema (Fairness_metrics.h) as expected, and over the set
-//    the medians measured (inflections per input point 0.333 / 0.467, extrema 1.091 / 1.222 at the
+//    the medians measured (inflections per input point 0.308 / 0.500, extrema 1.100 / 1.250 at the
 //    defaults / lambda = 0.5; the issue's targets: inflections
 //    median <= 0.5, max <= 1.5; extrema median <= 1.5: all held at both settings);
 //  - the spline within the polygon's resolution on every curve: the hierarchy refines the polygon
@@ -131,7 +131,7 @@ struct Setting {
   const char* name;
   double lambda, inflections, extrema;
 };
-const std::vector<Setting> settings = {{"defaults", -1, 0.34, 1.10}, {"lambda 0.5", 0.5, 0.5, 1.23}};
+const std::vector<Setting> settings = {{"defaults", -1, 0.31, 1.10}, {"lambda 0.5", 0.5, 0.5, 1.25}};
 
 TEST(OptimalRealData, HandDrawnCurvesAreFairAtTheDefaultsAndAtLambdaHalf) {
   const std::vector<Real_curve> curves = hand_drawn();
@@ -157,7 +157,7 @@ TEST(OptimalRealData, HandDrawnCurvesAreFairAtTheDefaultsAndAtLambdaHalf) {
     out << "# test/optimal/test_real_data.cpp: per curve and setting: inflections, curvature extrema, extent_ratio,\n"
         << "# self_intersections, input_self_intersections (GCC 12 -O3)\n"
         << "# Rewritten (issue 25 §3, measured): the band steps of the smoothing fit moved the spline's inflections\n"
-        << "# (102 curve-settings down, 68 up; sum 1104 -> 1032) and extrema (142 down, 9 up; 4147 -> 3152); the\n"
+        << "# (100 curve-settings down, 59 up; sum 1104 -> 1006) and extrema (145 down, 16 up; 4147 -> 3156); the\n"
         << "# spline-resolution pass refined 12 polygons (extent_ratio within 0.4 %) and Greenland's (its loops\n"
         << "# cross more refined edges: 70 -> 76 and 36 -> 44 self-intersecting edge pairs).\n";
   }
@@ -209,7 +209,9 @@ TEST(OptimalRealData, HandDrawnCurvesAreFairAtTheDefaultsAndAtLambdaHalf) {
                 beyond_resolution, interpolants, median(polygon_inflections),
                 *std::max_element(polygon_inflections.begin(), polygon_inflections.end()));
     EXPECT_LE(median(inflections), setting.inflections) << setting.name;
-    EXPECT_LE(worst_inflections, 1.5) << setting.name;  // the issue's max (reached by the smoothing spline)
+    // the issue's max (reached by the smoothing spline; measured 1.333 / 1.25: one 3-point stroke with
+    // two roots of the curvature at its natural ends, doc/optimal_curves.md "How fragile the counts are")
+    EXPECT_LE(worst_inflections, 1.5) << setting.name;
     EXPECT_LE(median(extrema), setting.extrema) << setting.name;
   }
 }

@@ -37,7 +37,7 @@
 // residual is r_k = c(t_k) - v_k = -d_k (Q g)_k; complementary slackness asks |r_k| = tau wherever
 // mu_k > 0, i.e. mu_k = |(Q g)_k| / tau: a fixed point of d_k <- d_k tau / |r_k|. A single sigma
 // spends the tolerance only at the few vertices that bind (the weight law a_k^-2 is a guess of
-// where the fit may move); after the bisection, smoothing_band_steps damped steps
+// where the fit may move); after the bisection, smoothing_band_steps (25) damped steps
 //   d_k <- d_k (tau / |r_k|)^(1/2),  the factor clamped to [1/4, 4],  tau = 0.9 tolerance,
 // let every free vertex use it. A step is kept only when the whole distance (pieces included: a
 // piece between two vertices at tau can bulge beyond it) stays within the tolerance; otherwise
@@ -49,6 +49,7 @@
 
 #include <fair/Errors.h>
 #include <fair/internal/linear_algebra/symmetric_band.h>
+#include <fair/internal/linear_algebra/tridiagonal.h>
 #include <fair/internal/optimal/spline_fit.h>
 #include <fair/internal/optimal/vec2.h>
 
@@ -141,6 +142,31 @@ inline bool smoothing_spline_solve(const std::vector<optimal::Vec2>& v, const st
       out.y[k][static_cast<std::size_t>(c)] -= d[k] * qg;
     }
   }
+  // g again from y: R g = Q^T y (tridiagonal, strictly diagonally dominant: well conditioned), so
+  // that the pieces of (y, g) are C2 to rounding whatever the condition of the system above (weights
+  // spread over many orders, as the band steps make them, leave its g accurate only to ~1e-10; its
+  // pieces then miss C1 by that much and the B-spline conversion moves the interpolated vertices).
+  std::vector<double> ra(unknowns), rb(unknowns), rc(unknowns);
+  for (std::size_t r = 0; r < unknowns; ++r) {
+    const long j = closed ? static_cast<long>(r) : static_cast<long>(r) + 1;
+    ra[r] = h(j - 1) / 6;
+    rb[r] = (h(j - 1) + h(j)) / 3;
+    rc[r] = h(j) / 6;
+  }
+  for (std::size_t c = 0; c < 2; ++c) {
+    std::vector<double> qy(unknowns);
+    for (std::size_t r = 0; r < unknowns; ++r) {
+      const long j = closed ? static_cast<long>(r) : static_cast<long>(r) + 1;
+      const std::size_t jm = static_cast<std::size_t>(closed ? (j + static_cast<long>(nv) - 1) % static_cast<long>(nv) : j - 1);
+      const std::size_t jp = static_cast<std::size_t>(closed ? (j + 1) % static_cast<long>(nv) : j + 1);
+      const std::size_t jj = static_cast<std::size_t>(j);
+      qy[r] = (out.y[jp][c] - out.y[jj][c]) / h(j) - (out.y[jj][c] - out.y[jm][c]) / h(j - 1);
+    }
+    const std::vector<double> g = closed && unknowns >= 3 ? linear_algebra::solve_cyclic_tridiagonal(ra, rb, rc, qy)
+                                  : closed ? std::vector<double>() : linear_algebra::solve_tridiagonal(ra, rb, rc, qy);
+    if (g.empty()) continue;  // closed runs have >= 3 vertices (fit_smoothing_spline_runs); kept as solved
+    for (std::size_t r = 0; r < unknowns; ++r) out.g[closed ? r : r + 1][c] = g[r];
+  }
   return true;
 }
 
@@ -210,14 +236,15 @@ typedef Smoothing_run_of<4> Smoothing_run;
 /// The caps of the bisection: log10(sigma / L^(p+1)) in [-20, 0] (L the run's chord length, p = 3
 /// cubic, 5 quintic; at 0 the free vertices barely pull: nearly the natural spline through the hard
 /// ones, and larger sigma drowns the energy matrix in rounding), at most smoothing_max_solves
-/// solves, stopping once the distance is within [0.9, 1] of the tolerance.
+/// solves (bisection and band steps together), stopping once the distance is within [0.9, 1] of
+/// the tolerance.
 constexpr double smoothing_log_sigma_min = -20, smoothing_log_sigma_max = 0;
 constexpr int smoothing_max_solves = 40;
 /// The band steps after the bisection (file comment, "Per-vertex weights"): at most
-/// smoothing_band_steps solves, the residual aimed at smoothing_band_target of the tolerance (and
+/// smoothing_band_steps solves (and smoothing_max_solves in all), the residual aimed at smoothing_band_target of the tolerance (and
 /// that factor again after a step that left the tolerance), each weight changed by at most
 /// smoothing_band_clamp per step.
-constexpr int smoothing_band_steps = 20;
+constexpr int smoothing_band_steps = 25;
 constexpr double smoothing_band_target = 0.9, smoothing_band_clamp = 4;
 
 /// The smoothing fit of one run (t: its chord breakpoints; hard[k]: v_k interpolated) with the
@@ -284,7 +311,7 @@ Smoothing_run_of<N> smoothing_fit_run_with(const std::vector<optimal::Vec2>& v, 
   // accepted only when the whole distance stays within the tolerance, else tau shrinks.
   double target = smoothing_band_target * tolerance;
   Run current = best;
-  for (int it = 0; it < smoothing_band_steps && best.sigma > 0; ++it) {
+  for (int it = 0; it < smoothing_band_steps && best.sigma > 0 && out.solves < smoothing_max_solves; ++it) {
     for (std::size_t k = 0; k < n; ++k) {
       if (!(current.d[k] > 0)) {
         d[k] = 0;
