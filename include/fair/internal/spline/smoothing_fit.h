@@ -198,6 +198,22 @@ double piece_edge_distance(const std::array<optimal::Vec2, N>& b, const optimal:
   return optimal::sampled_segment_distance(optimal::power_coefficients(b), e0, e1);
 }
 
+/// The largest squared distance of the Bezier points of b from the segment [e0, e1]: the square of
+/// an upper bound of the piece's distance from it (convex hull; without hypot, which was half the
+/// time of a band step).
+template <std::size_t N>
+double hull_bound_squared(const std::array<optimal::Vec2, N>& b, const optimal::Vec2& e0, const optimal::Vec2& e1) {
+  const double ex = e1[0] - e0[0], ey = e1[1] - e0[1], l2 = ex * ex + ey * ey;
+  double out = 0;
+  for (const optimal::Vec2& x : b) {
+    double s = l2 > 0 ? ((x[0] - e0[0]) * ex + (x[1] - e0[1]) * ey) / l2 : 0;
+    s = std::min(1.0, std::max(0.0, s));
+    const double dx = x[0] - e0[0] - s * ex, dy = x[1] - e0[1] - s * ey;
+    out = std::max(out, dx * dx + dy * dy);
+  }
+  return out;
+}
+
 /// The distance of the smoothing spline's pieces (degree N - 1) to the polygon v: the largest of
 /// the pieces' distances to their edges and of |c(t_k) - v_k|. A piece is refined only when the
 /// distance of its farthest Bezier point from the edge exceeds the largest found so far: the
@@ -213,11 +229,32 @@ double polygon_distance(const std::vector<std::array<optimal::Vec2, N>>& pieces,
   }
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const optimal::Vec2 &e0 = v[i], &e1 = v[(i + 1) % n];
-    double bound = 0;
-    for (const optimal::Vec2& b : pieces[i]) bound = std::max(bound, optimal::distance_to_segment(b, e0, e1));
-    if (bound > out) out = std::max(out, piece_edge_distance(pieces[i], e0, e1));
+    // (the bound's rounding differs from the distance's: a piece within an ulp of `out` may be
+    // searched or not, with the same result)
+    if (hull_bound_squared(pieces[i], e0, e1) > out * out) out = std::max(out, piece_edge_distance(pieces[i], e0, e1));
   }
   return out;
+}
+
+/// Whether polygon_distance(pieces, v) <= tolerance, without its value: only the pieces whose
+/// Bezier hull reaches beyond the tolerance are searched, and the first one beyond stops it (the
+/// band steps need no more; most of their pieces are within the tolerance by their hull).
+template <std::size_t N>
+bool polygon_distance_within(const std::vector<std::array<optimal::Vec2, N>>& pieces,
+                             const std::vector<optimal::Vec2>& v, double tolerance) {
+  const std::size_t n = v.size();
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const optimal::Vec2 &a = pieces[i][0], &b = pieces[i][N - 1], &p = v[i], &q = v[(i + 1) % n];
+    if (!(std::hypot(a[0] - p[0], a[1] - p[1]) <= tolerance && std::hypot(b[0] - q[0], b[1] - q[1]) <= tolerance))
+      return false;
+  }
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const optimal::Vec2 &e0 = v[i], &e1 = v[(i + 1) % n];
+    if (hull_bound_squared(pieces[i], e0, e1) > tolerance * tolerance &&
+        !(piece_edge_distance(pieces[i], e0, e1) <= tolerance))
+      return false;
+  }
+  return true;
 }
 
 /// One run's fit (pieces of degree N - 1) and how its smoothing weight was found.
@@ -268,13 +305,15 @@ Smoothing_run_of<N> smoothing_fit_run_with(const std::vector<optimal::Vec2>& v, 
   const double mean = length / static_cast<double>(t.size() - 1);
   const double unit_weight = std::pow(mean, p), unit = std::pow(length, p + 1);
   Run out;
-  // One solve with the inverse weights dd: the pieces, their distance and the residuals in r.
-  auto solve_with = [&](const std::vector<double>& dd, Run& r) {
+  // One solve with the inverse weights dd: the pieces, their distance (exact, or with `within` only
+  // whether it is <= tolerance: 0 then, else infinity) and the residuals in r.
+  auto solve_with = [&](const std::vector<double>& dd, Run& r, bool within = false) {
     std::vector<optimal::Vec2> y;
     ++out.solves;
     r.distance = std::numeric_limits<double>::infinity();  // too much smoothing for double: not taken
     if (!solve(dd, r.pieces, y)) return false;
-    r.distance = polygon_distance(r.pieces, v);
+    if (within) r.distance = polygon_distance_within(r.pieces, v, tolerance) ? 0 : std::numeric_limits<double>::infinity();
+    else r.distance = polygon_distance(r.pieces, v);
     r.d = dd;
     r.residual.resize(n);
     for (std::size_t k = 0; k < n; ++k) r.residual[k] = std::hypot(y[k][0] - v[k][0], y[k][1] - v[k][1]);
@@ -320,7 +359,7 @@ Smoothing_run_of<N> smoothing_fit_run_with(const std::vector<optimal::Vec2>& v, 
       const double f = std::sqrt(target / std::max(current.residual[k], 1e-6 * tolerance));
       d[k] = current.d[k] * std::min(smoothing_band_clamp, std::max(1 / smoothing_band_clamp, f));
     }
-    solve_with(d, trial);
+    solve_with(d, trial, true);
     if (trial.distance <= tolerance) {
       best = trial;
       current = trial;
@@ -328,6 +367,7 @@ Smoothing_run_of<N> smoothing_fit_run_with(const std::vector<optimal::Vec2>& v, 
       target *= smoothing_band_target;
     }
   }
+  if (best.distance == 0) best.distance = polygon_distance(best.pieces, v);  // a band step's value, once
   best.solves = out.solves;
   best.met = true;
   return best;
