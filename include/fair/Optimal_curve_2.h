@@ -112,6 +112,9 @@ public:
   /// polygon's resolution (rotation-invariant extent / rho). It passes through the input points
   /// exactly and smooths the ripples that interpolating every vertex of the adaptive polygon makes
   /// (doc/optimal_curves.md, "The smoothing spline"; fit_cubic_spline_runs interpolates every vertex).
+  /// The hierarchy refines the polygon until the interpolant of every vertex is within that
+  /// tolerance (internal/spline/smoothing_runs.h), so spline_smoothing().tolerance_met holds for a
+  /// solve that reached its resolution. The C4 quintic of the same rule: fit_smoothing_quintic_runs.
   const Spline& spline() const { return spline_; }
   /// How spline() was smoothed (tolerance, per-run smoothing weight and bisection solves).
   const Spline_smoothing_report& spline_smoothing() const { return smoothing_; }

@@ -157,7 +157,7 @@ TEST(OptimalRealData, HandDrawnCurvesAreFairAtTheDefaultsAndAtLambdaHalf) {
     out << "# test/optimal/test_real_data.cpp: per curve and setting: inflections, curvature extrema, extent_ratio,\n"
         << "# self_intersections, input_self_intersections (GCC 12 -O3)\n"
         << "# Rewritten (issue 25 §3, measured): the band steps of the smoothing fit moved the spline's inflections\n"
-        << "# (100 curve-settings down, 59 up; sum 1104 -> 1006) and extrema (145 down, 16 up; 4147 -> 3156); the\n"
+        << "# (101 curve-settings down, 60 up; sum 1104 -> 1007) and extrema (147 down, 16 up; 4147 -> 3141); the\n"
         << "# spline-resolution pass refined 12 polygons (extent_ratio within 0.4 %) and Greenland's (its loops\n"
         << "# cross more refined edges: 70 -> 76 and 36 -> 44 self-intersecting edge pairs).\n";
   }

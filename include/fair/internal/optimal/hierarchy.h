@@ -227,6 +227,10 @@ inline void check_solve_input(const std::vector<Vec2>& p, const Optimal_curve_op
           " and max_iterations_per_level = ", o.max_iterations_per_level, " must be >= 1");
 }
 
+/// The spline-resolution pass of run_hierarchy splits where the C2 interpolant is beyond this
+/// fraction of the smoothing fit's tolerance (a margin for the rounding between the two).
+constexpr double spline_resolution_margin = 0.99;
+
 /// The hierarchy with per-edge beta and per-vertex beta0 given by `weights(c, interpolation,
 /// edge_beta, vertex_beta0)` (re-evaluated on every level). `spline_resolution` (the polygon that
 /// Optimal_curve_2 delivers, not the lambda = 1 reference of eq. 11): once the sagitta test splits
@@ -294,8 +298,10 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
       std::vector<std::size_t> corners;
       for (const Placed_constraint& q : placed)
         if (q.corner) corners.push_back(q.vertex);
-      const std::vector<unsigned char> beyond =
-          spline::interpolant_beyond_edges(c, o.closed, corners, optimal_spline_distance_fraction * eps_max);
+      // (a margin of 1 % under the fit's tolerance: Optimal_curve_2 measures it on the polygon mapped
+      // back to the user's coordinates, which rounding moves by far less)
+      const std::vector<unsigned char> beyond = spline::interpolant_beyond_edges(
+          c, o.closed, corners, spline_resolution_margin * optimal_spline_distance_fraction * eps_max);
       split = subdivide(p, d, eps_max, interpolation, moved, &beyond);
     }
     if (split == 0) break;  // the target resolution is reached

@@ -25,6 +25,8 @@
 #include <fair/internal/spline/smoothing_fit.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
