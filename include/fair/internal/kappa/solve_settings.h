@@ -89,6 +89,18 @@ constexpr std::size_t density_start_iterations = 10;
 /// that follows it (newton_polish).
 constexpr std::size_t polish_reserve = 8;
 
+/// Warm start after an edit of one input point (start_strategy.h, solve_with_warm_start): the
+/// residuals of block i depend on the blocks i-2..i+1 and their points only, so moving the point
+/// of block m changes the residuals of blocks m-1..m+2 -- none further than edit_reach blocks
+/// away (cyclically for closed curves).
+constexpr std::size_t edit_reach = 2;
+/// The previous solution failed away from the edit when a scale-free residual (eq. 7 or the
+/// |kappa| mismatch) of a block further than edit_reach from the moved one exceeds this many
+/// tolerances. A root has them within one tolerance, and the renormalisation after the edit
+/// changes them by rounding only (they do not depend on the scale): the margin keeps every
+/// root, also one solved just to the tolerance, on the warm path.
+constexpr double failed_previous_margin = 1e3;
+
 /// What is left of the iteration cap (Jacobians of the whole solve).
 inline std::size_t remaining_iterations(const Solve_settings& settings, const Kappa_curve_report& res) {
   return settings.max_iterations > res.iterations ? settings.max_iterations - res.iterations : 0;

@@ -220,7 +220,8 @@ inline bool global_warm_newton(const Problem& pb, Kappa_solver_state& st, const 
 }
 
 inline double cold_solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                         Kappa_curve_report& res, bool newton_paths_failed, bool continuation = true);
+                         Kappa_curve_report& res, bool newton_paths_failed, bool continuation = true,
+                         bool fallback = true);
 
 /// Automatic weights (doc/kappa_curves.md, "Automatic weights: continuation from w = 1"): the
 /// w = 1 kappa-curve of the same data (a cold solve with w = 1, without this continuation),
@@ -253,8 +254,11 @@ inline double continue_from_unit_weights(const Problem& pb, Kappa_solver_state& 
 /// that every solve that finds a kappa-curve without it is unchanged); its result is kept when
 /// it is a kappa-curve, at s = 1 or (res.weight_blend = s) below. Returns max |r| (of the
 /// blended system when res.weight_blend < 1).
+/// `fallback` false: only the Newton paths (and the steering from a root they find), no
+/// Levenberg-Marquardt -- the re-solve after an edit of a curve whose solve failed away from the
+/// edit (solve_with_warm_start, failed_away_from_edit).
 inline double cold_solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                         Kappa_curve_report& res, bool newton_paths_failed, bool continuation) {
+                         Kappa_curve_report& res, bool newton_paths_failed, bool continuation, bool fallback) {
   double fmax = std::numeric_limits<double>::infinity();
   bool root = false;
   if (!newton_paths_failed) {
@@ -265,7 +269,11 @@ inline double cold_solve(const Problem& pb, Kappa_solver_state& st, const Solve_
     initial_guess(pb, st);
     refine(pb, st, settings.refinement_passes, refinement_stop, res);
   }
-  if (!root) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
+  if (!root && fallback) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
+  if (!root && !fallback) {  // st: the state after the passes (cold_start_newton)
+    std::vector<double> F;
+    fmax = evaluate(pb, st, F);
+  }
   fmax = steer_off_minima(pb, st, settings, res, fmax);
   if (!continuation || pb.mode != Kappa_weights::AUTOMATIC || is_clean_root(pb, st, fmax, settings)) return fmax;
   Kappa_solver_state cand;
@@ -288,8 +296,11 @@ struct Solve_trace {
 
 /// Solves the kappa-curve system; `st` holds the initial state when settings.warm.
 /// Cold start: cold_solve. Warm start (st of size n): local_warm_start around the moved block,
-/// else global_warm_newton, else cold_start_newton (report().warm_started false then), else
-/// levenberg_marquardt_with_restart from the previous solution.
+/// else global_warm_newton, else cold_start_newton (report().warm_started false then); Newton's
+/// method only. Where all of them fail the edit has left their basins, and the warm solve ends
+/// UNSOLVED at the best state it reached: the Levenberg-Marquardt fallback runs once, in the
+/// cold solve of solve_with_warm_start (from the passes), not also from the previous solution
+/// (doc/kappa_curves.md, "The solver", item 7: that run cost a second full fallback per edit).
 inline Kappa_curve_report solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
                                 Solve_trace* trace = nullptr) {
   Kappa_curve_report res;
@@ -325,8 +336,33 @@ inline Kappa_curve_report solve(const Problem& pb, Kappa_solver_state& st, const
       return finish(pb, st, settings, res, evaluate(pb, st, F));
     }
   }
-  if (!root) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
+  if (!root) {  // st: the previous solution, or the best state of the local stages
+    std::vector<double> F;
+    fmax = evaluate(pb, st, F);
+  }
   return finish(pb, st, settings, res, steer_off_minima(pb, st, settings, res, fmax));
+}
+
+/// Whether `previous`, the solution before an edit of the input point of block `moved` (offsets
+/// in pb's normalisation), is not a root away from the edit: a scale-free residual -- eq. 7 or
+/// the |kappa| mismatch (r_2, r_3) -- of a block further than edit_reach blocks from `moved`
+/// exceeds failed_previous_margin x tolerance. The edit does not change those residuals (they
+/// depend on blocks i-2..i+1 only, and not on the scale of the renormalisation), so they are
+/// what the previous solve left: it ended UNSOLVED and failed there, not at the edited point.
+/// O(n), one evaluation. False for an unknown edit (moved >= n).
+inline bool failed_away_from_edit(const Problem& pb, const Kappa_solver_state& previous, std::size_t moved,
+                                  const Solve_settings& settings) {
+  if (moved >= pb.n || previous.t.size() != pb.n) return false;
+  std::vector<double> F;
+  evaluate(pb, previous, F);
+  const double limit = failed_previous_margin * settings.tolerance;
+  for (std::size_t i = 0; i < pb.n; ++i) {
+    std::size_t d = i > moved ? i - moved : moved - i;
+    if (pb.closed) d = std::min(d, pb.n - d);
+    if (d <= edit_reach) continue;
+    if (!(std::abs(F[4 * i + 2]) <= limit) || !(std::abs(F[4 * i + 3]) <= limit)) return true;  // NaN too
+  }
+  return false;
 }
 
 /// The warm/cold start policy of Kappa_curve_2: with a `previous` solution of the same size
@@ -334,16 +370,29 @@ inline Kappa_curve_report solve(const Problem& pb, Kappa_solver_state& st, const
 /// `moved_point` (any value that is not an input point: unknown change), and if that ends
 /// UNSOLVED a cold start as well, keeping the better solve (by outcome, then residual)
 /// (report().warm_started says which); without one, a cold start. `st` receives the solution.
+/// After an edit of one point of a curve whose solve failed away from that point
+/// (failed_away_from_edit; w = 1 and fixed weights): only the cold start's Newton paths, no
+/// Levenberg-Marquardt (doc/kappa_curves.md, "The solver", item 7).
 inline Kappa_curve_report solve_with_warm_start(const Problem& pb, const Kappa_solver_state* previous,
                                                 std::size_t moved_point, Solve_settings settings,
                                                 Kappa_solver_state& st) {
   settings.warm = false;
   settings.moved = Problem::no_block;
   if (previous == nullptr || previous->t.size() != pb.n) return solve(pb, st, settings);
+  const std::size_t moved = pb.block_of_point(moved_point);
+  // The previous solve ran the whole fallback on data that are the same where it failed; the
+  // warm stages continue a root, which it did not leave there. Automatic weights are left out:
+  // their previous kappa-curve can be a root of the blended system (weight_blend < 1), whose
+  // residuals with eq. 16's weights this test cannot tell from a failure.
+  if (pb.mode != Kappa_weights::AUTOMATIC && failed_away_from_edit(pb, *previous, moved, settings)) {
+    Kappa_curve_report res;
+    const double fmax = cold_solve(pb, st, settings, res, false, true, false);
+    return finish(pb, st, settings, res, fmax);
+  }
   st = *previous;
   Solve_settings warm = settings;
   warm.warm = true;
-  warm.moved = pb.block_of_point(moved_point);
+  warm.moved = moved;
   Solve_trace trace;
   const Kappa_curve_report warm_report = solve(pb, st, warm, &trace);
   // A warm root on joins is the constrained solution near the previous one: kept (a cold solve
