@@ -220,8 +220,7 @@ inline bool global_warm_newton(const Problem& pb, Kappa_solver_state& st, const 
 }
 
 inline double cold_solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                         Kappa_curve_report& res, bool newton_paths_failed, bool continuation = true,
-                         bool fallback = true);
+                         Kappa_curve_report& res, bool newton_paths_failed, bool continuation = true);
 
 /// Automatic weights (doc/kappa_curves.md, "Automatic weights: continuation from w = 1"): the
 /// w = 1 kappa-curve of the same data (a cold solve with w = 1, without this continuation),
@@ -254,11 +253,8 @@ inline double continue_from_unit_weights(const Problem& pb, Kappa_solver_state& 
 /// that every solve that finds a kappa-curve without it is unchanged); its result is kept when
 /// it is a kappa-curve, at s = 1 or (res.weight_blend = s) below. Returns max |r| (of the
 /// blended system when res.weight_blend < 1).
-/// `fallback` false: only the Newton paths (and the steering from a root they find), no
-/// Levenberg-Marquardt -- the re-solve after an edit of a curve whose solve failed away from the
-/// edit (solve_with_warm_start, failed_away_from_edit).
 inline double cold_solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                         Kappa_curve_report& res, bool newton_paths_failed, bool continuation, bool fallback) {
+                         Kappa_curve_report& res, bool newton_paths_failed, bool continuation) {
   double fmax = std::numeric_limits<double>::infinity();
   bool root = false;
   if (!newton_paths_failed) {
@@ -269,11 +265,7 @@ inline double cold_solve(const Problem& pb, Kappa_solver_state& st, const Solve_
     initial_guess(pb, st);
     refine(pb, st, settings.refinement_passes, refinement_stop, res);
   }
-  if (!root && fallback) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
-  if (!root && !fallback) {  // st: the state after the passes (cold_start_newton)
-    std::vector<double> F;
-    fmax = evaluate(pb, st, F);
-  }
+  if (!root) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
   fmax = steer_off_minima(pb, st, settings, res, fmax);
   if (!continuation || pb.mode != Kappa_weights::AUTOMATIC || is_clean_root(pb, st, fmax, settings)) return fmax;
   Kappa_solver_state cand;
@@ -296,11 +288,8 @@ struct Solve_trace {
 
 /// Solves the kappa-curve system; `st` holds the initial state when settings.warm.
 /// Cold start: cold_solve. Warm start (st of size n): local_warm_start around the moved block,
-/// else global_warm_newton, else cold_start_newton (report().warm_started false then); Newton's
-/// method only. Where all of them fail the edit has left their basins, and the warm solve ends
-/// UNSOLVED at the best state it reached: the Levenberg-Marquardt fallback runs once, in the
-/// cold solve of solve_with_warm_start (from the passes), not also from the previous solution
-/// (doc/kappa_curves.md, "The solver", item 7: that run cost a second full fallback per edit).
+/// else global_warm_newton, else cold_start_newton (report().warm_started false then), else
+/// levenberg_marquardt_with_restart from the previous solution.
 inline Kappa_curve_report solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
                                 Solve_trace* trace = nullptr) {
   Kappa_curve_report res;
@@ -336,31 +325,28 @@ inline Kappa_curve_report solve(const Problem& pb, Kappa_solver_state& st, const
       return finish(pb, st, settings, res, evaluate(pb, st, F));
     }
   }
-  if (!root) {  // st: the previous solution, or the best state of the local stages
-    std::vector<double> F;
-    fmax = evaluate(pb, st, F);
-  }
+  if (!root) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
   return finish(pb, st, settings, res, steer_off_minima(pb, st, settings, res, fmax));
 }
 
 /// Whether `previous`, the solution before an edit of the input point of block `moved` (offsets
-/// in pb's normalisation), is not a root away from the edit: a scale-free residual -- eq. 7 or
-/// the |kappa| mismatch (r_2, r_3) -- of a block further than edit_reach blocks from `moved`
-/// exceeds failed_previous_margin x tolerance. The edit does not change those residuals (they
-/// depend on blocks i-2..i+1 only, and not on the scale of the renormalisation), so they are
-/// what the previous solve left: it ended UNSOLVED and failed there, not at the edited point.
-/// O(n), one evaluation. False for an unknown edit (moved >= n).
-inline bool failed_away_from_edit(const Problem& pb, const Kappa_solver_state& previous, std::size_t moved,
-                                  const Solve_settings& settings) {
+/// in pb's normalisation), failed hopelessly away from the edit: a scale-free residual -- eq. 7
+/// or the |kappa| mismatch (r_2, r_3) -- of a block further than edit_reach blocks from `moved`
+/// is at least hopeless_residual. The edit does not change those residuals (they depend on the
+/// blocks i-2..i+1 and their points only, and not on the scale of the renormalisation), so they
+/// are what the previous solve left where the data are unchanged. O(n), one evaluation. False
+/// for an unknown edit (moved >= n).
+inline bool failed_hopelessly_away_from_edit(const Problem& pb, const Kappa_solver_state& previous,
+                                             std::size_t moved) {
   if (moved >= pb.n || previous.t.size() != pb.n) return false;
   std::vector<double> F;
   evaluate(pb, previous, F);
-  const double limit = failed_previous_margin * settings.tolerance;
   for (std::size_t i = 0; i < pb.n; ++i) {
     std::size_t d = i > moved ? i - moved : moved - i;
     if (pb.closed) d = std::min(d, pb.n - d);
     if (d <= edit_reach) continue;
-    if (!(std::abs(F[4 * i + 2]) <= limit) || !(std::abs(F[4 * i + 3]) <= limit)) return true;  // NaN too
+    if (!(std::abs(F[4 * i + 2]) < hopeless_residual) || !(std::abs(F[4 * i + 3]) < hopeless_residual))
+      return true;  // NaN too
   }
   return false;
 }
@@ -370,9 +356,9 @@ inline bool failed_away_from_edit(const Problem& pb, const Kappa_solver_state& p
 /// `moved_point` (any value that is not an input point: unknown change), and if that ends
 /// UNSOLVED a cold start as well, keeping the better solve (by outcome, then residual)
 /// (report().warm_started says which); without one, a cold start. `st` receives the solution.
-/// After an edit of one point of a curve whose solve failed away from that point
-/// (failed_away_from_edit; w = 1 and fixed weights): only the cold start's Newton paths, no
-/// Levenberg-Marquardt (doc/kappa_curves.md, "The solver", item 7).
+/// After an edit of one point of a curve whose solve failed hopelessly away from that point
+/// (failed_hopelessly_away_from_edit; w = 1 and fixed weights): the cold start's Newton paths
+/// only, no Levenberg-Marquardt (doc/kappa_curves.md, "The solver", item 7).
 inline Kappa_curve_report solve_with_warm_start(const Problem& pb, const Kappa_solver_state* previous,
                                                 std::size_t moved_point, Solve_settings settings,
                                                 Kappa_solver_state& st) {
@@ -380,13 +366,21 @@ inline Kappa_curve_report solve_with_warm_start(const Problem& pb, const Kappa_s
   settings.moved = Problem::no_block;
   if (previous == nullptr || previous->t.size() != pb.n) return solve(pb, st, settings);
   const std::size_t moved = pb.block_of_point(moved_point);
-  // The previous solve ran the whole fallback on data that are the same where it failed; the
-  // warm stages continue a root, which it did not leave there. Automatic weights are left out:
-  // their previous kappa-curve can be a root of the blended system (weight_blend < 1), whose
-  // residuals with eq. 16's weights this test cannot tell from a failure.
-  if (pb.mode != Kappa_weights::AUTOMATIC && failed_away_from_edit(pb, *previous, moved, settings)) {
+  // The previous solve ran the whole fallback (passes, Levenberg-Marquardt with restart) on data
+  // that are the same where it ended far from any root; the warm stages continue a solution,
+  // which it is not. Automatic weights are left out: their previous kappa-curve can be a root of
+  // the blended system (weight_blend < 1), whose residuals with eq. 16's weights this test cannot
+  // tell from a failure.
+  if (pb.mode != Kappa_weights::AUTOMATIC && failed_hopelessly_away_from_edit(pb, *previous, moved)) {
     Kappa_curve_report res;
-    const double fmax = cold_solve(pb, st, settings, res, false, true, false);
+    double fmax = std::numeric_limits<double>::infinity();
+    bool decided = false;
+    if (cold_start_newton(pb, st, settings, res, fmax, &decided)) {
+      fmax = steer_off_minima(pb, st, settings, res, fmax);
+    } else {  // st: the state after the passes (or of the early decision)
+      std::vector<double> F;
+      fmax = evaluate(pb, st, F);
+    }
     return finish(pb, st, settings, res, fmax);
   }
   st = *previous;
