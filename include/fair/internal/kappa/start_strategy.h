@@ -171,9 +171,10 @@ inline bool local_range(const Problem& pb, std::size_t moved, std::size_t R, Blo
 /// global solve. A local result that falls short but lowers the global residual is kept as the
 /// start of the next stage. Each stage: Newton (at most newton_iterations Jacobians), else a
 /// short Levenberg-Marquardt run (at most local_lm_iterations), both within the cap of the
-/// whole solve. Returns true (fmax set) at an interior root; otherwise st is the best state.
+/// whole solve. Returns true (fmax set) at an interior root; otherwise st is the best state, and
+/// `original` (if given, empty) receives st as it was when a stage changed it.
 inline bool local_warm_start(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                             Kappa_curve_report& res, double& fmax) {
+                             Kappa_curve_report& res, double& fmax, Kappa_solver_state* original = nullptr) {
   if (settings.moved >= pb.n) return false;
   std::vector<double> F;
   double best = evaluate(pb, st, F);
@@ -201,6 +202,7 @@ inline bool local_warm_start(const Problem& pb, Kappa_solver_state& st, const So
       return true;
     }
     if (fm < best) {
+      if (original != nullptr && original->t.empty()) *original = st;  // st before its first change
       st = trial;
       best = fm;
     }
@@ -327,10 +329,10 @@ inline Kappa_curve_report solve(const Problem& pb, Kappa_solver_state& st, const
     return finish(pb, st, settings, res, fmax);
   }
   double fmax = std::numeric_limits<double>::infinity();
-  // The previous solution, for the test below (the local stages may change st); a copy, as each
-  // stage makes one.
-  const Kappa_solver_state previous = pb.mode != Kappa_weights::AUTOMATIC ? st : Kappa_solver_state();
-  bool root = local_warm_start(pb, st, settings, res, fmax) || global_warm_newton(pb, st, settings, res, fmax);
+  // The previous solution, for the test below: st, or its copy from before a local stage changed
+  // it (made only then: no cost on edits that Newton's method solves).
+  Kappa_solver_state original;
+  bool root = local_warm_start(pb, st, settings, res, fmax, &original) || global_warm_newton(pb, st, settings, res, fmax);
   if (!root) {
     // The Newton paths of a cold start (a few Jacobians) before Levenberg-Marquardt from the
     // previous solution: an edit that moves points onto or off joins can leave the previous
@@ -359,8 +361,9 @@ inline Kappa_curve_report solve(const Problem& pb, Kappa_solver_state& st, const
     // automatic weights: their previous kappa-curve can be a root of the blended system
     // (weight_blend < 1), whose residuals with eq. 16's weights this test cannot tell from a
     // failure. Checked only here, where Newton's method has failed: no cost on edits it solves.
+    // (global_warm_newton and cold_start_newton leave st as it was when they fail.)
     if (!root && pb.mode != Kappa_weights::AUTOMATIC &&
-        failed_hopelessly_away_from_edit(pb, previous, settings.moved)) {
+        failed_hopelessly_away_from_edit(pb, original.t.empty() ? st : original, settings.moved)) {
       if (trace != nullptr) trace->hopeless_previous = true;
       std::vector<double> F;
       return finish(pb, st, settings, res, evaluate(pb, st, F));
