@@ -97,7 +97,8 @@ constexpr std::size_t edit_reach = 2;
 /// The previous solution failed hopelessly away from the edit when a scale-free residual of a
 /// block further than edit_reach from the moved one is at least this: for the |kappa| mismatch
 /// (k1 - k2) / (k1 + k2) of eq. 5 (at most 1, where one side is straight), curvatures differing
-/// by a factor 3 or more at a join. Then the re-solve runs only the cold start's Newton paths
+/// by a factor 3 or more at a join. Then the re-solve runs Newton's method only (the warm stages,
+/// the cold start's Newton paths): no Levenberg-Marquardt, no cold solve after the warm one
 /// (doc/kappa_curves.md, "The solver", item 7). Measured on 2560 moves of the real data (old
 /// solver): no move of a curve left at a residual >= 0.47 was solved (24 moves, 6 curves), while
 /// moves of curves left at 0.35 (automatic weights) and 0.048 (w = 1) and below were.
