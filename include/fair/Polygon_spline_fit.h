@@ -232,40 +232,19 @@ Polygon_smoothing_fit<K> fit_smoothing_spline_runs(const std::vector<typename K:
                                                    std::vector<std::size_t> corners, double max_distance) {
   using namespace internal::spline;
   typedef internal::optimal::Vec2 V;
+  const Smoothing_setup setup =
+      smoothing_setup<K>(polygon, closed, interpolated, std::move(corners), max_distance, "fair::fit_smoothing_spline_runs");
   const char* fn = "fair::fit_smoothing_spline_runs";
-  internal::require(std::isfinite(max_distance) && max_distance >= 0, fn, ": max_distance ", max_distance,
-                    " must be finite and >= 0");
-  const std::vector<V> raw = polygon_to_double<K>(polygon, closed, fn);
-  const std::size_t n = polygon.size();
-  for (std::size_t c : corners) internal::require(c < n, fn, ": corner vertex ", c, " is not a vertex of the polygon of ", n, " vertices");
-  for (std::size_t c : interpolated)
-    internal::require(c < n, fn, ": interpolated vertex ", c, " is not a vertex of the polygon of ", n, " vertices");
-  const double scale = fit_scale(raw);
-  const std::vector<V> p = scaled(raw, 1 / scale);
-  corners = normalised_corners(std::move(corners), n, closed);
-  std::vector<bool> hard(n, false);
-  for (std::size_t c : interpolated) hard[c] = true;
-  // At a corner the run's first edge is kept too (its other vertex interpolated): the optimal
-  // polygon's edge at a CORNER lies on the constraint's tangent ray, and with the natural end the
-  // run leaves the corner along it (doc/optimal_curves.md, "The smoothing spline").
-  for (std::size_t c : corners) {
-    hard[c] = true;
-    hard[(c + 1) % n] = true;
-    hard[(c + n - 1) % n] = true;
-  }
-  if (!closed) hard.front() = hard.back() = true;
-  const Run_layout layout = run_layout(n, closed, corners);  // run r from ends[r] to ends[r + 1]
-  const std::vector<std::size_t>& ends = layout.ends;
-  const bool periodic = layout.periodic;
+  const double scale = setup.scale;
+  const std::vector<std::size_t>& ends = setup.layout.ends;
+  const bool periodic = setup.layout.periodic;
   Polygon_smoothing_fit<K> out{{{}, {}, 0.0}, {}};
   out.report.tolerance = max_distance;
   for (std::size_t r = 0; r + 1 < ends.size(); ++r) {
     std::vector<V> v;
     std::vector<bool> h;
-    for (std::size_t i = ends[r]; i <= ends[r + 1]; ++i) {
-      v.push_back(p[i % n]);
-      h.push_back(hard[i % n]);
-    }
+    std::vector<std::size_t> index;
+    setup.run(r, v, h, index);
     const std::vector<double> t = internal::optimal::chord_breakpoints(v, periodic, fn);
     const Smoothing_run fit = smoothing_fit_run(v, t, periodic, h, max_distance / scale);
     std::vector<std::array<Homogeneous_point<double>, 4>> b;
@@ -278,7 +257,7 @@ Polygon_smoothing_fit<K> fit_smoothing_spline_runs(const std::vector<typename K:
     std::vector<V> control;
     for (const Homogeneous_point<double>& c : control_from_bezier(t, b, periodic)) control.push_back(V{{c.x / c.w, c.y / c.w}});
     out.runs.splines.push_back(spline_from_control<K>(t, control, periodic, scale, fn));
-    out.runs.first_vertex.push_back(ends[r] % n);
+    out.runs.first_vertex.push_back(ends[r] % polygon.size());
     out.runs.max_distance = std::max(out.runs.max_distance, scale * fit.distance);
     const double length = t.back() - t.front();
     out.report.smoothing.push_back(fit.sigma / (length * length * length * length));
@@ -311,33 +290,19 @@ Polygon_smoothing_quintic_fit<K> fit_smoothing_quintic_runs(const std::vector<ty
                                                             std::vector<std::size_t> corners, double max_distance) {
   using namespace internal::spline;
   typedef internal::optimal::Vec2 V;
+  const Smoothing_setup setup =
+      smoothing_setup<K>(polygon, closed, interpolated, std::move(corners), max_distance, "fair::fit_smoothing_quintic_runs");
   const char* fn = "fair::fit_smoothing_quintic_runs";
-  internal::require(std::isfinite(max_distance) && max_distance >= 0, fn, ": max_distance ", max_distance,
-                    " must be finite and >= 0");
-  const std::vector<V> raw = polygon_to_double<K>(polygon, closed, fn);
-  const std::size_t n = polygon.size();
-  for (std::size_t c : corners) internal::require(c < n, fn, ": corner vertex ", c, " is not a vertex of the polygon of ", n, " vertices");
-  for (std::size_t c : interpolated)
-    internal::require(c < n, fn, ": interpolated vertex ", c, " is not a vertex of the polygon of ", n, " vertices");
-  const double scale = fit_scale(raw);
-  const std::vector<V> p = scaled(raw, 1 / scale);
-  corners = normalised_corners(std::move(corners), n, closed);
-  std::vector<bool> hard(n, false);
-  for (std::size_t c : interpolated) hard[c] = true;
-  for (std::size_t c : corners) hard[c] = hard[(c + 1) % n] = hard[(c + n - 1) % n] = true;  // as the cubic
-  if (!closed) hard.front() = hard.back() = true;
-  const Run_layout layout = run_layout(n, closed, corners);
+  const double scale = setup.scale;
+  const Run_layout& layout = setup.layout;
   Polygon_smoothing_quintic_fit<K> out{{{}, 0.0}, {}};
   out.report.tolerance = max_distance;
   for (std::size_t r = 0; r + 1 < layout.ends.size(); ++r) {
     std::vector<V> v;
     std::vector<bool> h;
     std::vector<std::size_t> index;
-    for (std::size_t i = layout.ends[r]; i <= layout.ends[r + 1]; ++i) {
-      v.push_back(p[i % n]);
-      h.push_back(hard[i % n]);
-      index.push_back(i % n);
-    }
+    setup.run(r, v, h, index);
+    pin_quintic_null_space(h, layout.periodic);
     const std::vector<double> t = internal::optimal::chord_breakpoints(v, layout.periodic, fn);
     Smoothing_run_of<6> fit;
     if (v.size() == 2) {  // the segment

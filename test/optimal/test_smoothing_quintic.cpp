@@ -26,30 +26,7 @@ typedef CGAL::Simple_cartesian<double> Kd;
 typedef Kd::Point_2 Pd;
 using fair::internal::optimal::Vec2;
 
-/// Dense Gaussian elimination with partial pivoting (the oracle's KKT system is symmetric indefinite).
-std::vector<double> dense_solve(std::vector<std::vector<double>> a, std::vector<double> b) {
-  const std::size_t n = b.size();
-  for (std::size_t c = 0; c < n; ++c) {
-    std::size_t p = c;
-    for (std::size_t r = c + 1; r < n; ++r)
-      if (std::fabs(a[r][c]) > std::fabs(a[p][c])) p = r;
-    std::swap(a[c], a[p]);
-    std::swap(b[c], b[p]);
-    for (std::size_t r = c + 1; r < n; ++r) {
-      const double f = a[r][c] / a[c][c];
-      if (f == 0) continue;
-      for (std::size_t k = c; k < n; ++k) a[r][k] -= f * a[c][k];
-      b[r] -= f * b[c];
-    }
-  }
-  std::vector<double> x(n);
-  for (std::size_t r = n; r-- > 0;) {
-    double s = b[r];
-    for (std::size_t k = r + 1; k < n; ++k) s -= a[r][k] * x[k];
-    x[r] = s / a[r][r];
-  }
-  return x;
-}
+using fair_test::dense_solve;
 
 /// The oracle for one coordinate: piece i is sum_j c_ij (t - t_i)^j, j = 0..5; minimise
 /// sum_i int c_i'''^2 + sum_{free k} (c(t_k) - v_k)^2 / d_k subject to c_i(t_i) = v_i at the hard
@@ -307,6 +284,18 @@ TEST(Optimal_fit_smoothing_quintic, ReproducesAStraightLine) {
     for (const auto& piece : fit.fit.pieces)
       for (const Pd& q : piece.control_points()) EXPECT_NEAR(q.y(), 0.5 * q.x(), 1e-7);
     EXPECT_LE(fit.fit.max_distance, tolerance > 0 ? 1e-7 : 1e-14);
+  }
+  // Only the ends hard (review of issue 25 §3, H1: the quadratic null space of int |c'''|^2 was
+  // held by rounding and the fit was an arc filling the tolerance, 5e-3 .. 1e-2 at 1e-2): the
+  // middle vertex is met too, and the line comes out, unevenly spaced, at n = 12. Longer runs are
+  // still off by rounding amplified to 1.4e-7 (n = 50) and 8.1e-6 (n = 100) of the extent: open
+  // (doc/optimal_curves.md, "The quintic smoothing spline").
+  for (const std::size_t n : {12u}) {
+    std::vector<Pd> line;
+    double x = 0;
+    for (std::size_t k = 0; k < n; ++k, x += 0.3 + 0.7 * double((k * 7) % 5) / 4) line.push_back(Pd(x, 0.5 * x));
+    const auto fit = fair::fit_smoothing_quintic_runs<Kd>(line, false, {}, {}, 1e-2 * x);
+    EXPECT_LE(fit.fit.max_distance, 1e-9 * x) << n;
   }
   const auto two = fair::fit_smoothing_quintic_runs<Kd>({Pd(0, 0), Pd(2, 1)}, false, {}, {}, 0.1);
   ASSERT_EQ(two.fit.pieces.size(), 1u);

@@ -502,29 +502,7 @@ namespace smoothing {
 
 typedef std::array<double, 2> V2;
 
-/// Dense Gaussian elimination with partial pivoting (the oracle's KKT system, n <= ~100).
-std::vector<double> dense_solve(std::vector<std::vector<double>> a, std::vector<double> b) {
-  const std::size_t n = b.size();
-  for (std::size_t c = 0; c < n; ++c) {
-    std::size_t p = c;
-    for (std::size_t r = c + 1; r < n; ++r)
-      if (std::abs(a[r][c]) > std::abs(a[p][c])) p = r;
-    std::swap(a[c], a[p]);
-    std::swap(b[c], b[p]);
-    for (std::size_t r = c + 1; r < n; ++r) {
-      const double f = a[r][c] / a[c][c];
-      for (std::size_t k = c; k < n; ++k) a[r][k] -= f * a[c][k];
-      b[r] -= f * b[c];
-    }
-  }
-  std::vector<double> x(n);
-  for (std::size_t r = n; r-- > 0;) {
-    double s = b[r];
-    for (std::size_t k = r + 1; k < n; ++k) s -= a[r][k] * x[k];
-    x[r] = s / a[r][r];
-  }
-  return x;
-}
+using fair_test::dense_solve;
 
 /// The independent oracle: Hermite form (value y_k and slope m_k per knot, C1 by construction),
 /// int |c''|^2 exact per piece (c'' linear: h (A^2 + AB + B^2) / 3 with the end values

@@ -28,6 +28,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace fair {
@@ -259,6 +260,19 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
   bool derivative = false;
   for (int k = 1; k <= 4; ++k) derivative = derivative || o.derivative_weight[k] > 0;
   Status overall = Status::CONVERGED;
+  // The spline-resolution pass may refine the polygon, never lower the outcome (review of issue
+  // 25 §3, M1): once it has forced a level, a level that does not converge (that one or a later
+  // one, refined further by the sagitta test) sends the solve back to the state before the first
+  // forced level, and the caps do not count after it; the smoothing fit then reports
+  // tolerance_met = false where its interpolant is still beyond the tolerance.
+  struct Kept {
+    Solve_result r;
+    std::vector<Vec2> c;
+    std::vector<Placed_constraint> placed;
+    Level_problem p;
+    Status overall;
+  };
+  std::unique_ptr<Kept> kept;  // the state before the first level the spline pass forced
   for (std::size_t level = 0;; ++level) {
     const Vertex_roles roles = vertex_roles(c.size(), o.closed, r.interpolation_indices, placed);
     p.f.zero_curvature = roles.zero_curvature;
@@ -283,6 +297,16 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
     r.report.energy = out.energy;
     r.report.gradient_norm = out.gradient_norm;
     overall = worse(overall, out.status);
+    if (kept && out.status != Status::CONVERGED) {
+      const std::size_t spent = r.report.iterations;
+      r = std::move(kept->r);
+      c = std::move(kept->c);
+      placed = std::move(kept->placed);
+      p = std::move(kept->p);
+      overall = kept->overall;
+      r.report.iterations = spent;  // the work done stays reported
+      break;
+    }
     if (out.status == Status::DIVERGING) break;
     // A Newton level that hit its iteration cap makes the solve CAPPED whatever follows; refining
     // it further only multiplies the work (issue 29 #19: 100 random points with a kappa' term took
@@ -294,6 +318,7 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
     std::vector<Placed_constraint> moved = placed;
     const double eps_max = rotation_invariant_extent(c) / o.resolution;
     std::size_t split = subdivide(p, d, eps_max, interpolation, moved);
+    bool forced = false;
     if (split == 0 && spline_resolution) {  // the spline's resolution (smoothing_runs.h)
       std::vector<std::size_t> corners;
       for (const Placed_constraint& q : placed)
@@ -303,11 +328,15 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
       const std::vector<unsigned char> beyond = spline::interpolant_beyond_edges(
           c, o.closed, corners, spline_resolution_margin * optimal_spline_distance_fraction * eps_max);
       split = subdivide(p, d, eps_max, interpolation, moved, &beyond);
+      forced = split > 0;
     }
     if (split == 0) break;  // the target resolution is reached
-    // The level cap counts only when another level is needed.
-    if (level + 1 >= o.max_levels) { overall = worse(overall, Status::CAPPED); break; }
-    if (d.size() > o.max_vertices) { overall = worse(overall, Status::CAPPED); break; }
+    // The level cap counts only when another level is needed (and not for the spline pass).
+    if (level + 1 >= o.max_levels || d.size() > o.max_vertices) {
+      if (!forced && !kept) overall = worse(overall, Status::CAPPED);
+      break;
+    }
+    if (forced && !kept) kept.reset(new Kept{r, c, placed, p, overall});
     c.swap(d);
     r.interpolation_indices.swap(interpolation);
     placed.swap(moved);

@@ -22,12 +22,14 @@
 
 #include <fair/internal/optimal/spline_fit.h>
 #include <fair/internal/optimal/vec2.h>
+#include <fair/internal/spline/polygon_fit.h>
 #include <fair/internal/spline/smoothing_fit.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace fair {
@@ -71,6 +73,71 @@ inline Run_layout run_layout(std::size_t n, bool closed, const std::vector<std::
   if (closed) out.ends.push_back(corners.front() + n);  // wraps around
   else out.ends.push_back(n - 1);
   return out;
+}
+
+/// What fit_smoothing_spline_runs and fit_smoothing_quintic_runs share before their solves: the
+/// polygon in double scaled by 1 / scale (fit_scale), the hard vertices (met exactly: the given
+/// ones, every corner and its two neighbours -- the optimal polygon's edge at a CORNER lies on the
+/// constraint's tangent ray, and with the natural end the run leaves the corner along it -- and
+/// the ends of an open polygon) and the runs between the corners.
+struct Smoothing_setup {
+  std::vector<optimal::Vec2> points;
+  double scale = 1;
+  std::vector<bool> hard;
+  Run_layout layout;
+
+  /// The vertices of run r (scaled), their hard flags and their indices in the polygon.
+  void run(std::size_t r, std::vector<optimal::Vec2>& v, std::vector<bool>& h, std::vector<std::size_t>& index) const {
+    const std::size_t n = points.size();
+    v.clear();
+    h.clear();
+    index.clear();
+    for (std::size_t i = layout.ends[r]; i <= layout.ends[r + 1]; ++i) {
+      v.push_back(points[i % n]);
+      h.push_back(hard[i % n]);
+      index.push_back(i % n);
+    }
+  }
+};
+
+/// The checks and the setting of a smoothing fit (see Smoothing_setup); `fn` names the caller.
+/// \throws Precondition_error for a max_distance not finite and >= 0 or an index >= n;
+/// Invalid_input_error as polygon_to_double.
+template <class K>
+Smoothing_setup smoothing_setup(const std::vector<typename K::Point_2>& polygon, bool closed,
+                                const std::vector<std::size_t>& interpolated, std::vector<std::size_t> corners,
+                                double max_distance, const char* fn) {
+  require(std::isfinite(max_distance) && max_distance >= 0, fn, ": max_distance ", max_distance, " must be finite and >= 0");
+  const std::vector<optimal::Vec2> raw = polygon_to_double<K>(polygon, closed, fn);
+  const std::size_t n = polygon.size();
+  for (std::size_t c : corners) require(c < n, fn, ": corner vertex ", c, " is not a vertex of the polygon of ", n, " vertices");
+  for (std::size_t c : interpolated)
+    require(c < n, fn, ": interpolated vertex ", c, " is not a vertex of the polygon of ", n, " vertices");
+  Smoothing_setup out;
+  out.scale = fit_scale(raw);
+  out.points = scaled(raw, 1 / out.scale);
+  corners = normalised_corners(std::move(corners), n, closed);
+  out.hard.assign(n, false);
+  for (std::size_t c : interpolated) out.hard[c] = true;
+  for (std::size_t c : corners) out.hard[c] = out.hard[(c + 1) % n] = out.hard[(c + n - 1) % n] = true;
+  if (!closed) out.hard.front() = out.hard.back() = true;
+  out.layout = run_layout(n, closed, corners);
+  return out;
+}
+
+/// The quintic's energy int |c'''|^2 vanishes on every quadratic (periodic runs: on constants), so
+/// where the hard vertices do not pin that null space -- fewer than three on an open run (its two
+/// ends), none on a periodic one -- only the free vertices' weights hold it, and at the large
+/// smoothing the bisection reaches they hold it no better than rounding: a straight line with only
+/// its ends hard came out as an arc filling the tolerance (review of issue 25 §3, H1). Such a run
+/// also meets its middle vertex (periodic: its first) exactly. The cubic's null space (lines) is
+/// pinned by the two ends of every open run and needs nothing.
+inline void pin_quintic_null_space(std::vector<bool>& hard, bool periodic) {
+  const std::size_t n = hard.size();
+  if (n < 3) return;  // the segment
+  const std::size_t count = static_cast<std::size_t>(std::count(hard.begin(), hard.end(), true));
+  if (periodic && count == 0) hard[0] = true;
+  if (!periodic && count < 3) hard[n / 2] = true;
 }
 
 /// The edges (edge j from c[j] to c[j + 1 mod n]) on which the C2 interpolant of every vertex,
