@@ -21,6 +21,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace {
@@ -465,6 +466,24 @@ TEST(Metrics, HausdorffBoundsCertified) {
   // Issue 29 #13: weights 5e-324, 1, 5e-324 used to give inf; refused.
   const std::vector<R> w0{R(std::vector<P>{P(0, 0), P(1, 1), P(2, 0)}, std::vector<double>{5e-324, 1, 5e-324})};
   EXPECT_THROW(fair::hausdorff_distance_bounds(c, w0, 1e-3), fair::Invalid_input_error);
+  // A parabola arc followed by a segment out to 4.4e34 (metrics fuzz finding of session 17,
+  // corpus regress-hausdorff-rounding-floor-above-tolerance), against itself at 1e-2: H = 0, but
+  // the rounding allowance of such coordinates (64 (degree + 1) eps 4.4e34 per curve) is far above
+  // the tolerance. The bounds hold; they are not "converged", and hausdorff_distance says why.
+  const std::vector<B> wide{B(std::vector<P>{P(0, 0), P(1, 2), P(3, 1)}), B(std::vector<P>{P(3, 1), P(4.4e34, 0)})};
+  const fair::Hausdorff_bounds hw = fair::hausdorff_distance_bounds(wide, wide, 1e-2);
+  EXPECT_FALSE(hw.converged);
+  EXPECT_EQ(hw.lower, 0.0);
+  EXPECT_GT(hw.rounding_allowance, 1e-2);
+  EXPECT_GE(hw.upper - hw.lower, hw.rounding_allowance);
+  try {
+    fair::hausdorff_distance(wide, wide, 1e-2);
+    ADD_FAILURE() << "no Non_convergence_error";
+  } catch (const fair::Non_convergence_error& e) {
+    EXPECT_NE(std::string(e.what()).find("rounding allowance"), std::string::npos) << e.what();
+  }
+  // At a tolerance above the allowance the same curves converge.
+  EXPECT_TRUE(fair::hausdorff_distance_bounds(wide, wide, 1e22).converged);
   // Coordinates beyond DBL_MAX / 8 are refused rather than giving an infinite distance.
   const double big = std::numeric_limits<double>::max() / 2;
   const std::vector<B> far{B(std::vector<P>{P(-big, 0), P(big, 0)})};

@@ -196,8 +196,13 @@ Circle_deviation max_circle_deviation(const std::vector<Piece>& curve, const typ
 /// Certified bounds of the Hausdorff distance of two curves (hausdorff_distance_bounds).
 struct Hausdorff_bounds {
   double lower = 0, upper = 0; ///< lower <= H(a, b) <= upper (up to the rounding allowance)
-  /// upper - lower <= tolerance; false when a work cap was met (the bounds still hold).
+  /// upper - lower <= tolerance; false when a work cap was met or the rounding allowance of the
+  /// coordinates alone exceeds the tolerance (the bounds still hold).
   bool converged = true;
+  /// The rounding allowance subtracted from lower and added to upper: 64 (degree + 1) eps times
+  /// the largest coordinate, summed over the two curves. Above half the tolerance no work can
+  /// converge (it widens both bounds, unless lower is clamped at 0).
+  double rounding_allowance = 0;
   /// False when a curve has generic pieces (sampled, not certified).
   bool certified = true;
   std::size_t segments_a = 0, segments_b = 0; ///< sizes of the polylines used
@@ -211,7 +216,10 @@ struct Hausdorff_bounds {
 /// directed distances of the polylines are bracketed by branch and bound (exact convex bounds per
 /// nearest segment), and lower/upper follow by the triangle inequality; upper - lower <= tolerance.
 /// The work grows like sqrt(1/tolerance) in the curved parts and log(1/tolerance) elsewhere, and is
-/// capped (2^12 sub-pieces per curve, 2^14 refinements per direction): converged = false then.
+/// capped (2^12 sub-pieces per curve, 2^14 refinements per direction): converged = false then,
+/// and also when upper - lower ends wider than the tolerance for another reason: coordinates so
+/// large that the rounding allowance alone exceeds it (a segment out to 4e34 at tolerance 1e-2,
+/// a metrics fuzz finding of session 17).
 /// \throws Precondition_error for an empty curve or a tolerance not finite and > 0;
 /// Invalid_input_error for a coordinate beyond DBL_MAX / 8 or a rational piece whose weights
 /// differ by a factor above 1e100.
@@ -232,7 +240,8 @@ Hausdorff_bounds hausdorff_distance_bounds(const std::vector<PieceA>& a, const s
   const double e = pa.error + pb.error;
   out.lower = std::max(0.0, std::max(ab.lower, ba.lower) - e);
   out.upper = std::max(ab.upper, ba.upper) + e;
-  out.converged = pa.converged && pb.converged && ab.converged && ba.converged;
+  out.rounding_allowance = pa.rounding + pb.rounding;
+  out.converged = pa.converged && pb.converged && ab.converged && ba.converged && out.upper - out.lower <= tolerance;
   out.certified = pa.certified && pb.certified;
   out.segments_a = pa.vertices.size() - 1;
   out.segments_b = pb.vertices.size() - 1;
@@ -247,12 +256,19 @@ Hausdorff_bounds hausdorff_distance_bounds(const std::vector<PieceA>& a, const s
 template <class PieceA, class PieceB>
 double hausdorff_distance(const std::vector<PieceA>& a, const std::vector<PieceB>& b, double tolerance) {
   const Hausdorff_bounds h = hausdorff_distance_bounds(a, b, tolerance);
-  if (!h.converged && h.upper - h.lower > tolerance)
+  if (!h.converged && h.upper - h.lower > tolerance) {
+    if (h.rounding_allowance > tolerance / 2)
+      throw Non_convergence_error(internal::message("hausdorff_distance: the distance is between ", h.lower, " and ",
+                                                    h.upper, "; the tolerance ", tolerance,
+                                                    " is below the rounding allowance ", h.rounding_allowance,
+                                                    " of the curves' coordinates (scale the curves down or raise the tolerance)"),
+                                  h.segments_a + h.segments_b, h.upper - h.lower);
     throw Non_convergence_error(internal::message("hausdorff_distance: the work cap (", internal::metrics::max_hausdorff_segments,
                                                   " sub-pieces per curve, ", internal::metrics::max_hausdorff_refinements,
                                                   " refinements) was reached with the distance between ", h.lower,
                                                   " and ", h.upper, ", wider than the tolerance ", tolerance),
                                 h.segments_a + h.segments_b, h.upper - h.lower);
+  }
   return h.value();
 }
 

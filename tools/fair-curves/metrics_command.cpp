@@ -130,7 +130,11 @@ void report(const std::vector<Piece>& curve, const Metrics_options& o, const Fil
                                                      : fair::hausdorff_distance_bounds(curve, other->polynomial_pieces(), tol);
     text << "Hausdorff distance to " << o.hausdorff << " = " << format_number(h.value(), 10) << " (certified in ["
          << format_number(h.lower, 10) << ", " << format_number(h.upper, 10) << "], tolerance "
-         << format_number(tol, 3) << (h.converged ? "" : "; work cap reached, bounds wider than the tolerance") << ")\n";
+         << format_number(tol, 3)
+         << (h.converged                        ? ""
+             : h.rounding_allowance > tol / 2 ? "; bounds wider than the tolerance: it is below the rounding allowance of the coordinates"
+                                              : "; work cap reached, bounds wider than the tolerance")
+         << ")\n";
     j["hausdorff_distance"] = h.value();
     j["hausdorff_lower"] = h.lower;
     j["hausdorff_upper"] = h.upper;

@@ -117,6 +117,7 @@ inline std::pair<Sub_piece, Sub_piece> halve(const Sub_piece& s) {
 struct Certified_polyline {
   std::vector<Point_d> vertices;
   double error = 0;
+  double rounding = 0;    ///< the part of `error` that is the rounding allowance
   bool converged = true;  ///< every sub-piece within the target (no cap met)
   bool certified = true;  ///< e is a certified bound (Bernstein-form pieces)
 };
@@ -205,7 +206,8 @@ Certified_polyline certified_polyline(const std::vector<Piece>& curve, double ta
     }
     // Rounding allowance of the double de Casteljau steps and chord deviations; a curve of
     // straight pieces has its control points as the polyline, exactly (e = 0).
-    out.error = degree <= 1 ? 0.0 : err + 64 * double(degree + 1) * std::numeric_limits<double>::epsilon() * magnitude;
+    out.rounding = degree <= 1 ? 0.0 : 64 * double(degree + 1) * std::numeric_limits<double>::epsilon() * magnitude;
+    out.error = err + out.rounding;
   } else {
     out.certified = false;
     double err = 0;
