@@ -334,17 +334,18 @@ TEST(Metrics, PrimitiveIntegerFormScalesDAndNByPositivePowers) {
 }
 
 // The work caps of the certification (pieces.h): a piece beyond the piece cap is sampled, a curve
-// gets max(3e9, 3e7 per piece); pieces with distinct 12-digit denominators of degree 12 are
+// gets max(1e9, 3e7 per piece); pieces with distinct 12-digit denominators of degree 12 are
 // sampled for N (issue 29 #4: 11 s at degree 30 before), and 300 cheap exact cubics stay certified.
 TEST(Metrics, CertificationWorkIsCapped) {
   using fair::internal::metrics::Certification_budget;
-  Certification_budget budget(10);  // 3e9
-  EXPECT_FALSE(budget.allows(fair::internal::metrics::max_certified_piece_work * 1.01));
-  for (int k = 0; k < 6; ++k) EXPECT_TRUE(budget.take(5e8)) << k;
-  EXPECT_FALSE(budget.take(5e8));
+  const double piece_cap = fair::internal::metrics::max_certified_piece_work;
+  Certification_budget budget(10);  // 1e9
+  EXPECT_FALSE(budget.allows(piece_cap * 1.01));
+  for (int k = 0; k < 10; ++k) EXPECT_TRUE(budget.take(piece_cap)) << k;
+  EXPECT_FALSE(budget.take(piece_cap));
   EXPECT_TRUE(budget.take(0));
   Certification_budget long_curve(1000);  // 3e10
-  for (int k = 0; k < 60; ++k) EXPECT_TRUE(long_curve.take(5e8)) << k;
+  for (int k = 0; k < 300; ++k) EXPECT_TRUE(long_curve.take(piece_cap)) << k;
   EXPECT_FALSE(long_curve.take(1));
 
   typedef SC_gmpq::Point_2 P;

@@ -29,10 +29,8 @@
 
 namespace fair {
 
-/// The distance from Optimal_curve_2::spline() to the optimal polygon that the smoothing fit
-/// allows, as a fraction of the polygon's resolution (rotation-invariant extent / rho):
-/// doc/optimal_curves.md, "The smoothing spline".
-constexpr double optimal_spline_distance_fraction = 0.9;
+// fair::optimal_spline_distance_fraction (0.9 of the resolution): internal/spline/smoothing_runs.h,
+// shared with the hierarchy, which refines the polygon until the spline can keep it.
 
 /// The optimal curve through `points` (closed: no repeated last point): the optimal polygon and
 /// the C2 cubic smoothing spline of it through the points (pieces(), spline()).
@@ -114,6 +112,9 @@ public:
   /// polygon's resolution (rotation-invariant extent / rho). It passes through the input points
   /// exactly and smooths the ripples that interpolating every vertex of the adaptive polygon makes
   /// (doc/optimal_curves.md, "The smoothing spline"; fit_cubic_spline_runs interpolates every vertex).
+  /// The hierarchy refines the polygon until the interpolant of every vertex is within that
+  /// tolerance (internal/spline/smoothing_runs.h), so spline_smoothing().tolerance_met holds for a
+  /// solve that reached its resolution. The C4 quintic of the same rule: fit_smoothing_quintic_runs.
   const Spline& spline() const { return spline_; }
   /// How spline() was smoothed (tolerance, per-run smoothing weight and bisection solves).
   const Spline_smoothing_report& spline_smoothing() const { return smoothing_; }

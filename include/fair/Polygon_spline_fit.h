@@ -47,6 +47,8 @@
 #include <fair/internal/optimal/spline_fit.h>
 #include <fair/internal/spline/polygon_fit.h>
 #include <fair/internal/spline/smoothing_fit.h>
+#include <fair/internal/spline/smoothing_quintic.h>
+#include <fair/internal/spline/smoothing_runs.h>
 
 #include <CGAL/Simple_cartesian.h>
 
@@ -196,7 +198,7 @@ struct Spline_smoothing_report {
   double tolerance = 0;  ///< the distance to the polygon asked for
   /// Per run: sigma / L^4 (L the run's chord length; scale-free): 0 when every vertex is interpolated.
   std::vector<double> smoothing;
-  std::vector<int> solves;  ///< per run: linear solves of the bisection (at most 40)
+  std::vector<int> solves;  ///< per run: linear solves of the bisection and the band steps (at most 40 together)
   bool tolerance_met = true;  ///< false when a run's interpolant of every vertex is already farther
 };
 
@@ -214,9 +216,11 @@ struct Polygon_smoothing_fit {
 /// polygon, and elsewhere minimises
 ///   int |c''|^2 dt + sum_k hbar^3 |c(t_k) - v_k|^2 / (sigma a_k^2)   (Reinsch; a_k the mean
 /// interval at vertex k, hbar the run's mean: the fit follows the polygon where it is fine),
-/// with the largest sigma (bisection on log sigma, at most 40 solves per run) whose distance to the
+/// with the largest sigma (bisection on log sigma; at most 40 solves per run with the band steps) whose distance to the
 /// polygon (each piece from the edge it replaces, and |c(t_k) - v_k|) is <= `max_distance`, and
-/// within 0.9 of it where the bisection reaches it. Open runs have natural ends (c'' = 0),
+/// within 0.9 of it where the bisection reaches it; then up to 25 band steps re-weight the free
+/// vertices one by one towards the band-constrained spline (every free vertex up to 0.9
+/// max_distance away; internal/spline/smoothing_fit.h), each kept only within `max_distance`. Open runs have natural ends (c'' = 0),
 /// closed ones without corners are periodic. max_distance = 0 gives the natural C2 interpolant of
 /// every vertex. When that interpolant is already farther than `max_distance`, a run keeps it and
 /// report.tolerance_met is false. Derivation: internal/spline/smoothing_fit.h and the doc.
@@ -238,11 +242,7 @@ Polygon_smoothing_fit<K> fit_smoothing_spline_runs(const std::vector<typename K:
     internal::require(c < n, fn, ": interpolated vertex ", c, " is not a vertex of the polygon of ", n, " vertices");
   const double scale = fit_scale(raw);
   const std::vector<V> p = scaled(raw, 1 / scale);
-  std::sort(corners.begin(), corners.end());
-  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
-  if (!closed)
-    corners.erase(std::remove_if(corners.begin(), corners.end(), [n](std::size_t c) { return c == 0 || c + 1 == n; }),
-                  corners.end());
+  corners = normalised_corners(std::move(corners), n, closed);
   std::vector<bool> hard(n, false);
   for (std::size_t c : interpolated) hard[c] = true;
   // At a corner the run's first edge is kept too (its other vertex interpolated): the optimal
@@ -254,15 +254,9 @@ Polygon_smoothing_fit<K> fit_smoothing_spline_runs(const std::vector<typename K:
     hard[(c + n - 1) % n] = true;
   }
   if (!closed) hard.front() = hard.back() = true;
-  std::vector<std::size_t> ends;  // run r from ends[r] to ends[r + 1]
-  const bool periodic = closed && corners.empty();
-  if (periodic) ends = {0, n - 1};  // the one periodic run (its closing edge included)
-  else {
-    if (!closed) ends.push_back(0);
-    ends.insert(ends.end(), corners.begin(), corners.end());
-    if (closed) ends.push_back(corners.front() + n);  // wraps around
-    else ends.push_back(n - 1);
-  }
+  const Run_layout layout = run_layout(n, closed, corners);  // run r from ends[r] to ends[r + 1]
+  const std::vector<std::size_t>& ends = layout.ends;
+  const bool periodic = layout.periodic;
   Polygon_smoothing_fit<K> out{{{}, {}, 0.0}, {}};
   out.report.tolerance = max_distance;
   for (std::size_t r = 0; r + 1 < ends.size(); ++r) {
@@ -288,6 +282,84 @@ Polygon_smoothing_fit<K> fit_smoothing_spline_runs(const std::vector<typename K:
     out.runs.max_distance = std::max(out.runs.max_distance, scale * fit.distance);
     const double length = t.back() - t.front();
     out.report.smoothing.push_back(fit.sigma / (length * length * length * length));
+    out.report.solves.push_back(fit.solves);
+    out.report.tolerance_met = out.report.tolerance_met && fit.met;
+  }
+  return out;
+}
+
+/// The smoothing quintic runs of a polygon (pieces run after run, as fit_quintic_spline's) and how
+/// they were chosen.
+template <class K>
+struct Polygon_smoothing_quintic_fit {
+  Polygon_quintic_fit<K> fit;
+  Spline_smoothing_report report;
+};
+
+/// A C4 quintic smoothing spline through `polygon`: fit_smoothing_spline_runs with the quintic's
+/// energy (same runs, hard vertices, distance rule, bisection and band steps; natural ends
+/// c''' = c'''' = 0 at the run ends, periodic without corners), minimising
+///   int |c'''|^2 dt + sum_k hbar^5 |c(t_k) - v_k|^2 / (sigma a_k^2)
+/// (internal/spline/smoothing_quintic.h; doc/optimal_curves.md, "The quintic smoothing spline").
+/// max_distance = 0 gives the natural (periodic) C4 quintic interpolant of every vertex (closed:
+/// fit_quintic_spline's; open: natural instead of clamped ends). Runs of 2 vertices: the segment.
+/// report.smoothing is sigma / L^6. \throws as fit_smoothing_spline_runs. Complexity O(n) per solve
+/// (banded Cholesky of half-bandwidth 5, cyclic when closed).
+template <class K>
+Polygon_smoothing_quintic_fit<K> fit_smoothing_quintic_runs(const std::vector<typename K::Point_2>& polygon,
+                                                            bool closed, std::vector<std::size_t> interpolated,
+                                                            std::vector<std::size_t> corners, double max_distance) {
+  using namespace internal::spline;
+  typedef internal::optimal::Vec2 V;
+  const char* fn = "fair::fit_smoothing_quintic_runs";
+  internal::require(std::isfinite(max_distance) && max_distance >= 0, fn, ": max_distance ", max_distance,
+                    " must be finite and >= 0");
+  const std::vector<V> raw = polygon_to_double<K>(polygon, closed, fn);
+  const std::size_t n = polygon.size();
+  for (std::size_t c : corners) internal::require(c < n, fn, ": corner vertex ", c, " is not a vertex of the polygon of ", n, " vertices");
+  for (std::size_t c : interpolated)
+    internal::require(c < n, fn, ": interpolated vertex ", c, " is not a vertex of the polygon of ", n, " vertices");
+  const double scale = fit_scale(raw);
+  const std::vector<V> p = scaled(raw, 1 / scale);
+  corners = normalised_corners(std::move(corners), n, closed);
+  std::vector<bool> hard(n, false);
+  for (std::size_t c : interpolated) hard[c] = true;
+  for (std::size_t c : corners) hard[c] = hard[(c + 1) % n] = hard[(c + n - 1) % n] = true;  // as the cubic
+  if (!closed) hard.front() = hard.back() = true;
+  const Run_layout layout = run_layout(n, closed, corners);
+  Polygon_smoothing_quintic_fit<K> out{{{}, 0.0}, {}};
+  out.report.tolerance = max_distance;
+  for (std::size_t r = 0; r + 1 < layout.ends.size(); ++r) {
+    std::vector<V> v;
+    std::vector<bool> h;
+    std::vector<std::size_t> index;
+    for (std::size_t i = layout.ends[r]; i <= layout.ends[r + 1]; ++i) {
+      v.push_back(p[i % n]);
+      h.push_back(hard[i % n]);
+      index.push_back(i % n);
+    }
+    const std::vector<double> t = internal::optimal::chord_breakpoints(v, layout.periodic, fn);
+    Smoothing_run_of<6> fit;
+    if (v.size() == 2) {  // the segment
+      fit.pieces.push_back({{v[0], v[0], v[0], v[1], v[1], v[1]}});
+      for (int k = 1; k < 5; ++k)
+        for (int x = 0; x < 2; ++x) fit.pieces[0][k][x] = v[0][x] + (v[1][x] - v[0][x]) * k / 5;
+    } else {
+      fit = smoothing_fit_run_with<6>(v, t, layout.periodic, h, max_distance / scale, 5,
+                                      [&](const std::vector<double>& d, std::vector<std::array<V, 6>>& pieces,
+                                          std::vector<V>& y) { return smoothing_quintic_solve(v, t, layout.periodic, d, pieces, y); });
+    }
+    for (std::size_t i = 0; i < fit.pieces.size(); ++i) {
+      std::vector<typename K::Point_2> q;
+      for (std::size_t k = 0; k < 6; ++k) q.push_back(to_point<K>(V{{fit.pieces[i][k][0] * scale, fit.pieces[i][k][1] * scale}}));
+      // the pieces of a hard vertex start and end at it exactly (in every kernel)
+      if (h[i]) q.front() = polygon[index[i]];
+      if (h[(i + 1) % v.size()]) q.back() = polygon[index[(i + 1) % v.size()]];
+      out.fit.pieces.push_back(Bezier_2<K>(std::move(q)));
+    }
+    out.fit.max_distance = std::max(out.fit.max_distance, scale * fit.distance);
+    const double length = t.back() - t.front();
+    out.report.smoothing.push_back(fit.sigma / std::pow(length, 6));
     out.report.solves.push_back(fit.solves);
     out.report.tolerance_met = out.report.tolerance_met && fit.met;
   }

@@ -10,9 +10,12 @@
 //    expected (none beyond the input's but on six strokes and Greenland: doc/optimal_curves.md);
 //  - the spline (the smoothing spline of Optimal_curve_2::spline()) keeps the curve's shape: its
 //    certified inflections and curvature extrema (Fairness_metrics.h) as expected, and over the set
-//    the medians measured (inflections per input point 0.333 / 0.571, extrema 1.333 / 1.429; the
-//    issue's targets: inflections median <= 0.5, max <= 1.5 (held); extrema median <= 1.5 (held));
-//  - the spline near the polygon's resolution: max_distance <= 1.25 extent / rho (measured: 1.21).
+//    the medians measured (inflections per input point 0.308 / 0.500, extrema 1.100 / 1.250 at the
+//    defaults / lambda = 0.5; the issue's targets: inflections
+//    median <= 0.5, max <= 1.5; extrema median <= 1.5: all held at both settings);
+//  - the spline within the polygon's resolution on every curve: the hierarchy refines the polygon
+//    until the fit's tolerance (0.9 extent / rho) is met (tolerance_met), so max_distance <= 0.9
+//    extent / rho (before: up to 1.21 on 7 strokes per setting).
 
 #include <fair/Fairness_metrics.h>
 #include <fair/Optimal_curve_2.h>
@@ -128,7 +131,7 @@ struct Setting {
   const char* name;
   double lambda, inflections, extrema;
 };
-const std::vector<Setting> settings = {{"defaults", -1, 0.34, 1.34}, {"lambda 0.5", 0.5, 0.58, 1.43}};
+const std::vector<Setting> settings = {{"defaults", -1, 0.31, 1.10}, {"lambda 0.5", 0.5, 0.5, 1.25}};
 
 TEST(OptimalRealData, HandDrawnCurvesAreFairAtTheDefaultsAndAtLambdaHalf) {
   const std::vector<Real_curve> curves = hand_drawn();
@@ -152,7 +155,11 @@ TEST(OptimalRealData, HandDrawnCurvesAreFairAtTheDefaultsAndAtLambdaHalf) {
   if (write) {
     out.open(write);
     out << "# test/optimal/test_real_data.cpp: per curve and setting: inflections, curvature extrema, extent_ratio,\n"
-        << "# self_intersections, input_self_intersections (GCC 12 -O3)\n";
+        << "# self_intersections, input_self_intersections (GCC 12 -O3)\n"
+        << "# Rewritten (issue 25 §3, measured): the band steps of the smoothing fit moved the spline's inflections\n"
+        << "# (101 curve-settings down, 60 up; sum 1104 -> 1007) and extrema (147 down, 16 up; 4147 -> 3141); the\n"
+        << "# spline-resolution pass refined 12 polygons (extent_ratio within 0.4 %) and Greenland's (its loops\n"
+        << "# cross more refined edges: 70 -> 76 and 36 -> 44 self-intersecting edge pairs).\n";
   }
   for (const auto& setting : settings) {
     std::vector<double> inflections, extrema, polygon_inflections;
@@ -162,8 +169,10 @@ TEST(OptimalRealData, HandDrawnCurvesAreFairAtTheDefaultsAndAtLambdaHalf) {
       const Measured m = measure(c, setting.lambda);
       const std::string what = key(c.name, setting.name);
       EXPECT_LE(m.extent_ratio, 1.5) << what;
-      // Within the polygon's resolution, to the 1.25 of the measured worst (1.21: doc/optimal_curves.md).
-      EXPECT_LE(m.distance, 1.25 * m.resolution) << what;
+      // Within the fit's tolerance, 0.9 of the polygon's resolution, on every curve (issue 25 §3:
+      // <= 1; doc/optimal_curves.md, "Distance within the resolution").
+      EXPECT_TRUE(m.tolerance_met) << what;
+      EXPECT_LE(m.distance, fair::optimal_spline_distance_fraction * m.resolution * (1 + 1e-9)) << what;
       EXPECT_EQ(m.status, fair::Optimal_curve_status::CONVERGED) << what;
       const double n = static_cast<double>(c.points.size());
       if (c.name != "greenland") {
@@ -200,7 +209,9 @@ TEST(OptimalRealData, HandDrawnCurvesAreFairAtTheDefaultsAndAtLambdaHalf) {
                 beyond_resolution, interpolants, median(polygon_inflections),
                 *std::max_element(polygon_inflections.begin(), polygon_inflections.end()));
     EXPECT_LE(median(inflections), setting.inflections) << setting.name;
-    EXPECT_LE(worst_inflections, 1.5) << setting.name;  // the issue's max (reached by the smoothing spline)
+    // the issue's max (reached by the smoothing spline; measured 1.333 / 1.25: one 3-point stroke with
+    // two roots of the curvature at its natural ends, doc/optimal_curves.md "How fragile the counts are")
+    EXPECT_LE(worst_inflections, 1.5) << setting.name;
     EXPECT_LE(median(extrema), setting.extrema) << setting.name;
   }
 }

@@ -2,7 +2,8 @@
 //
 // fair-curves optimal: Gumhold's optimal curve through a point file (fair::Optimal_curve_2,
 // issue 11; doc/optimal_curves.md), delivered as the optimal polygon and the C2 cubic spline
-// through it (fair::fit_smoothing_spline_runs: C2 between corners, G0 at them; with a derivative term k >= 1 also the C4 quintic). The
+// through it (fair::fit_smoothing_spline_runs: C2 between corners, G0 at them; with a derivative term k >= 1 also the C4
+// quintic smoothing spline, fair::fit_smoothing_quintic_runs). The
 // weights of eq. 5 (--length-weight, --curvature-weight, --curvature-exponent,
 // --derivative-weight K:BK[:AK]) or the lambda trade-off of eq. 10 (--lambda, or one lambda per
 // input segment from --lambda-file); tangent, normal and corner constraints from files (formats
@@ -145,7 +146,12 @@ void run_optimal(const Optimal_command_options& o) {
   const fair::Optimal_curve_2<Kernel> curve(data.points, options);
   std::unique_ptr<fair::Polygon_quintic_fit<Kernel>> quintic;
   if (has_derivative_term(options))
-    quintic.reset(new fair::Polygon_quintic_fit<Kernel>(fair::fit_quintic_spline<Kernel>(curve.polygon(), options.closed)));
+    // The C4 quintic smoothing spline under the cubic's distance rule (issue 25 §3): through the
+    // input points, C4 between the corners, within spline_smoothing().tolerance where it can be.
+    quintic.reset(new fair::Polygon_quintic_fit<Kernel>(
+        fair::fit_smoothing_quintic_runs<Kernel>(curve.polygon(), options.closed, curve.interpolation_indices(),
+                                                 curve.corner_vertices(), curve.spline_smoothing().tolerance)
+            .fit));
   const std::string json_text = o.json_out.empty() ? std::string() : curve_json(curve, quintic.get());
   std::string svg_text;
   if (!o.svg_out.empty()) {

@@ -274,12 +274,15 @@ Homogeneous_form homogeneous_exact(const P& piece) {
 /// 1.5e9 -> 0.33 s, 4.6e9 -> 2.4 s, 1.2e10 -> 2.2 s; the 59 exact cubics of `cardinal --exact`
 /// through 60 points: 1.0e9 in all, 0.11 s. A piece whose work would exceed either cap is
 /// sampled instead (certified = false, reported):
-///  - one piece: 5e8 (about 0.15 s); a rational cubic with 12-digit p/q coordinates needs 2e7;
-///  - one curve: max(3e9, 3e7 per piece), so that a file of pieces each just under the piece cap
-///    is not 100 x 0.15 s (issue 29's oracle: under 1 s below 100 pieces), while the program's own
-///    exact curves (at most 2e7 a piece, as above) stay certified at any length.
-constexpr double max_certified_piece_work = 5e8;
-constexpr double min_certified_curve_work = 3e9;
+///  - one piece: 1e8 (about 0.03 s in release; the fuzz build, whose Gmpq wrappers allocate
+///    through ASan, is several times slower); a rational cubic with 12-digit p/q coordinates
+///    needs 2e7, the old cap of 60 000 bits allowed about 2e7 for a cubic, 8e7 for a quintic;
+///  - one curve: max(1e9, 3e7 per piece) for each feature kind, so that a file of pieces each
+///    just under the piece cap is not 100 x 0.03 s (issue 29's oracle: under 1 s below 100
+///    pieces), while the program's own exact curves (at most 2e7 a piece, as above) stay
+///    certified at any length.
+constexpr double max_certified_piece_work = 1e8;
+constexpr double min_certified_curve_work = 1e9;
 constexpr double certified_work_per_piece = 3e7;
 
 /// The size of an exact Bernstein polynomial in bits.

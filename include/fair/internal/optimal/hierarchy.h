@@ -22,6 +22,7 @@
 #include <fair/internal/optimal/functional.h>
 #include <fair/internal/optimal/lambda.h>
 #include <fair/internal/optimal/solver.h>
+#include <fair/internal/spline/smoothing_runs.h>
 
 #include <algorithm>
 #include <array>
@@ -77,10 +78,12 @@ inline double edge_error(double l, double phi) { return 0.5 * l * std::tan(0.25 
 /// by more than this factor is split while its sagitta exceeds eps_max / curvature_resolution_floor.
 constexpr double curvature_resolution_ratio = 2, curvature_resolution_floor = 8;
 
-/// Splits the edges whose error exceeds eps_max at their midpoints; updates the interpolation
+/// Splits the edges whose error exceeds eps_max at their midpoints (or, with `forced`, exactly the
+/// edges marked there: the spline-resolution pass of run_hierarchy); updates the interpolation
 /// indices and the constraint vertices. Returns the number of edges split.
 inline std::size_t subdivide(const Level_problem& p, std::vector<Vec2>& c, double eps_max,
-                             std::vector<std::size_t>& interpolation, std::vector<Placed_constraint>& placed) {
+                             std::vector<std::size_t>& interpolation, std::vector<Placed_constraint>& placed,
+                             const std::vector<unsigned char>* forced = nullptr) {
   const bool closed = p.f.closed;
   const std::size_t n = c.size(), edges = closed ? n : n - 1;
   // New vertices by the four-point rule (Dyn, Levin, Gregory; weights -1, 9, 9, -1 over 16)
@@ -114,7 +117,7 @@ inline std::size_t subdivide(const Level_problem& p, std::vector<Vec2>& c, doubl
   // (k = 4: condition ~ n^10) gain nothing from the extra vertices.
   bool curvature_term = false;
   for (double b0 : p.f.curvature_weight) curvature_term = curvature_term || b0 > 0;
-  for (std::size_t j = 0; j < edges; ++j) {
+  for (std::size_t j = 0; j < edges && !forced; ++j) {
     const double l = length[j];
     const double e = std::max(edge_error(l, phi[j]), edge_error(l, phi[(j + 1) % n]));
     bool resolve = e > eps_max;
@@ -129,6 +132,9 @@ inline std::size_t subdivide(const Level_problem& p, std::vector<Vec2>& c, doubl
     }
     if (resolve) { split[j] = 1; ++count; }
   }
+  if (forced)
+    for (std::size_t j = 0; j < edges; ++j)
+      if ((*forced)[j]) { split[j] = 1; ++count; }
   if (count == 0) return 0;
   std::vector<Vec2> d;
   d.reserve(n + count);
@@ -221,10 +227,18 @@ inline void check_solve_input(const std::vector<Vec2>& p, const Optimal_curve_op
           " and max_iterations_per_level = ", o.max_iterations_per_level, " must be >= 1");
 }
 
+/// The spline-resolution pass of run_hierarchy splits where the C2 interpolant is beyond this
+/// fraction of the smoothing fit's tolerance (a margin for the rounding between the two).
+constexpr double spline_resolution_margin = 0.99;
+
 /// The hierarchy with per-edge beta and per-vertex beta0 given by `weights(c, interpolation,
-/// edge_beta, vertex_beta0)` (re-evaluated on every level).
+/// edge_beta, vertex_beta0)` (re-evaluated on every level). `spline_resolution` (the polygon that
+/// Optimal_curve_2 delivers, not the lambda = 1 reference of eq. 11): once the sagitta test splits
+/// no edge, the edges on which the C2 interpolant lies farther than optimal_spline_distance_fraction
+/// * eps_max from the polygon are split too (internal/spline/smoothing_runs.h), until none is.
 template <class Weights>
-Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_options& o, Weights weights) {
+Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_options& o, Weights weights,
+                           bool spline_resolution = true) {
   Solve_result r;
   std::vector<Placed_constraint> placed = check_constraints(o.constraints, points, o.closed);
   std::vector<Vec2> c = initial_polygon(points, o.closed, placed, r.interpolation_indices);
@@ -278,7 +292,18 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
     std::vector<Vec2> d = c;
     std::vector<std::size_t> interpolation = r.interpolation_indices;
     std::vector<Placed_constraint> moved = placed;
-    const std::size_t split = subdivide(p, d, rotation_invariant_extent(c) / o.resolution, interpolation, moved);
+    const double eps_max = rotation_invariant_extent(c) / o.resolution;
+    std::size_t split = subdivide(p, d, eps_max, interpolation, moved);
+    if (split == 0 && spline_resolution) {  // the spline's resolution (smoothing_runs.h)
+      std::vector<std::size_t> corners;
+      for (const Placed_constraint& q : placed)
+        if (q.corner) corners.push_back(q.vertex);
+      // (a margin of 1 % under the fit's tolerance: Optimal_curve_2 measures it on the polygon mapped
+      // back to the user's coordinates, which rounding moves by far less)
+      const std::vector<unsigned char> beyond = spline::interpolant_beyond_edges(
+          c, o.closed, corners, spline_resolution_margin * optimal_spline_distance_fraction * eps_max);
+      split = subdivide(p, d, eps_max, interpolation, moved, &beyond);
+    }
     if (split == 0) break;  // the target resolution is reached
     // The level cap counts only when another level is needed.
     if (level + 1 >= o.max_levels) { overall = worse(overall, Status::CAPPED); break; }
@@ -294,8 +319,10 @@ Solve_result run_hierarchy(const std::vector<Vec2>& points, const Optimal_curve_
   return r;
 }
 
-/// The lambda design and the hierarchy on points already normalised (defined below).
-inline Solve_result solve_normalised(const std::vector<Vec2>& points, const Optimal_curve_options& o);
+/// The lambda design and the hierarchy on points already normalised (defined below); `delivered`:
+/// the polygon Optimal_curve_2 returns (false for the lambda = 1 reference: no spline resolution).
+inline Solve_result solve_normalised(const std::vector<Vec2>& points, const Optimal_curve_options& o,
+                                     bool delivered = true);
 
 /// The whole solve of Optimal_curve_2 (checks, the lambda design, the hierarchy), on the points
 /// translated by their centroid and divided by a power of two near their extent (reviewer finding 9:
@@ -343,14 +370,14 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
 
 /// solve_optimal_curve after its checks and normalisation: the lambda design (eqs. 10-12) and the
 /// hierarchy.
-inline Solve_result solve_normalised(const std::vector<Vec2>& points, const Optimal_curve_options& o) {
+inline Solve_result solve_normalised(const std::vector<Vec2>& points, const Optimal_curve_options& o, bool delivered) {
   const bool lambda_design = o.lambda != -1 || !o.segment_lambda.empty();
   if (!lambda_design) {
     return run_hierarchy(points, o, [&](const std::vector<Vec2>& c, const std::vector<std::size_t>&,
                                         std::vector<double>& beta, std::vector<double>& beta0) {
       beta.assign(o.closed ? c.size() : c.size() - 1, o.length_weight);
       beta0.assign(c.size(), o.curvature_weight);
-    });
+    }, delivered);
   }
   const std::size_t m = points.size(), segments = o.closed ? m : m - 1;
   std::vector<double> lambda = o.segment_lambda.empty() ? std::vector<double>(segments, o.lambda) : o.segment_lambda;
@@ -358,7 +385,7 @@ inline Solve_result solve_normalised(const std::vector<Vec2>& points, const Opti
     return run_hierarchy(points, o, [&](const std::vector<Vec2>& c, const std::vector<std::size_t>& interpolation,
                                         std::vector<double>& beta, std::vector<double>& beta0) {
       lambda_weights(c, o.closed, interpolation, lambda, std::vector<double>(), beta, beta0, o.lambda_length_scale);
-    });
+    }, delivered);
   // The lambda = 1 reference curve (beta = 0, beta0 = 1) for eta of eq. 11; guarded by
   // lambda = 0.99 with q(0) when it has no finite minimiser (diverges).
   Optimal_curve_options ref = o;
@@ -367,12 +394,12 @@ inline Solve_result solve_normalised(const std::vector<Vec2>& points, const Opti
   ref.derivative_weight = {{0, 0, 0, 0, 0}};
   ref.length_weight = 0;
   ref.curvature_weight = 1;
-  Solve_result reference = solve_normalised(points, ref);
+  Solve_result reference = solve_normalised(points, ref, false);
   bool guarded = false;
   if (reference.report.status == Status::DIVERGING) {
     ref.length_weight = 0.01 * lambda_scale(0);
     ref.curvature_weight = 0.99;
-    reference = solve_normalised(points, ref);
+    reference = solve_normalised(points, ref, false);
     guarded = true;
   }
   // eta from a fair reference only (fair_reference.h): the lambda = 1 curve when it is fair,
@@ -397,7 +424,7 @@ inline Solve_result solve_normalised(const std::vector<Vec2>& points, const Opti
   Solve_result r = run_hierarchy(points, o, [&](const std::vector<Vec2>& c, const std::vector<std::size_t>& interpolation,
                                                 std::vector<double>& beta, std::vector<double>& beta0) {
     lambda_weights(c, o.closed, interpolation, lambda, eta, beta, beta0);
-  });
+  }, delivered);
   r.eta = eta;
   r.eta_reference_guarded = guarded;
   r.eta_from_spline = !fair_reference;
