@@ -5,6 +5,7 @@
 // internal/kappa/jacobian.h against automatic differentiation over all 16 unknowns of a window, and
 // the Newton phase of internal/kappa/solver.h against Levenberg-Marquardt.
 
+#include <fair/internal/kappa/problem_setup.h>
 #include <fair/internal/kappa/solver.h>
 
 #include <gtest/gtest.h>
@@ -794,6 +795,109 @@ TEST(KappaSolver, WarmFallbackTraceSkipsTheRepeatedNewtonPaths) {
     }
   }
   EXPECT_GE(compared, 1u) << traced << " traced, " << unsolved << " warm solves unsolved";
+}
+
+// ------------------------------------------------------------------ hopeless edits (session 17)
+
+/// The 52 points of fuzz/corpus/kappa/regress-slow-open-fixed-52-points-a (open, every weight 1/4):
+/// repeated points and clusters 1e-8 apart beside points 1e2 apart. The cold solve ends UNSOLVED
+/// after its whole fallback (passes, Levenberg-Marquardt with restart) with a |kappa| mismatch
+/// of 1 at points 41 and 42.
+Problem hopeless_open_problem() {
+  struct Xy {
+    double px, py;
+    double x() const { return px; }
+    double y() const { return py; }
+  };
+  const std::vector<Xy> q = {
+    {41, 0}, {15, -1}, {1.4739878624152854e-08, 2.1864544519090913e-09},
+    {6, 0}, {0, 8}, {41, 0},
+    {41, 3}, {15, 32}, {0, -10},
+    {35, -60}, {0, -0}, {0, 7},
+    {83, 116}, {0, -10}, {8, 41},
+    {-1.0536712127723507e-08, 1.0536712127723509e-08}, {6, 0}, {15, 32},
+    {0, -10}, {35, -60}, {0, -0},
+    {0, 7}, {83, 116}, {35, -60},
+    {99, 35}, {116, 105}, {-1.3470490174344828e-08, 6.3710673664552276e-09},
+    {3, -10}, {1.0536712127723509e-08, 1.0536712127723507e-08}, {0, 0},
+    {41, 0}, {0, 122}, {32, 0},
+    {6, 3}, {15, 32}, {41, 3},
+    {1.4901161193847656e-08, 0}, {-75, -68.5}, {-256.24999989196658, -18.75},
+    {6, 3}, {-9.9999999999999999e-300, 3.0000000000000002e-300}, {1.0536712127723509e-08, 1.0536712127723507e-08},
+    {0, 0}, {-1, -7}, {1.4901161193847656e-08, 0},
+    {0, -10}, {0, 6}, {9.8781676197407891e-09, 9.8781676197407874e-09},
+    {41, 3}, {1.4901161193847656e-08, 0}, {15, -1},
+    {0, 0},
+  };
+  std::vector<double> x, y;
+  normalise(q, x, y);
+  fair::Kappa_curve_options opt;
+  opt.weights = Kappa_weights::FIXED;
+  opt.fixed_weights.assign(q.size(), 0.25);
+  return make_problem(x, y, opt);
+}
+
+// The test of solve_with_warm_start's rule (doc/kappa_curves.md, "The solver", item 7): only
+// residuals further than edit_reach blocks from the moved one count, and only from
+// hopeless_residual on. A root is never hopeless; a root spoiled at one block is hopeless for
+// edits far from that block and not for an edit of it (its residuals are the edit's to change).
+TEST(KappaSolver, HopelessPreviousSolveIsJudgedAwayFromTheEdit) {
+  const Problem pb = star(40, 3, Kappa_weights::UNIT);
+  Kappa_solver_state root;
+  ASSERT_EQ(solve(pb, root, Solve_settings{}).status, fair::Kappa_curve_status::INTERIOR);
+  for (std::size_t moved = 0; moved < pb.n; moved += 7) EXPECT_FALSE(failed_hopelessly_away_from_edit(pb, root, moved));
+  Kappa_solver_state spoiled = root;
+  spoiled.dx[20] += 3;  // P_20 far off: eq. 7 and the |kappa| mismatch of blocks 19..22 fail
+  std::vector<double> F;
+  evaluate(pb, spoiled, F);
+  double worst = 0;
+  for (std::size_t i = 19; i <= 22; ++i) worst = std::max({worst, std::abs(F[4 * i + 2]), std::abs(F[4 * i + 3])});
+  ASSERT_GE(worst, hopeless_residual);
+  EXPECT_FALSE(failed_hopelessly_away_from_edit(pb, spoiled, 20));
+  EXPECT_FALSE(failed_hopelessly_away_from_edit(pb, spoiled, 21));
+  EXPECT_TRUE(failed_hopelessly_away_from_edit(pb, spoiled, 0));
+  EXPECT_TRUE(failed_hopelessly_away_from_edit(pb, spoiled, 30));
+  EXPECT_FALSE(failed_hopelessly_away_from_edit(pb, spoiled, Problem::no_block));  // unknown edit
+}
+
+// An edit of a curve whose solve failed hopelessly: the re-solve runs Newton's method only (the
+// warm stages, the cold start's Newton paths) and no Levenberg-Marquardt, neither from the
+// previous solution nor in a cold solve after it (fuzz finding regress-slow-open-fixed-52-points-a:
+// the re-solve took 186 Jacobians in each of the two, 1.4 s under ASan+UBSan).
+TEST(KappaSolver, EditOfAHopelessCurveRunsNoLevenbergMarquardt) {
+  Problem pb = hopeless_open_problem();
+  Kappa_solver_state previous;
+  const Kappa_curve_report first = solve_with_warm_start(pb, nullptr, 0, Solve_settings{}, previous);
+  ASSERT_EQ(first.status, fair::Kappa_curve_status::UNSOLVED);
+  EXPECT_EQ(first.reason, fair::Kappa_curve_unsolved_reason::NO_CONVERGENCE);
+  EXPECT_GE(first.residual, hopeless_residual);
+  EXPECT_GT(first.iterations, 2 * newton_iterations + density_start_iterations);  // the whole fallback ran
+  const std::size_t moved_point = 10, block = pb.block_of_point(moved_point);
+  pb.qx[block] += 1e-3;
+  ASSERT_TRUE(failed_hopelessly_away_from_edit(pb, previous, block));
+  // The warm solve: its trace says so, and its Jacobians are at most those of its Newton runs
+  // and the short local Levenberg-Marquardt runs (two local stages for 50 blocks: R = 8, 32).
+  Solve_settings warm;
+  warm.warm = true;
+  warm.moved = block;
+  Kappa_solver_state w = previous;
+  Solve_trace trace;
+  const Kappa_curve_report wr = solve(pb, w, warm, &trace);
+  EXPECT_TRUE(trace.hopeless_previous);
+  EXPECT_EQ(wr.status, fair::Kappa_curve_status::UNSOLVED);
+  const std::size_t newton_only = 2 * (warm_newton_iterations + local_lm_iterations) + warm_newton_iterations +
+                                  2 * newton_iterations + density_start_iterations;
+  EXPECT_LE(wr.iterations, newton_only);
+  EXPECT_LE(wr.refinement_passes, Solve_settings{}.refinement_passes);
+  // The policy returns that warm solve (no cold solve after it), cheaper than the construction.
+  Kappa_solver_state st;
+  const Kappa_curve_report r = solve_with_warm_start(pb, &previous, moved_point, Solve_settings{}, st);
+  EXPECT_EQ(r.status, fair::Kappa_curve_status::UNSOLVED);
+  EXPECT_EQ(r.iterations, wr.iterations);
+  EXPECT_EQ(r.residual, wr.residual);
+  EXPECT_LT(r.iterations, first.iterations);
+  std::vector<double> F;
+  EXPECT_TRUE(std::isfinite(evaluate(pb, st, F)));
 }
 
 // ------------------------------------------------------------------ density start

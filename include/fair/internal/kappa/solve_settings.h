@@ -89,6 +89,21 @@ constexpr std::size_t density_start_iterations = 10;
 /// that follows it (newton_polish).
 constexpr std::size_t polish_reserve = 8;
 
+/// Warm start after an edit of one input point (start_strategy.h, solve_with_warm_start): the
+/// residuals of block i depend on the blocks i-2..i+1 and their points only, so moving the point
+/// of block m changes the residuals of blocks m-1..m+2 -- none further than edit_reach blocks
+/// away (cyclically for closed curves).
+constexpr std::size_t edit_reach = 2;
+/// The previous solution failed hopelessly away from the edit when a scale-free residual of a
+/// block further than edit_reach from the moved one is at least this: for the |kappa| mismatch
+/// (k1 - k2) / (k1 + k2) of eq. 5 (at most 1, where one side is straight), curvatures differing
+/// by a factor 3 or more at a join. Then the re-solve runs Newton's method only (the warm stages,
+/// the cold start's Newton paths): no Levenberg-Marquardt, no cold solve after the warm one
+/// (doc/kappa_curves.md, "The solver", item 7). Measured on 2560 moves of the real data (old
+/// solver): no move of a curve left at a residual >= 0.47 was solved (24 moves, 6 curves), while
+/// moves of curves left at 0.35 (automatic weights) and 0.048 (w = 1) and below were.
+constexpr double hopeless_residual = 0.5;
+
 /// What is left of the iteration cap (Jacobians of the whole solve).
 inline std::size_t remaining_iterations(const Solve_settings& settings, const Kappa_curve_report& res) {
   return settings.max_iterations > res.iterations ? settings.max_iterations - res.iterations : 0;

@@ -171,9 +171,10 @@ inline bool local_range(const Problem& pb, std::size_t moved, std::size_t R, Blo
 /// global solve. A local result that falls short but lowers the global residual is kept as the
 /// start of the next stage. Each stage: Newton (at most newton_iterations Jacobians), else a
 /// short Levenberg-Marquardt run (at most local_lm_iterations), both within the cap of the
-/// whole solve. Returns true (fmax set) at an interior root; otherwise st is the best state.
+/// whole solve. Returns true (fmax set) at an interior root; otherwise st is the best state, and
+/// `original` (if given, empty) receives st as it was when a stage changed it.
 inline bool local_warm_start(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
-                             Kappa_curve_report& res, double& fmax) {
+                             Kappa_curve_report& res, double& fmax, Kappa_solver_state* original = nullptr) {
   if (settings.moved >= pb.n) return false;
   std::vector<double> F;
   double best = evaluate(pb, st, F);
@@ -201,6 +202,7 @@ inline bool local_warm_start(const Problem& pb, Kappa_solver_state& st, const So
       return true;
     }
     if (fm < best) {
+      if (original != nullptr && original->t.empty()) *original = st;  // st before its first change
       st = trial;
       best = fm;
     }
@@ -277,6 +279,28 @@ inline double cold_solve(const Problem& pb, Kappa_solver_state& st, const Solve_
   return cand_f;
 }
 
+/// Whether `previous`, the solution before an edit of the input point of block `moved` (offsets
+/// in pb's normalisation), failed hopelessly away from the edit: a scale-free residual -- eq. 7
+/// or the |kappa| mismatch (r_2, r_3) -- of a block further than edit_reach blocks from `moved`
+/// is at least hopeless_residual. The edit does not change those residuals (they depend on the
+/// blocks i-2..i+1 and their points only, and not on the scale of the renormalisation), so they
+/// are what the previous solve left where the data are unchanged. O(n), one evaluation. False
+/// for an unknown edit (moved >= n).
+inline bool failed_hopelessly_away_from_edit(const Problem& pb, const Kappa_solver_state& previous,
+                                             std::size_t moved) {
+  if (moved >= pb.n || previous.t.size() != pb.n) return false;
+  std::vector<double> F;
+  evaluate(pb, previous, F);
+  for (std::size_t i = 0; i < pb.n; ++i) {
+    std::size_t d = i > moved ? i - moved : moved - i;
+    if (pb.closed) d = std::min(d, pb.n - d);
+    if (d <= edit_reach) continue;
+    if (!(std::abs(F[4 * i + 2]) < hopeless_residual) || !(std::abs(F[4 * i + 3]) < hopeless_residual))
+      return true;  // NaN too
+  }
+  return false;
+}
+
 /// What solve() did beyond its report, for solve_with_warm_start.
 struct Solve_trace {
   /// A warm solve ran cold_start_newton with its full caps (as a cold solve runs it) and it
@@ -284,12 +308,16 @@ struct Solve_trace {
   bool cold_newton_paths_failed = false;
   /// The early decision (cold_start_newton) ended the solve: beyond the density limit, no root.
   bool decided_beyond_limit = false;
+  /// The Newton paths failed and the previous solution had failed hopelessly away from the edit
+  /// (failed_hopelessly_away_from_edit): no Levenberg-Marquardt ran.
+  bool hopeless_previous = false;
 };
 
 /// Solves the kappa-curve system; `st` holds the initial state when settings.warm.
 /// Cold start: cold_solve. Warm start (st of size n): local_warm_start around the moved block,
 /// else global_warm_newton, else cold_start_newton (report().warm_started false then), else
-/// levenberg_marquardt_with_restart from the previous solution.
+/// levenberg_marquardt_with_restart from the previous solution -- unless that solution failed
+/// hopelessly away from the edit (trace->hopeless_previous; see there).
 inline Kappa_curve_report solve(const Problem& pb, Kappa_solver_state& st, const Solve_settings& settings,
                                 Solve_trace* trace = nullptr) {
   Kappa_curve_report res;
@@ -301,7 +329,10 @@ inline Kappa_curve_report solve(const Problem& pb, Kappa_solver_state& st, const
     return finish(pb, st, settings, res, fmax);
   }
   double fmax = std::numeric_limits<double>::infinity();
-  bool root = local_warm_start(pb, st, settings, res, fmax) || global_warm_newton(pb, st, settings, res, fmax);
+  // The previous solution, for the test below: st, or its copy from before a local stage changed
+  // it (made only then: no cost on edits that Newton's method solves).
+  Kappa_solver_state original;
+  bool root = local_warm_start(pb, st, settings, res, fmax, &original) || global_warm_newton(pb, st, settings, res, fmax);
   if (!root) {
     // The Newton paths of a cold start (a few Jacobians) before Levenberg-Marquardt from the
     // previous solution: an edit that moves points onto or off joins can leave the previous
@@ -324,6 +355,19 @@ inline Kappa_curve_report solve(const Problem& pb, Kappa_solver_state& st, const
       std::vector<double> F;
       return finish(pb, st, settings, res, evaluate(pb, st, F));
     }
+    // The previous solve ran the whole fallback (passes, Levenberg-Marquardt with restart) on data
+    // that are the same where it ended far from any root (doc/kappa_curves.md, "The solver", item
+    // 7): no Levenberg-Marquardt, here nor in the cold solve of solve_with_warm_start. Not with
+    // automatic weights: their previous kappa-curve can be a root of the blended system
+    // (weight_blend < 1), whose residuals with eq. 16's weights this test cannot tell from a
+    // failure. Checked only here, where Newton's method has failed: no cost on edits it solves.
+    // (global_warm_newton and cold_start_newton leave st as it was when they fail.)
+    if (!root && pb.mode != Kappa_weights::AUTOMATIC &&
+        failed_hopelessly_away_from_edit(pb, original.t.empty() ? st : original, settings.moved)) {
+      if (trace != nullptr) trace->hopeless_previous = true;
+      std::vector<double> F;
+      return finish(pb, st, settings, res, evaluate(pb, st, F));
+    }
   }
   if (!root) fmax = levenberg_marquardt_with_restart(pb, st, settings, res);
   return finish(pb, st, settings, res, steer_off_minima(pb, st, settings, res, fmax));
@@ -334,6 +378,10 @@ inline Kappa_curve_report solve(const Problem& pb, Kappa_solver_state& st, const
 /// `moved_point` (any value that is not an input point: unknown change), and if that ends
 /// UNSOLVED a cold start as well, keeping the better solve (by outcome, then residual)
 /// (report().warm_started says which); without one, a cold start. `st` receives the solution.
+/// After an edit of one point of a curve whose solve failed hopelessly away from that point
+/// (failed_hopelessly_away_from_edit; w = 1 and fixed weights): Newton's method only (the warm
+/// stages, the cold start's Newton paths), no Levenberg-Marquardt and no cold solve
+/// (doc/kappa_curves.md, "The solver", item 7).
 inline Kappa_curve_report solve_with_warm_start(const Problem& pb, const Kappa_solver_state* previous,
                                                 std::size_t moved_point, Solve_settings settings,
                                                 Kappa_solver_state& st) {
@@ -351,6 +399,9 @@ inline Kappa_curve_report solve_with_warm_start(const Problem& pb, const Kappa_s
   if (warm_report.status != Kappa_curve_status::UNSOLVED) return warm_report;
   // Decided beyond the density limit: the cold solve would repeat the same bounded attempt.
   if (trace.decided_beyond_limit) return warm_report;
+  // The previous solve failed hopelessly away from the edit: the cold solve would repeat its
+  // fallback where the data are unchanged.
+  if (trace.hopeless_previous) return warm_report;
   // The cold solve; when the warm one's fallback already ran the cold Newton paths and they
   // failed, they are not repeated (up to 2 x newton_iterations + density_start_iterations
   // Jacobians for nothing: fuzz finding slow-fixed-weights-25-points). Otherwise (e.g. a warm
