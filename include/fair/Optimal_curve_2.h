@@ -118,6 +118,15 @@ public:
   const Spline& spline() const { return spline_; }
   /// How spline() was smoothed (tolerance, per-run smoothing weight and bisection solves).
   const Spline_smoothing_report& spline_smoothing() const { return smoothing_; }
+  /// The C4 quintic smoothing spline of the polygon under spline()'s rule: fit_smoothing_quintic_runs(
+  /// polygon(), is_closed(), interpolation_indices(), corner_vertices(), spline_smoothing().tolerance)
+  /// (doc/optimal_curves.md, "The quintic smoothing spline"). Computed on each call, O(n); what
+  /// `fair-curves optimal` and the Python module deliver as "quintic" with a derivative term.
+  Polygon_quintic_fit<K> quintic_spline() const {
+    return fit_smoothing_quintic_runs<K>(polygon(), is_closed(), interpolation_indices(), corner_vertices(),
+                                         smoothing_.tolerance)
+        .fit;
+  }
   /// The cubic pieces of spline(), run after run: one per polygon edge.
   const std::vector<Piece>& pieces() const { return pieces_; }
   std::size_t number_of_pieces() const { return pieces_.size(); }

@@ -186,7 +186,7 @@ def optimal_curve(points, closed=False, lam=None, *, length_weight=None, curvatu
     (k, 5) rows (index, in dx, in dy, out dx, out dy); ``segment_lambda`` one lambda per segment
     (N - 1 open, N closed; the program's --lambda-file); ``derivative_weight`` {k: beta_k} or
     {k: (beta_k, alpha_k)}, k in 1..4 (the program's --derivative-weight K:BK[:AK]; the report then
-    holds the C4 quintic fit under "quintic")."""
+    holds the C4 quintic smoothing spline under "quintic")."""
     args = (_points_arg(points),)
     kwargs = dict(closed=closed, lam=lam, length_weight=length_weight, curvature_weight=curvature_weight,
                   curvature_exponent=curvature_exponent, resolution=resolution, solver=solver,

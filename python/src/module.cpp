@@ -342,7 +342,8 @@ Solved_curve optimal_curve(const py::object& points, bool closed, const py::obje
   if (!tangents.is_none() && !normals.is_none())
     throw fair::Invalid_input_error("tangents and normals exclude each other (give a normal as a tangent)");
   // The program's --derivative-weight K:BK[:AK]: {k: beta_k} or {k: (beta_k, alpha_k)}, k in 1..4
-  // (the C^(k+1) curves of Sec. 3.3; with any beta_k > 0 the C4 quintic fit is returned too).
+  // (the C^(k+1) curves of Sec. 3.3; with any beta_k > 0 the C4 quintic smoothing spline,
+  // Optimal_curve_2::quintic_spline, is returned too).
   bool derivative_term = false;
   if (!derivative_weight.is_none()) {
     if (!py::isinstance<py::dict>(derivative_weight))
@@ -374,7 +375,7 @@ Solved_curve optimal_curve(const py::object& points, bool closed, const py::obje
   // where a derivative term is on, as the program writes it.
   std::unique_ptr<fair::Polygon_quintic_fit<K>> quintic;
   if (derivative_term)
-    quintic.reset(new fair::Polygon_quintic_fit<K>(fair::fit_quintic_spline<K>(curve.polygon(), options.closed)));
+    quintic.reset(new fair::Polygon_quintic_fit<K>(curve.quintic_spline()));
   const nlohmann::json extra = fair::io::optimal_curve_members(curve, quintic.get());
   return solved(curve, "optimal", extra);
 }

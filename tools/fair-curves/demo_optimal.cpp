@@ -219,7 +219,7 @@ void add_optimal_cases(fair_curves::Gallery& gallery) {
     add_solve(gallery, arch(), o, "Fig. 9: minimising int (kappa^(" + std::to_string(k) + "))^2",
               "beta_" + std::to_string(k) + " = 1 with a length term beta = 0.03 L0^" + std::to_string(2 * k + 2) +
                   " (without it the pure derivative energies stall); the minimiser is a C" + std::to_string(k + 1) + " curve. The spline drawn is the C2 "
-              "cubic; fit_quintic_spline gives the C4 quintic for CAD.");
+              "cubic smoothing spline; Optimal_curve_2::quintic_spline() gives the C4 quintic smoothing spline for CAD.");
   }
 }
 FAIR_CURVES_DEMO(80, add_optimal_cases)

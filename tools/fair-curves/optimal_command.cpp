@@ -146,12 +146,8 @@ void run_optimal(const Optimal_command_options& o) {
   const fair::Optimal_curve_2<Kernel> curve(data.points, options);
   std::unique_ptr<fair::Polygon_quintic_fit<Kernel>> quintic;
   if (has_derivative_term(options))
-    // The C4 quintic smoothing spline under the cubic's distance rule (issue 25 §3): through the
-    // input points, C4 between the corners, within spline_smoothing().tolerance where it can be.
-    quintic.reset(new fair::Polygon_quintic_fit<Kernel>(
-        fair::fit_smoothing_quintic_runs<Kernel>(curve.polygon(), options.closed, curve.interpolation_indices(),
-                                                 curve.corner_vertices(), curve.spline_smoothing().tolerance)
-            .fit));
+    // The C4 quintic smoothing spline under the cubic's distance rule (issue 25 §3)
+    quintic.reset(new fair::Polygon_quintic_fit<Kernel>(curve.quintic_spline()));
   const std::string json_text = o.json_out.empty() ? std::string() : curve_json(curve, quintic.get());
   std::string svg_text;
   if (!o.svg_out.empty()) {
