@@ -26,6 +26,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -178,6 +179,44 @@ TEST(BernsteinIsolation, IntervalFilterAgreesWithExactBisection) {
       EXPECT_EQ(filtered.leaves()[j].lower, exact.leaves()[j].lower);
       EXPECT_EQ(filtered.leaves()[j].upper, exact.leaves()[j].upper);
       EXPECT_EQ(filtered.leaves()[j].multiplicity, exact.leaves()[j].multiplicity);
+    }
+  }
+}
+
+// The exact bisection halves integer coefficients (scaled by powers of two). Each half must be
+// a positive multiple of the restriction computed independently by blossoming over Q, with
+// the same zeros, on random coefficients of up to 240 digits.
+TEST(BernsteinIsolation, IntegerHalvingIsAPositiveMultipleOfTheRationalRestriction) {
+  namespace fb = fair::internal::bernstein;
+  std::mt19937_64 rng(29);
+  for (int trial = 0; trial < 80; ++trial) {
+    const int n = trial % 13;
+    const int digits = 1 + (trial * 37) % 240;
+    std::vector<Q> E;
+    for (int i = 0; i <= n; ++i) {
+      std::string num = (rng() % 2) ? "-" : "";
+      for (int k = 0; k < digits; ++k) num += static_cast<char>('0' + (k == 0 ? 1 + rng() % 9 : rng() % 10));
+      if (trial % 5 == 0 && i % 3 == 1) num = "0"; // zero coefficients
+      E.push_back(Q(num + "/" + std::to_string(1 + rng() % 1000)));
+    }
+    fb::Mpz_array left = fb::integer_scaled(E), right;
+    fb::split_half(left, right);
+    const PQ p(E);
+    const std::vector<Q> expected_left = p.restricted(Q(0), Q(1, 2)).coefficients();
+    const std::vector<Q> expected_right = p.restricted(Q(1, 2), Q(1)).coefficients();
+    for (int half = 0; half < 2; ++half) {
+      const fb::Mpz_array& got = half == 0 ? left : right;
+      const std::vector<Q>& want = half == 0 ? expected_left : expected_right;
+      ASSERT_EQ(got.size(), want.size());
+      Q scale(0); // got = scale * want, scale > 0
+      for (std::size_t i = 0; i < want.size(); ++i) {
+        const Q g{CGAL::Gmpz(got[i])};
+        ASSERT_EQ(CGAL::sign(g), CGAL::sign(want[i])) << "trial " << trial << " half " << half << " i " << i;
+        if (CGAL::is_zero(want[i])) continue;
+        if (CGAL::is_zero(scale)) scale = g / want[i];
+        EXPECT_EQ(g, scale * want[i]) << "trial " << trial << " half " << half << " i " << i;
+      }
+      if (!CGAL::is_zero(scale)) EXPECT_GT(scale, Q(0));
     }
   }
 }

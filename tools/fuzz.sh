@@ -11,7 +11,8 @@
 # something. Be kind to a shared machine: `nice -n 19 tools/fuzz.sh`.
 # Environment: FUZZ_JOBS (build parallelism, default 2), FUZZ_MAX_LEN (default 4096),
 # FUZZ_TIMEOUT (seconds per input, default 1), FUZZ_BUILD (default build-fuzz), FUZZ_WORKERS
-# (default 0).
+# (default 0), FUZZ_HANG (the hang limit of the parallel mode, seconds, default 10 x FUZZ_TIMEOUT:
+# raise it when the machine is busy, so a load spike does not end the run).
 #
 # FUZZ_WORKERS=N runs N libFuzzer processes in parallel on one shared corpus (-jobs=N -workers=N,
 # executions/N each, logs build-fuzz/logs/<target>/fuzz-<i>.log) with a hang limit of 10 x FUZZ_TIMEOUT
@@ -29,6 +30,7 @@ build=$(mkdir -p "$build" && cd "$build" && pwd)  # absolute: the parallel mode 
 jobs=${FUZZ_JOBS:-2}
 max_len=${FUZZ_MAX_LEN:-4096}
 timeout=${FUZZ_TIMEOUT:-1}
+hang=${FUZZ_HANG:-$(( 10 * timeout ))}
 workers=${FUZZ_WORKERS:-0}
 which=${1:-all}
 runs=${2:-1000000}
@@ -58,10 +60,10 @@ retime_slow_inputs() { # exe findings-dir
     best=
     for i in 1 2 3; do
       t0=$(date +%s%N)
-      "$exe" -runs=1 -timeout=$(( 10 * timeout )) "$f" >/dev/null 2>&1
+      "$exe" -runs=1 -timeout="$hang" "$f" >/dev/null 2>&1
       ms=$(( ($(date +%s%N) - t0) / 1000000 ))
       if [ -z "$best" ] || [ "$ms" -lt "$best" ]; then best=$ms; fi
-      [ "$ms" -lt $(( 10 * timeout * 1000 )) ] || break  # a real hang: once is enough
+      [ "$ms" -lt $(( hang * 1000 )) ] || break  # a real hang: once is enough
     done
     if [ "$best" -lt $(( timeout * 1000 )) ]; then
       echo "  $(basename "$f"): ${best} ms alone, under the ${timeout} s limit (timed out under load)"
@@ -87,7 +89,7 @@ for t in "${targets[@]}"; do
     logs=$build/logs/$t
     rm -rf "$logs"; mkdir -p "$logs"
     (cd "$logs" && "$exe" -jobs="$workers" -workers="$workers" -runs=$(( (runs + workers - 1) / workers )) \
-      -max_len="$max_len" -timeout=$(( 10 * timeout )) -report_slow_units="$timeout" -rss_limit_mb=2048 \
+      -max_len="$max_len" -timeout="$hang" -report_slow_units="$timeout" -rss_limit_mb=2048 \
       -print_final_stats=1 -artifact_prefix="$findings/" "$work" "$corpus") >"$log" 2>&1
     # The parent's status is 1 after any job's timeout as well: decided here instead. A crash,
     # leak, sanitizer report or oracle failure of a job fails the run; a timeout only if its

@@ -11,6 +11,7 @@
 
 #include <gmp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <memory>
@@ -57,6 +58,16 @@ private:
   std::size_t n_;
   std::unique_ptr<__mpz_struct[]> v_;
 };
+
+/// Divides every coefficient by the largest power of two that divides them all (none if all
+/// are zero): a positive factor, so every sign and every root is kept.
+inline void remove_common_power_of_two(Mpz_array& c) {
+  mp_bitcnt_t shift = ~static_cast<mp_bitcnt_t>(0);
+  for (std::size_t i = 0; i < c.size(); ++i)
+    if (mpz_sgn(c[i]) != 0) shift = std::min(shift, mpz_scan1(c[i], 0));
+  if (shift == ~static_cast<mp_bitcnt_t>(0) || shift == 0) return;
+  for (std::size_t i = 0; i < c.size(); ++i) mpz_tdiv_q_2exp(c[i], c[i], shift);
+}
 
 /// Writes a finite x >= 0 as k / 2^e exactly (k integer, e >= 0).
 inline void dyadic_parts(double x, mpz_ptr k, unsigned long& e) {
