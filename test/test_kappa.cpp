@@ -575,8 +575,20 @@ TEST(Kappa, RationalQuadraticPointNearDblMaxAndItsRounding) {
   }
   EXPECT_EQ(huge.point(0.0), huge.source());
   EXPECT_EQ(huge.point(1.0), huge.target());
+  // Extreme weights (fuzz finding conic/regress-point-huge-weight: w = DBL_MAX gave NaN): the
+  // point stays in the control triangle's box, and its ends are the end points.
+  const Pd q0(-1e-298, -1e-298), q1(-46, -15), q2(-1e-148, -1e-148);
+  for (const double w : {M, 1e300, 1e16, 1e-16, 1e-300, 5e-324}) {
+    const fair::Rational_quadratic_bezier_2<Kd> heavy(q0, q1, q2, w);
+    for (const double t : {0.0, 1e-300, 0.25, 0.5, 0.75, 1 - 1e-16, 1.0}) {
+      const Pd c = heavy.point(t);
+      EXPECT_TRUE(c.x() >= -46 && c.x() <= 0 && c.y() >= -15 && c.y() <= 0) << "w " << w << ", t " << t << ": " << c;
+    }
+    EXPECT_EQ(heavy.point(0.0), q0);
+    EXPECT_EQ(heavy.point(1.0), q2);
+  }
   std::mt19937 g(24);
-  std::uniform_real_distribution<double> U(-1, 1), T(0, 1), W(0.25, 4);
+  std::uniform_real_distribution<double> U(-1, 1), T(0, 1), W(0.25, 4); // w > 1 takes the divided form
   double worst_new = 0, worst_old = 0;
   for (int k = 0; k < 20000; ++k) {
     const Pd p0(U(g), U(g)), p1(U(g), U(g)), p2(U(g), U(g));

@@ -156,11 +156,15 @@ public:
   /// c(t), eq. 1; t in [0,1]. Formed as the convex combination sum_i (b_i / W) P_i: the
   /// coefficients b_i / W lie in [0, 1] and sum to 1, so no intermediate exceeds the largest
   /// coordinate (the weighted sum before the division overflowed to inf for a piece near DBL_MAX).
+  /// For w > 1 the b_i are divided by w first (b1 = 2 w s t overflowed for w near DBL_MAX, and
+  /// inf / inf gave NaN: fuzz finding conic/regress-point-huge-weight), so every b_i stays <= 2.
   /// The same value in an exact kernel; in double it differs from the sum-then-divide form by
   /// rounding only (a few ulp of the largest coordinate, test_kappa.cpp).
   Point_2 point(const FT& t) const {
     check_parameter(t, "point");
-    const FT s = FT(1) - t, b0 = s * s, b1 = FT(2) * w_ * s * t, b2 = t * t, W = b0 + b1 + b2;
+    const bool heavy = w_ > FT(1);
+    const FT s = FT(1) - t, b0 = heavy ? s * s / w_ : s * s, b1 = heavy ? FT(2) * s * t : FT(2) * w_ * s * t,
+             b2 = heavy ? t * t / w_ : t * t, W = b0 + b1 + b2;
     const FT a0 = b0 / W, a1 = b1 / W, a2 = b2 / W;
     return Point_2(a0 * p_[0].x() + a1 * p_[1].x() + a2 * p_[2].x(), a0 * p_[0].y() + a1 * p_[1].y() + a2 * p_[2].y());
   }
