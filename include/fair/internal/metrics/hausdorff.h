@@ -63,38 +63,62 @@ constexpr double max_hausdorff_coordinate = std::numeric_limits<double>::max() /
 
 typedef std::pair<double, double> Point_d;
 
-/// One sub-piece of a Bernstein-form piece in affine form: points and weights (max weight 1).
+/// One sub-piece of a Bernstein-form piece in affine form: its m points and weights (max weight
+/// 1) are x, y, w at pool[offset], pool[offset + m], pool[offset + 2m] of a Sub_piece_pool. The
+/// sub-pieces are small values and the coefficients share one buffer: with three vectors per
+/// sub-piece, copied by every heap operation, the allocations were most of a metrics run's time
+/// under the sanitizers.
 struct Sub_piece {
   std::size_t piece = 0;
   double t0 = 0;  ///< where it starts in its piece (for ordering)
   int depth = 0;
-  std::vector<double> x, y, w;
+  std::size_t m = 0;       ///< number of control points
+  std::size_t offset = 0;  ///< where its coefficients start in the pool
   double delta = 0;  ///< max |P_i - L(i/n)|, the certified distance to the chord both ways
 };
 
-inline double chord_deviation(const Sub_piece& s) {
-  const std::size_t n = s.x.size() - 1;
+/// The coefficients of every sub-piece of one curve (x, y, w of a sub-piece contiguous).
+struct Sub_piece_pool {
+  std::vector<double> values;
+  std::vector<double> scratch;
+  const double* x(const Sub_piece& s) const { return values.data() + s.offset; }
+  const double* y(const Sub_piece& s) const { return values.data() + s.offset + s.m; }
+  const double* w(const Sub_piece& s) const { return values.data() + s.offset + 2 * s.m; }
+  /// Room for m more control points; returns their offset.
+  std::size_t allocate(std::size_t m) {
+    const std::size_t offset = values.size();
+    values.resize(offset + 3 * m);
+    return offset;
+  }
+};
+
+inline double chord_deviation(const Sub_piece& s, const Sub_piece_pool& pool) {
+  const double *x = pool.x(s), *y = pool.y(s);
+  const std::size_t n = s.m - 1;
   double d = 0;
   for (std::size_t i = 1; i < n; ++i) {
     const double u = double(i) / double(n);
-    d = std::max(d, std::hypot(s.x[i] - ((1 - u) * s.x[0] + u * s.x[n]), s.y[i] - ((1 - u) * s.y[0] + u * s.y[n])));
+    d = std::max(d, std::hypot(x[i] - ((1 - u) * x[0] + u * x[n]), y[i] - ((1 - u) * y[0] + u * y[n])));
   }
   return d;
 }
 
-/// Halves a sub-piece at t = 1/2 by the rational de Casteljau algorithm in affine form.
-inline std::pair<Sub_piece, Sub_piece> halve(const Sub_piece& s) {
-  const std::size_t m = s.x.size();
-  std::vector<double> x = s.x, y = s.y, w = s.w;
-  Sub_piece l, r;
-  l.piece = r.piece = s.piece;
+/// Halves a sub-piece at t = 1/2 by the rational de Casteljau algorithm in affine form: the
+/// left half takes the sub-piece's place in the pool, the right half new room at its end.
+inline std::pair<Sub_piece, Sub_piece> halve(const Sub_piece& s, Sub_piece_pool& pool) {
+  const std::size_t m = s.m;
+  pool.scratch.assign(pool.values.begin() + static_cast<std::ptrdiff_t>(s.offset),
+                      pool.values.begin() + static_cast<std::ptrdiff_t>(s.offset + 3 * m));
+  double *x = pool.scratch.data(), *y = x + m, *w = y + m;
+  Sub_piece l = s, r = s;
   l.depth = r.depth = s.depth + 1;
-  l.t0 = s.t0;
   r.t0 = s.t0 + std::ldexp(1.0, -(s.depth + 1));
-  l.x.resize(m); l.y.resize(m); l.w.resize(m); r.x.resize(m); r.y.resize(m); r.w.resize(m);
+  r.offset = pool.allocate(m);
+  double *lx = pool.values.data() + l.offset, *ly = lx + m, *lw = ly + m;
+  double *rx = pool.values.data() + r.offset, *ry = rx + m, *rw = ry + m;
   for (std::size_t k = 0; k < m; ++k) {
-    l.x[k] = x[0]; l.y[k] = y[0]; l.w[k] = w[0];
-    r.x[m - 1 - k] = x[m - 1 - k]; r.y[m - 1 - k] = y[m - 1 - k]; r.w[m - 1 - k] = w[m - 1 - k];
+    lx[k] = x[0]; ly[k] = y[0]; lw[k] = w[0];
+    rx[m - 1 - k] = x[m - 1 - k]; ry[m - 1 - k] = y[m - 1 - k]; rw[m - 1 - k] = w[m - 1 - k];
     for (std::size_t i = 0; i + 1 < m - k; ++i) {
       const double wn = 0.5 * (w[i] + w[i + 1]), a = 0.5 * w[i] / wn, b = 1 - a;
       x[i] = a * x[i] + b * x[i + 1];
@@ -104,11 +128,12 @@ inline std::pair<Sub_piece, Sub_piece> halve(const Sub_piece& s) {
   }
   for (Sub_piece* p : {&l, &r}) {
     // Renormalise the weights (an exact power of two keeps them in range, the curve unchanged).
-    const double wmax = *std::max_element(p->w.begin(), p->w.end());
+    double* pw = pool.values.data() + p->offset + 2 * m;
+    const double wmax = *std::max_element(pw, pw + m);
     int e;
     std::frexp(wmax, &e);
-    for (double& v : p->w) v = std::ldexp(v, -e);
-    p->delta = chord_deviation(*p);
+    for (std::size_t k = 0; k < m; ++k) pw[k] = std::ldexp(pw[k], -e);
+    p->delta = chord_deviation(*p, pool);
   }
   return {l, r};
 }
@@ -143,8 +168,8 @@ Certified_polyline certified_polyline(const std::vector<Piece>& curve, double ta
   Certified_polyline out;
   if constexpr (is_bernstein_form(kind_of<Piece>)) {
     auto cmp = [](const Sub_piece& a, const Sub_piece& b) { return a.delta < b.delta; };
-    std::priority_queue<Sub_piece, std::vector<Sub_piece>, decltype(cmp)> open(cmp);
-    std::vector<Sub_piece> done;
+    Sub_piece_pool pool;
+    std::vector<Sub_piece> open, done; // open: a max-heap on delta
     double magnitude = 0;
     std::size_t degree = 1;
     for (std::size_t i = 0; i < curve.size(); ++i) {
@@ -153,14 +178,18 @@ Certified_polyline certified_polyline(const std::vector<Piece>& curve, double ta
       bernstein_form(curve[i], cp, w);
       Sub_piece s;
       s.piece = i;
+      s.m = cp.size();
+      s.offset = pool.allocate(s.m);
+      double* sx = pool.values.data() + s.offset;
+      double *sy = sx + s.m, *sw = sy + s.m;
       double wmin = std::numeric_limits<double>::infinity(), wmax = 0;
       for (std::size_t k = 0; k < cp.size(); ++k) {
-        s.x.push_back(CGAL::to_double(cp[k].x()));
-        s.y.push_back(CGAL::to_double(cp[k].y()));
-        s.w.push_back(CGAL::to_double(w[k]));
-        wmin = std::min(wmin, s.w.back());
-        wmax = std::max(wmax, s.w.back());
-        magnitude = std::max({magnitude, std::fabs(s.x.back()), std::fabs(s.y.back())});
+        sx[k] = CGAL::to_double(cp[k].x());
+        sy[k] = CGAL::to_double(cp[k].y());
+        sw[k] = CGAL::to_double(w[k]);
+        wmin = std::min(wmin, sw[k]);
+        wmax = std::max(wmax, sw[k]);
+        magnitude = std::max({magnitude, std::fabs(sx[k]), std::fabs(sy[k])});
       }
       if (!(magnitude <= max_hausdorff_coordinate))
         throw Invalid_input_error(message("hausdorff_distance: ", which, ", piece ", i, ", has a coordinate ",
@@ -169,38 +198,39 @@ Certified_polyline certified_polyline(const std::vector<Piece>& curve, double ta
       if (!(wmin > 0) || !(wmax / wmin <= max_hausdorff_weight_ratio))
         throw Invalid_input_error(message("hausdorff_distance: ", which, ", piece ", i, ", has weights from ", wmin,
                                           " to ", wmax, "; their ratio must be at most ", max_hausdorff_weight_ratio));
-      for (double& v : s.w) v /= wmax;
-      degree = std::max(degree, s.x.size() - 1);
-      s.delta = s.x.size() > 2 ? chord_deviation(s) : 0.0;
-      open.push(std::move(s));
+      for (std::size_t k = 0; k < s.m; ++k) sw[k] /= wmax;
+      degree = std::max(degree, s.m - 1);
+      s.delta = s.m > 2 ? chord_deviation(s, pool) : 0.0;
+      open.push_back(s);
+      std::push_heap(open.begin(), open.end(), cmp);
     }
     // Halve the worst sub-piece until all are within the target or a cap is met.
-    while (!open.empty() && open.top().delta > target) {
+    while (!open.empty() && open.front().delta > target) {
       if (open.size() + done.size() >= max_hausdorff_segments) {
         out.converged = false;
         break;
       }
-      Sub_piece s = open.top();
-      open.pop();
+      std::pop_heap(open.begin(), open.end(), cmp);
+      const Sub_piece s = open.back();
+      open.pop_back();
       if (s.depth >= max_hausdorff_depth) {
         out.converged = false;
-        done.push_back(std::move(s));
+        done.push_back(s);
         continue;
       }
-      std::pair<Sub_piece, Sub_piece> h = halve(s);
-      open.push(std::move(h.first));
-      open.push(std::move(h.second));
+      const std::pair<Sub_piece, Sub_piece> h = halve(s, pool);
+      open.push_back(h.first);
+      std::push_heap(open.begin(), open.end(), cmp);
+      open.push_back(h.second);
+      std::push_heap(open.begin(), open.end(), cmp);
     }
-    while (!open.empty()) {
-      done.push_back(open.top());
-      open.pop();
-    }
+    done.insert(done.end(), open.begin(), open.end());
     std::sort(done.begin(), done.end(),
               [](const Sub_piece& a, const Sub_piece& b) { return a.piece != b.piece ? a.piece < b.piece : a.t0 < b.t0; });
     double err = 0;
     for (const Sub_piece& s : done) {
       err = std::max(err, s.delta);
-      const Point_d a(s.x.front(), s.y.front()), b(s.x.back(), s.y.back());
+      const Point_d a(pool.x(s)[0], pool.y(s)[0]), b(pool.x(s)[s.m - 1], pool.y(s)[s.m - 1]);
       if (out.vertices.empty() || out.vertices.back() != a) out.vertices.push_back(a);
       out.vertices.push_back(b);
     }

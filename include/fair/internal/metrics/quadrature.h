@@ -71,8 +71,9 @@ Quadrature_estimate adaptive_integral(F f, double a, double b, const Quadrature_
   // re-summation below is one linear pass: copying and popping a priority_queue cost
   // O(n log n) per re-summation, most of the time of a run that ends at the cap (a fuzz input,
   // a near-circle whose curvature variation is rounding noise: issue 29).
+  // It grows as needed: most integrals need a few subintervals, and reserving for the cap (2 MB)
+  // on every call made the allocation most of the time of a metrics run under the sanitizers.
   std::vector<Gk_interval> heap;
-  heap.reserve(std::min<std::size_t>(options.max_subintervals, 1u << 16) + 1);
   const auto push = [&heap](const Gk_interval& g) {
     heap.push_back(g);
     std::push_heap(heap.begin(), heap.end());
