@@ -587,6 +587,13 @@ TEST(Kappa, RationalQuadraticPointNearDblMaxAndItsRounding) {
     EXPECT_EQ(heavy.point(0.0), q0);
     EXPECT_EQ(heavy.point(1.0), q2);
   }
+  // Every coordinate near -DBL_MAX (conic/regress-point-sum-beyond-dbl-max: the coefficients'
+  // rounding made the sum -inf): the point stays in the control points' range.
+  const fair::Rational_quadratic_bezier_2<Kd> corner(Pd(-32126, -M), Pd(-M, std::nextafter(-M, 0.0)), Pd(-M, -M), 0.015625);
+  for (int k = 0; k <= 64; ++k) {
+    const Pd c = corner.point(k / 64.0);
+    EXPECT_TRUE(c.x() >= -M && c.x() <= -32126 && c.y() >= -M && c.y() <= std::nextafter(-M, 0.0)) << k << ": " << c;
+  }
   std::mt19937 g(24);
   std::uniform_real_distribution<double> U(-1, 1), T(0, 1), W(0.25, 4); // w > 1 takes the divided form
   double worst_new = 0, worst_old = 0;

@@ -158,6 +158,9 @@ public:
   /// coordinate (the weighted sum before the division overflowed to inf for a piece near DBL_MAX).
   /// For w > 1 the b_i are divided by w first (b1 = 2 w s t overflowed for w near DBL_MAX, and
   /// inf / inf gave NaN: fuzz finding conic/regress-point-huge-weight), so every b_i stays <= 2.
+  /// Each coordinate is then clamped to the control points' range, where the exact value lies:
+  /// in double, coefficients that sum to 1 + ulp turned three coordinates of -DBL_MAX into -inf
+  /// (conic/regress-point-sum-beyond-dbl-max); the clamp only removes rounding beyond the range.
   /// The same value in an exact kernel; in double it differs from the sum-then-divide form by
   /// rounding only (a few ulp of the largest coordinate, test_kappa.cpp).
   Point_2 point(const FT& t) const {
@@ -166,7 +169,12 @@ public:
     const FT s = FT(1) - t, b0 = heavy ? s * s / w_ : s * s, b1 = heavy ? FT(2) * s * t : FT(2) * w_ * s * t,
              b2 = heavy ? t * t / w_ : t * t, W = b0 + b1 + b2;
     const FT a0 = b0 / W, a1 = b1 / W, a2 = b2 / W;
-    return Point_2(a0 * p_[0].x() + a1 * p_[1].x() + a2 * p_[2].x(), a0 * p_[0].y() + a1 * p_[1].y() + a2 * p_[2].y());
+    const auto clamped = [](const FT& v, const FT& c0, const FT& c1, const FT& c2) {
+      const FT lo = (std::min)((std::min)(c0, c1), c2), hi = (std::max)((std::max)(c0, c1), c2);
+      return v < lo ? lo : (hi < v ? hi : v);
+    };
+    return Point_2(clamped(a0 * p_[0].x() + a1 * p_[1].x() + a2 * p_[2].x(), p_[0].x(), p_[1].x(), p_[2].x()),
+                   clamped(a0 * p_[0].y() + a1 * p_[1].y() + a2 * p_[2].y(), p_[0].y(), p_[1].y(), p_[2].y()));
   }
 
   /// c'(t) = V(t) / W(t)^2 (see the file comment); t in [0,1].
