@@ -36,6 +36,8 @@ struct Kappa_curve_options {
   /// the rest (stopping once the residual is below 1e-3) only if Newton's method fails.
   std::size_t refinement_passes = 60;
   /// Cap on the iterations (Jacobians) of Newton's method and Levenberg-Marquardt together.
+  /// With AUTOMATIC weights, the continuation from w = 1 that runs when no kappa-curve was found
+  /// (doc/kappa_curves.md) has one more cap of the same size: at most 2 x max_iterations in all.
   std::size_t max_iterations = 200;
   /// Stop when the max-norm residual (dimensionless, see Kappa_curve_report) is at most this.
   double tolerance = 1e-12;

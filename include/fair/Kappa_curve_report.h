@@ -86,7 +86,7 @@ struct Kappa_curve_report {
   Kappa_curve_unsolved_reason reason = Kappa_curve_unsolved_reason::NO_CONVERGENCE;
   bool warm_started = false;           ///< the solution came from the previous one (not a cold start)
   std::size_t refinement_passes = 0;   ///< alternating passes of Sec. 5.1
-  std::size_t iterations = 0;          ///< Jacobians evaluated (Newton and Levenberg-Marquardt)
+  std::size_t iterations = 0;          ///< Jacobians evaluated (Newton and Levenberg-Marquardt; <= 2 x max_iterations with AUTOMATIC weights)
   double residual = 0;                 ///< max of the four below
   double interpolation_residual = 0;   ///< max |c_i(t_i) - Q_i| / (half size of the bounding box)
   double curvature_residual = 0;       ///< max |eq. 7| / (A_i + C_i)
