@@ -860,6 +860,46 @@ TEST(KappaSolver, HopelessPreviousSolveIsJudgedAwayFromTheEdit) {
   EXPECT_FALSE(failed_hopelessly_away_from_edit(pb, spoiled, Problem::no_block));  // unknown edit
 }
 
+// The rule's distance on a closed curve is taken around it, and a curve of at most 2 edit_reach + 1
+// blocks is never judged hopeless (review of session 17: wrap-around and n <= 5 were untested).
+// Block 0 of a star's root is spoiled; for every edit the rule must agree with its definition
+// written out here with the circular distance, and must differ from the linear distance for the
+// edits at the other end of the curve (which the wrap-around brings near block 0).
+TEST(KappaSolver, HopelessRuleMeasuresDistanceAroundAClosedCurve) {
+  for (const std::size_t n : {4u, 5u, 6u, 12u, 40u}) {
+    const Problem pb = star(n, 5, Kappa_weights::UNIT);
+    ASSERT_TRUE(pb.closed);
+    Kappa_solver_state root;
+    ASSERT_NE(solve(pb, root, Solve_settings{}).status, fair::Kappa_curve_status::UNSOLVED) << n;
+    for (std::size_t moved = 0; moved < n; ++moved) EXPECT_FALSE(failed_hopelessly_away_from_edit(pb, root, moved));
+    Kappa_solver_state spoiled = root;
+    spoiled.dx[0] += 3;
+    std::vector<double> F;
+    evaluate(pb, spoiled, F);
+    std::size_t bad_blocks = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      bad_blocks += !(std::abs(F[4 * i + 2]) < hopeless_residual) || !(std::abs(F[4 * i + 3]) < hopeless_residual);
+    std::printf("n %zu: %zu blocks with a residual >= hopeless_residual\n", n, bad_blocks);
+    if (n > 2 * edit_reach + 1) ASSERT_GT(bad_blocks, 0u) << n;
+    std::size_t circular_differs = 0;
+    for (std::size_t moved = 0; moved < n; ++moved) {
+      bool circular = false, linear = false;
+      for (std::size_t i = 0; i < n; ++i) {
+        const bool bad = !(std::abs(F[4 * i + 2]) < hopeless_residual) || !(std::abs(F[4 * i + 3]) < hopeless_residual);
+        const std::size_t d = i > moved ? i - moved : moved - i;
+        circular = circular || (bad && std::min(d, n - d) > edit_reach);
+        linear = linear || (bad && d > edit_reach);
+      }
+      EXPECT_EQ(failed_hopelessly_away_from_edit(pb, spoiled, moved), circular) << "n " << n << ", edit " << moved;
+      circular_differs += circular != linear;
+      if (n <= 2 * edit_reach + 1) EXPECT_FALSE(circular) << "n " << n << ", edit " << moved;
+    }
+    if (n >= 12) EXPECT_GT(circular_differs, 0u) << n;  // the wrap-around was exercised
+    if (n == 40) EXPECT_TRUE(failed_hopelessly_away_from_edit(pb, spoiled, 20));  // opposite the spoiled block
+    if (n == 40) EXPECT_FALSE(failed_hopelessly_away_from_edit(pb, spoiled, 0));
+  }
+}
+
 // An edit of a curve whose solve failed hopelessly: the re-solve runs Newton's method only (the
 // warm stages, the cold start's Newton paths) and no Levenberg-Marquardt, neither from the
 // previous solution nor in a cold solve after it (fuzz finding regress-slow-open-fixed-52-points-a:

@@ -12,7 +12,10 @@
 # Environment: FUZZ_JOBS (build parallelism, default 2), FUZZ_MAX_LEN (default 4096),
 # FUZZ_TIMEOUT (seconds per input, default 1), FUZZ_BUILD (default build-fuzz), FUZZ_WORKERS
 # (default 0), FUZZ_HANG (the hang limit of the parallel mode, seconds, default 10 x FUZZ_TIMEOUT:
-# raise it when the machine is busy, so a load spike does not end the run).
+# raise it when the machine is busy, so a load spike does not end the run), FUZZ_RETIME_REPLAY
+# (a fuzz_replay of the ASan+UBSan build, build-sanitize/fuzz/fuzz_replay: re-time slow inputs with
+# it, the library under the sanitizers without libFuzzer's coverage and comparison tracing, which
+# alone makes tight numeric loops 3-5 times slower; doc/fuzzing.md, "The time oracle").
 #
 # FUZZ_WORKERS=N runs N libFuzzer processes in parallel on one shared corpus (-jobs=N -workers=N,
 # executions/N each, logs build-fuzz/logs/<target>/fuzz-<i>.log) with a hang limit of 10 x FUZZ_TIMEOUT
@@ -31,6 +34,7 @@ jobs=${FUZZ_JOBS:-2}
 max_len=${FUZZ_MAX_LEN:-4096}
 timeout=${FUZZ_TIMEOUT:-1}
 hang=${FUZZ_HANG:-$(( 10 * timeout ))}
+retime_replay=${FUZZ_RETIME_REPLAY:-}
 workers=${FUZZ_WORKERS:-0}
 which=${1:-all}
 runs=${2:-1000000}
@@ -52,15 +56,21 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "${compiler[@]}" -DFAIR_
 
 # Parallel mode: a slow or timed-out input is a finding only if it is slow alone (fastest of
 # three runs).
-retime_slow_inputs() { # exe findings-dir
-  local exe=$1 dir=$2 f best ms i t0
+retime_slow_inputs() { # exe findings-dir target
+  local exe=$1 dir=$2 target=$3 f best ms i t0 one
   mkdir -p "$dir/loaded"
   for f in "$dir"/timeout-* "$dir"/slow-unit-*; do
     [ -f "$f" ] || continue
     best=
     for i in 1 2 3; do
       t0=$(date +%s%N)
-      "$exe" -runs=1 -timeout="$hang" "$f" >/dev/null 2>&1
+      if [ -n "$retime_replay" ]; then
+        one=$(mktemp -d); cp "$f" "$one/"
+        timeout "$hang" "$retime_replay" "$target" "$one" >/dev/null 2>&1
+        rm -rf "$one"
+      else
+        "$exe" -runs=1 -timeout="$hang" "$f" >/dev/null 2>&1
+      fi
       ms=$(( ($(date +%s%N) - t0) / 1000000 ))
       if [ -z "$best" ] || [ "$ms" -lt "$best" ]; then best=$ms; fi
       [ "$ms" -lt $(( hang * 1000 )) ] || break  # a real hang: once is enough
@@ -100,7 +110,7 @@ for t in "${targets[@]}"; do
     done
     # (The parent copies each job's log into $log too: count from the job logs only.)
     execs=$(cat "$logs"/fuzz-*.log 2>/dev/null | sed -n 's/^stat::number_of_executed_units: *//p' | awk '{s += $1} END {print s}')
-    retime_slow_inputs "$exe" "$findings"
+    retime_slow_inputs "$exe" "$findings" "$t"
   else
     "$exe" -runs="$runs" -max_len="$max_len" -timeout="$timeout" -rss_limit_mb=2048 \
       -print_final_stats=1 -artifact_prefix="$findings/" "$work" "$corpus" >"$log" 2>&1
