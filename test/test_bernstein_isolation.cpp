@@ -221,6 +221,41 @@ TEST(BernsteinIsolation, IntegerHalvingIsAPositiveMultipleOfTheRationalRestricti
   }
 }
 
+// Chained halvings, as the bisection does them (each half's common power of two removed, then
+// halved again): along random paths 24 levels deep, each node stays a positive multiple of the
+// restriction of the polynomial to its dyadic interval, computed from the original coefficients.
+TEST(BernsteinIsolation, ChainedIntegerHalvingsFollowTheRestrictionToEveryDyadicInterval) {
+  namespace fb = fair::internal::bernstein;
+  std::mt19937 rng(18);
+  std::uniform_int_distribution<int> coefficient(-1000000, 1000000), bit(0, 1);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int n = trial % 9;
+    std::vector<Q> E;
+    for (int i = 0; i <= n; ++i) E.push_back(trial % 4 == 0 && i % 2 == 1 ? Q(0) : Q(coefficient(rng), 1 + trial));
+    const PQ p(E);
+    fb::Mpz_array node = fb::integer_scaled(E), other;
+    Q lower(0), width(1);
+    for (int depth = 1; depth <= 24; ++depth) {
+      fb::split_half(node, other);
+      width /= 2;
+      if (bit(rng) == 1) {  // go right
+        node = std::move(other);
+        lower += width;
+      }
+      const std::vector<Q> want = p.restricted(lower, lower + width).coefficients();
+      Q scale(0);
+      for (std::size_t i = 0; i < want.size(); ++i) {
+        const Q g{CGAL::Gmpz(node[i])};
+        ASSERT_EQ(CGAL::sign(g), CGAL::sign(want[i])) << "trial " << trial << " depth " << depth << " i " << i;
+        if (CGAL::is_zero(want[i])) continue;
+        if (CGAL::is_zero(scale)) scale = g / want[i];
+        ASSERT_EQ(g, scale * want[i]) << "trial " << trial << " depth " << depth << " i " << i;
+      }
+      if (!CGAL::is_zero(scale)) ASSERT_GT(scale, Q(0));
+    }
+  }
+}
+
 // ------------------------------------------------------------------ hard cases
 
 TEST(BernsteinIsolation, WilkinsonLikeProduct) {

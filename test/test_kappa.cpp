@@ -577,12 +577,22 @@ TEST(Kappa, RationalQuadraticPointNearDblMaxAndItsRounding) {
   EXPECT_EQ(huge.point(1.0), huge.target());
   // Extreme weights (fuzz finding conic/regress-point-huge-weight: w = DBL_MAX gave NaN): the
   // point stays in the control triangle's box, and its ends are the end points.
+  // Compared with the exact value (Gmpq) within 8 eps of the largest coordinate.
+  const auto exact_coordinate = [](double c0, double c1, double c2, double w, double t) {
+    const CGAL::Gmpq te(t), we(w), se = CGAL::Gmpq(1) - te, b0 = se * se, b1 = CGAL::Gmpq(2) * we * se * te, b2 = te * te;
+    return (b0 * CGAL::Gmpq(c0) + b1 * CGAL::Gmpq(c1) + b2 * CGAL::Gmpq(c2)) / (b0 + b1 + b2);
+  };
+  const double eps = std::numeric_limits<double>::epsilon();
   const Pd q0(-1e-298, -1e-298), q1(-46, -15), q2(-1e-148, -1e-148);
   for (const double w : {M, 1e300, 1e16, 1e-16, 1e-300, 5e-324}) {
     const fair::Rational_quadratic_bezier_2<Kd> heavy(q0, q1, q2, w);
     for (const double t : {0.0, 1e-300, 0.25, 0.5, 0.75, 1 - 1e-16, 1.0}) {
       const Pd c = heavy.point(t);
       EXPECT_TRUE(c.x() >= -46 && c.x() <= 0 && c.y() >= -15 && c.y() <= 0) << "w " << w << ", t " << t << ": " << c;
+      EXPECT_LE(std::abs(CGAL::to_double(CGAL::Gmpq(c.x()) - exact_coordinate(q0.x(), q1.x(), q2.x(), w, t))), 8 * eps * 46)
+          << "w " << w << ", t " << t;
+      EXPECT_LE(std::abs(CGAL::to_double(CGAL::Gmpq(c.y()) - exact_coordinate(q0.y(), q1.y(), q2.y(), w, t))), 8 * eps * 46)
+          << "w " << w << ", t " << t;
     }
     EXPECT_EQ(heavy.point(0.0), q0);
     EXPECT_EQ(heavy.point(1.0), q2);
@@ -593,6 +603,9 @@ TEST(Kappa, RationalQuadraticPointNearDblMaxAndItsRounding) {
   for (int k = 0; k <= 64; ++k) {
     const Pd c = corner.point(k / 64.0);
     EXPECT_TRUE(c.x() >= -M && c.x() <= -32126 && c.y() >= -M && c.y() <= std::nextafter(-M, 0.0)) << k << ": " << c;
+    const Pd s = corner.source(), m = corner.control_points()[1], e = corner.target();
+    EXPECT_LE(std::abs(CGAL::to_double(CGAL::Gmpq(c.x()) - exact_coordinate(s.x(), m.x(), e.x(), 0.015625, k / 64.0))), 8 * eps * M) << k;
+    EXPECT_LE(std::abs(CGAL::to_double(CGAL::Gmpq(c.y()) - exact_coordinate(s.y(), m.y(), e.y(), 0.015625, k / 64.0))), 8 * eps * M) << k;
   }
   std::mt19937 g(24);
   std::uniform_real_distribution<double> U(-1, 1), T(0, 1), W(0.25, 4); // w > 1 takes the divided form
@@ -617,7 +630,6 @@ TEST(Kappa, RationalQuadraticPointNearDblMaxAndItsRounding) {
       worst_old = std::max(worst_old, std::abs(CGAL::to_double(CGAL::Gmpq(old_form) - exact)) / scale);
     }
   }
-  const double eps = std::numeric_limits<double>::epsilon();
   std::cout << "[rqb point] worst error / largest coordinate: convex combination " << worst_new / eps
             << " eps, weighted sum then division " << worst_old / eps << " eps (20000 random pieces)\n";
   EXPECT_LE(worst_new, 8 * eps);

@@ -46,6 +46,7 @@
 #include <cmath>
 #include <cstddef>
 #include <ostream>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -158,7 +159,7 @@ public:
   /// coordinate (the weighted sum before the division overflowed to inf for a piece near DBL_MAX).
   /// For w > 1 the b_i are divided by w first (b1 = 2 w s t overflowed for w near DBL_MAX, and
   /// inf / inf gave NaN: fuzz finding conic/regress-point-huge-weight), so every b_i stays <= 2.
-  /// Each coordinate is then clamped to the control points' range, where the exact value lies:
+  /// In a floating FT each coordinate is then clamped to the control points' range, where the exact value lies:
   /// in double, coefficients that sum to 1 + ulp turned three coordinates of -DBL_MAX into -inf
   /// (conic/regress-point-sum-beyond-dbl-max); the clamp only removes rounding beyond the range.
   /// The same value in an exact kernel; in double it differs from the sum-then-divide form by
@@ -169,9 +170,16 @@ public:
     const FT s = FT(1) - t, b0 = heavy ? s * s / w_ : s * s, b1 = heavy ? FT(2) * s * t : FT(2) * w_ * s * t,
              b2 = heavy ? t * t / w_ : t * t, W = b0 + b1 + b2;
     const FT a0 = b0 / W, a1 = b1 / W, a2 = b2 / W;
+    // Only in a floating FT: an exact value lies in the range already, and comparing it with an
+    // end point equal to it (t = 0, 1) would force EPECK's exact fallback on every call.
     const auto clamped = [](const FT& v, const FT& c0, const FT& c1, const FT& c2) {
-      const FT lo = (std::min)((std::min)(c0, c1), c2), hi = (std::max)((std::max)(c0, c1), c2);
-      return v < lo ? lo : (hi < v ? hi : v);
+      if constexpr (CGAL::Algebraic_structure_traits<FT>::Is_exact::value && !std::is_floating_point<FT>::value) {
+        (void)c0, (void)c1, (void)c2;
+        return v;
+      } else {
+        const FT lo = (std::min)((std::min)(c0, c1), c2), hi = (std::max)((std::max)(c0, c1), c2);
+        return v < lo ? lo : (hi < v ? hi : v);
+      }
     };
     return Point_2(clamped(a0 * p_[0].x() + a1 * p_[1].x() + a2 * p_[2].x(), p_[0].x(), p_[1].x(), p_[2].x()),
                    clamped(a0 * p_[0].y() + a1 * p_[1].y() + a2 * p_[2].y(), p_[0].y(), p_[1].y(), p_[2].y()));
