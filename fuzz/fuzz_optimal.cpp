@@ -66,16 +66,18 @@ extern "C" int FAIR_FUZZ_ENTRY(optimal)(const std::uint8_t* data, std::size_t si
         o.segment_lambda = fair::io::parse_segment_lambdas(lambdas, "fuzz-lambda.txt",
                                                            o.closed ? p.size() : (p.empty() ? 0 : p.size() - 1));
       });
-    const fair::Optimal_curve_2<K> c(p, o);
-    if (std::getenv("FAIR_FUZZ_VERBOSE")) {
+    const bool verbose = std::getenv("FAIR_FUZZ_VERBOSE") != nullptr;
+    if (verbose) { // before the solve, so that an input that throws is shown too
       std::fprintf(stderr, "closed %d solver %d disc %d lambda %.17g alpha0 %.17g beta %.17g beta0 %.17g rho %.17g throw %d\n",
                    int(o.closed), int(o.solver), int(o.discretisation), o.lambda, o.curvature_exponent, o.length_weight,
                    o.curvature_weight, o.resolution, int(o.throw_on_failure));
       for (const auto& d : o.derivative_weight) std::fprintf(stderr, "dw %.17g\n", d);
       for (const Point_2& q : p) std::fprintf(stderr, "p %.17g %.17g\n", q.x(), q.y());
-      std::fprintf(stderr, "constraints %zu lambdas %zu status %d energy %g vertices %zu\n", o.constraints.size(), o.segment_lambda.size(),
-                   int(c.report().status), c.energy(), c.polygon().size());
+      std::fprintf(stderr, "constraints %zu lambdas %zu\n", o.constraints.size(), o.segment_lambda.size());
     }
+    const fair::Optimal_curve_2<K> c(p, o);
+    if (verbose)
+      std::fprintf(stderr, "status %d energy %g vertices %zu\n", int(c.report().status), c.energy(), c.polygon().size());
     require_finite(c.energy(), "energy");
     for (const double k : c.curvatures()) require_finite(k, "vertex curvature");
     require_finite(c.report().gradient_norm, "gradient norm");

@@ -937,3 +937,26 @@ TEST(OptimiserLambdaDesign, Phi4BlendAndScale) {
 }
 
 } // namespace
+
+// Consecutive points closer than 2^-40 of the data's chord length (fuzz finding of session 19: two
+// points 1 ulp apart made the final polygon's breakpoints equal): refused with both points named;
+// just above the limit the curve is solved.
+TEST(OptimiserErrors, PointsTooCloseToResolveAreRefusedByName) {
+  Optimal_curve_options o;
+  // The fuzz input: points at 1e-8 with the last two 7e-24 apart.
+  expect_error<fair::Invalid_input_error>(
+      {P(4.6972831674499663e-294, 0), P(2e-08, 3.0000000000000004e-08), P(-4.696323204354239e-261, -4.6963232011388926e-261),
+       P(2e-08, 3.0000000000000004e-08), P(2e-08, 3.0000000000000011e-08)},
+      o, "consecutive points 3 = (2e-08, 3.0000000000000004e-08) and 4 = (2e-08, 3.0000000000000011e-08)");
+  const double length = 2 * std::sqrt(2.0);
+  for (const double fraction : {0x1p-41, 0x1p-39}) {
+    const std::vector<P> p = {P(0, 0), P(1, 1), P(2, 0), P(2 + fraction * length, fraction * length / 2)};
+    if (fraction < fair::internal::optimal::resolved_edge_fraction) {
+      expect_error<fair::Invalid_input_error>(p, o, "too close to be resolved in double");
+    } else {
+      const Optimal_curve_2<K> c(p, o);
+      EXPECT_EQ(c.report().status, fair::Optimal_curve_status::CONVERGED);
+      EXPECT_FALSE(c.pieces().empty());
+    }
+  }
+}

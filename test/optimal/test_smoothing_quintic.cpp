@@ -324,3 +324,43 @@ TEST(Optimal_fit_smoothing_quintic, OptimalSplineIsAlwaysWithinTheResolution) {
 }
 
 }  // namespace
+
+// Vertices that coincide to working precision (fuzz finding of session 19, corpus
+// optimal/regress-points-one-ulp-apart): typed errors, not an internal error.
+TEST(Optimal_fit_smoothing_errors, AnEdgeBelowTheBreakpointResolutionIsRefused) {
+  // 1e-16 is below half an ulp of the breakpoint 4 it would start at: t + h == t.
+  const std::vector<Vec2> p = {{{0, 0}}, {{4, 0}}, {{4, 1e-16}}};
+  try {
+    fair::internal::optimal::chord_breakpoints(p, false, "test");
+    ADD_FAILURE() << "no error for an edge that does not advance its breakpoint";
+  } catch (const fair::Invalid_input_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("edge 1 from (4, 0)"), std::string::npos) << what;
+    EXPECT_NE(what.find("below the resolution of double"), std::string::npos) << what;
+  }
+  // The same edge from 0 advances its breakpoint and is accepted.
+  const std::vector<double> t = fair::internal::optimal::chord_breakpoints({{{0, 0}}, {{0, 1e-16}}, {{4, 1e-16}}}, false, "test");
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_LT(t[0], t[1]);
+  EXPECT_LT(t[1], t[2]);
+}
+
+TEST(Optimal_fit_smoothing_errors, AnInterpolantSingularToWorkingPrecisionNamesItsShortestEdge) {
+  // The solve is the fit's parameter: one that reports a singular system (as the banded Cholesky
+  // does for a non-positive pivot) must end in Invalid_input_error naming the shortest edge,
+  // whatever the order of the energy.
+  const std::vector<Vec2> v = {{{0, 0}}, {{1, 0}}, {{1, 1e-9}}, {{2, 0}}};
+  const std::vector<double> t = fair::internal::optimal::chord_breakpoints(v, false, "test");
+  const std::vector<bool> hard = {true, false, false, true};
+  auto singular = [](const std::vector<double>&, std::vector<std::array<Vec2, 6>>&, std::vector<Vec2>&) { return false; };
+  for (int order : {3, 5}) {
+    try {
+      fair::internal::spline::smoothing_fit_run_with<6>(v, t, false, hard, 0.1, order, singular);
+      ADD_FAILURE() << "no error for a singular interpolant, order " << order;
+    } catch (const fair::Invalid_input_error& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(order == 3 ? "interpolating cubic" : "interpolating quintic"), std::string::npos) << what;
+      EXPECT_NE(what.find("its edge 1 is"), std::string::npos) << what;  // 1e-9 of the length
+    }
+  }
+}

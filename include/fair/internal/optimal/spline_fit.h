@@ -56,7 +56,8 @@ constexpr int fit_distance_refinements = 40;
 constexpr std::size_t quintic_end_points = 6;
 
 /// Cumulative chord-length breakpoints (size n + 1 open, n + 1 closed with the closing edge).
-/// Throws Invalid_input_error for a zero-length edge (in double) or a non-finite length.
+/// Throws Invalid_input_error for a zero-length edge (in double), one too short to advance the
+/// breakpoint it starts at, or a non-finite length.
 inline std::vector<double> chord_breakpoints(const std::vector<Vec2>& p, bool closed, const char* fn) {
   const std::size_t n = p.size(), edges = closed ? n : n - 1;
   std::vector<double> t(1, 0.0);
@@ -68,6 +69,12 @@ inline std::vector<double> chord_breakpoints(const std::vector<Vec2>& p, bool cl
     if (!(h > 0) || !std::isfinite(h) || !std::isfinite(t.back() + h))
       throw Invalid_input_error(message(fn, ": edge ", i, " from (", a[0], ", ", a[1], ") to (", b[0], ", ", b[1],
                                         ") has length ", h, " (vertices must be distinct and finite in double)"));
+    // An edge shorter than the rounding of the breakpoint before it would give two equal breakpoints
+    // (a piece of length 0: 1/h infinite in every system built on t).
+    if (!(t.back() + h > t.back()))
+      throw Invalid_input_error(message(fn, ": edge ", i, " from (", a[0], ", ", a[1], ") to (", b[0], ", ", b[1],
+                                        ") has length ", h, ", below the resolution of double at the chord parameter ",
+                                        t.back(), " it starts at: its vertices coincide to working precision"));
     t.push_back(t.back() + h);
   }
   return t;
