@@ -446,6 +446,54 @@ TEST(BernsteinIsolation, RefinementReachesWidthAndKeepsTheRoot) {
   EXPECT_EQ(iso.root_approximation(0), 0.5); // exact root on the first subdivision point
 }
 
+// A root that is itself a double (metrics fuzz finding of session 19): root_approximation used to
+// bisect at midpoints until both ends truncated to the same double, which never happens when the
+// ends close in on such a root from both sides at a non-dyadic ratio: 5000 exact bisections,
+// 7-15 s, then Non_convergence_error. It now splits at doubles and stops within [d, next(d)].
+TEST(BernsteinIsolation, RootApproximationOfARootThatIsADouble) {
+  // The curvature-extremum polynomial of the finding: a simple root at exactly 1/4.
+  const PQ found({Q(-18), Q(0), Q(42, 5), Q(36, 5), Q(-18, 5), Q(-24), Q(-54)});
+  EXPECT_EQ(found.evaluate(Q(1, 4)), 0);
+  fair::Bernstein_root_isolation iso(found);
+  bool met = false;
+  for (std::size_t j = 0; j < iso.number_of_roots(); ++j) {
+    const double x = iso.root_approximation(j);
+    if (std::abs(x - 0.25) < 1e-6) {
+      met = true;
+      EXPECT_LE(std::abs(x - 0.25), 0.25 - std::nextafter(0.25, 0.0)) << x;
+    }
+  }
+  EXPECT_TRUE(met);
+  // Random doubles r (down to 2^-60 apart from a grid) as roots of products with random factors,
+  // also at 1 and next to it; every approximation within one ulp of r.
+  std::mt19937 rng(19);
+  std::uniform_real_distribution<double> u(0.01, 0.99);
+  for (int trial = 0; trial < 60; ++trial) {
+    double r = u(rng);
+    if (trial % 10 == 0) r = 1;
+    if (trial % 10 == 1) r = std::nextafter(1.0, 0.0);
+    if (trial % 10 == 2) r = std::ldexp(std::floor(std::ldexp(r, 20)), -20);  // a short dyadic
+    PQ p = linear_factor(Q(r));
+    for (int k = 0; k < 1 + trial % 4; ++k) p *= linear_factor(Q(u(rng)) + Q(1, 3));  // roots outside or inside
+    if (trial % 3 == 0) p *= PQ({Q(1), Q(-2, 3), Q(5, 7)});
+    fair::Bernstein_root_isolation r_iso(p);
+    const std::vector<std::pair<Real, int>> roots = ak_roots_in_unit_interval(p);
+    ASSERT_EQ(roots.size(), r_iso.number_of_roots());
+    bool found_r = false;
+    for (std::size_t j = 0; j < r_iso.number_of_roots(); ++j) {
+      const double x = r_iso.root_approximation(j);
+      const AK::Compare_1 cmp = AK().compare_1_object();
+      EXPECT_NE(cmp(roots[j].first, Q(std::nextafter(x, -1.0))), CGAL::SMALLER);
+      EXPECT_NE(cmp(roots[j].first, Q(std::nextafter(x, 2.0))), CGAL::LARGER);
+      if (cmp(roots[j].first, Q(r)) == CGAL::EQUAL) {
+        found_r = true;
+        EXPECT_LE(std::abs(x - r), std::nextafter(r, 2.0) - r) << "trial " << trial;
+      }
+    }
+    EXPECT_TRUE(found_r) << "trial " << trial;
+  }
+}
+
 // ------------------------------------------------------------------ fast unique-root path
 
 // Checks the certificate of a UNIQUE_ROOT answer independently, in exact arithmetic.

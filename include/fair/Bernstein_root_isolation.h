@@ -28,7 +28,8 @@
 // filter first, exact integer de Casteljau at the dyadic bisection point when the filter is
 // inconclusive) until the requested width. root_approximation() shrinks the interval to two
 // adjacent doubles by double Newton iteration and an interval-certified bracket (as
-// certified_unique_root), so the returned double is within one ulp of the root.
+// certified_unique_root), then, if need be, by exact bisection until it lies within [d, next(d)]
+// for a double d, which it returns: within one ulp of the root.
 
 #ifndef FAIR_BERNSTEIN_ROOT_ISOLATION_H
 #define FAIR_BERNSTEIN_ROOT_ISOLATION_H
@@ -124,8 +125,8 @@ public:
 
   /// A double within one ulp of root i (refines interval i as needed). Double Newton with a
   /// certified bracket (interval signs, exact integer fallback) shrinks the interval to two
-  /// adjacent doubles and the lower one is returned; an interval whose ends are not doubles
-  /// (deeper than 2^-52) is bisected exactly until both ends truncate to the same double.
+  /// adjacent doubles and the lower one is returned; otherwise the interval is split exactly at
+  /// doubles until it is a point or lies within [d, next(d)], and d is returned.
   double root_approximation(std::size_t i) {
     internal::require(i < intervals_.size(), "Bernstein_root_isolation::root_approximation: index ", i,
                       " out of range (", intervals_.size(), " roots)");
@@ -135,11 +136,19 @@ public:
     const double L = CGAL::to_double(I.lower), H = CGAL::to_double(I.upper);
     if (I.is_point()) return L;
     if (CGAL::Gmpq(L) == I.lower && CGAL::Gmpq(H) == I.upper && H <= std::nextafter(L, 2.0)) return L;
-    for (int step = 0; !I.is_point() && CGAL::to_double(I.lower) != CGAL::to_double(I.upper); ++step) {
+    // Exact splits at doubles: the double nearest the middle while one lies inside, else the one
+    // just above the lower end. The interval ends when it is a point or lies within [d, next(d)]
+    // (then d is returned). A split at the midpoint instead would never stop on a root that is
+    // itself a double (0.25, 1) when the ends are not dyadic: they close in from both sides.
+    for (int step = 0; !I.is_point(); ++step) {
+      const double below = double_at_or_below(I.lower), above = std::nextafter(below, 2.0);
+      if (CGAL::Gmpq(above) >= I.upper) return below;  // the root is in (lower, upper) within [below, above]
       if (step > max_approximation_bisections)
         throw Non_convergence_error("Bernstein_root_isolation::root_approximation: bisection cap",
                                     max_approximation_bisections, 0.0);
-      bisect(i);
+      CGAL::Gmpq m(CGAL::to_double((I.lower + I.upper) / 2));
+      if (!(I.lower < m && m < I.upper)) m = CGAL::Gmpq(above);  // lower < above < upper
+      split(i, m);
     }
     return CGAL::to_double(I.lower);
   }
@@ -307,10 +316,19 @@ private:
     if (r.upper != H) I.upper = CGAL::Gmpq(r.upper);
   }
 
+  // The largest double <= q (q in [0, 1]), whatever the rounding of to_double.
+  static double double_at_or_below(const CGAL::Gmpq& q) {
+    const double d = CGAL::to_double(q);
+    return CGAL::Gmpq(d) > q ? std::nextafter(d, -1.0) : d;
+  }
+
   void bisect(std::size_t i) {
+    if (!intervals_[i].is_point()) split(i, (intervals_[i].lower + intervals_[i].upper) / 2);
+  }
+
+  // Splits interval i (not a point) at m, lower < m < upper, by the exact sign of the witness at m.
+  void split(std::size_t i, const CGAL::Gmpq& m) {
     Isolating_interval& I = intervals_[i];
-    if (I.is_point()) return;
-    const CGAL::Gmpq m = (I.lower + I.upper) / 2;
     const int s = witness_sign(m);
     if (s == 0) {
       I.lower = m;
@@ -329,8 +347,11 @@ private:
   static constexpr int hard_cap = 4000;
   // Bisections of refine(): a requested width down to 2^-100000.
   static constexpr int max_refine_bisections = 100000;
-  // Bisections of root_approximation() after the double tightening: the ends reach the same
-  // double after at most ~1100 halvings of [0,1] (subnormals included); the cap is a safety net.
+  // Splits of root_approximation() after the double tightening: the interval lies within
+  // [d, next(d)] for a double d after at most ~1100 halvings of [0,1] (subnormals included); the
+  // cap is a safety net. (Until session 19 it bisected at midpoints until both ends truncated to
+  // the same double, which never happens for a root that is a double between non-dyadic ends:
+  // 5000 exact bisections, 7-15 s, then this cap: a metrics fuzz finding.)
   static constexpr int max_approximation_bisections = 5000;
 
   Bernstein_polynomial<CGAL::Gmpq> p_;
