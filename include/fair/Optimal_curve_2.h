@@ -35,8 +35,9 @@ namespace fair {
 /// The optimal curve through `points` (closed: no repeated last point): the optimal polygon and
 /// the C2 cubic smoothing spline of it through the points (pieces(), spline()).
 /// Errors: Invalid_input_error for too few points (< 2 open, < 3 closed), non-finite or
-/// coincident consecutive points (or closer than 2^-40 of the data's chord length, which double
-/// does not resolve along the polygon: internal::optimal::resolved_edge_fraction), constraints out of range / with a zero direction / that cannot
+/// coincident consecutive points (or closer than 2^-40 of the data's chord length: the spline
+/// fits of the polygon fail a few ulps of the length, and this keeps a margin of about 2^13;
+/// internal::optimal::resolved_edge_fraction), constraints out of range / with a zero direction / that cannot
 /// be met; Precondition_error for options outside their domain (negative or non-finite weights,
 /// all of beta, beta_0, beta_k zero, lambda outside [0, 1], exponents < 1, resolution <= 0).
 /// A solve that diverges or hits a cap does not throw unless options.throw_on_failure is set

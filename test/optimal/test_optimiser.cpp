@@ -952,7 +952,7 @@ TEST(OptimiserErrors, PointsTooCloseToResolveAreRefusedByName) {
   for (const double fraction : {0x1p-41, 0x1p-39}) {
     const std::vector<P> p = {P(0, 0), P(1, 1), P(2, 0), P(2 + fraction * length, fraction * length / 2)};
     if (fraction < fair::internal::optimal::resolved_edge_fraction) {
-      expect_error<fair::Invalid_input_error>(p, o, "too close to be resolved in double");
+      expect_error<fair::Invalid_input_error>(p, o, "too close to be resolved reliably in double");
     } else {
       const Optimal_curve_2<K> c(p, o);
       EXPECT_EQ(c.report().status, fair::Optimal_curve_status::CONVERGED);

@@ -364,3 +364,43 @@ TEST(Optimal_fit_smoothing_errors, AnInterpolantSingularToWorkingPrecisionNamesI
     }
   }
 }
+
+// The closed C4 quintic interpolant with an edge of a few ulps of the length beside long ones
+// (review of session 19): its banded system is positive definite only mathematically. The answer
+// is a fit or an Invalid_input_error naming the edge, never an internal error; the open fit of the
+// same points and the fuzz input through the smoothing quintic likewise.
+TEST(Optimal_fit_smoothing_errors, QuinticInterpolantWithAnEdgeOfAFewUlps) {
+  int refused = 0;
+  for (int k = 1; k <= 4; ++k)
+    for (const bool closed : {true, false}) {
+      const double e = k * 0x1p-51;
+      const std::vector<Pd> p = {Pd(0, 0), Pd(1, 1), Pd(2, 0), Pd(2 + e, e), Pd(1, -1)};
+      try {
+        const auto fit = fair::fit_quintic_spline<Kd>(p, closed);
+        EXPECT_EQ(fit.pieces.size(), closed ? 5u : 4u);
+        for (const auto& piece : fit.pieces)
+          for (const Pd& q : piece.control_points()) EXPECT_TRUE(std::isfinite(q.x()) && std::isfinite(q.y()));
+      } catch (const fair::Invalid_input_error& e) {
+        ++refused;
+        EXPECT_NE(std::string(e.what()).find("fair::fit_quintic_spline: the interpolating quintic of"), std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("its edge 2 is"), std::string::npos) << e.what();
+      }
+    }
+  EXPECT_GE(refused, 1);  // e = 2^-51 closed was an Internal_error
+  const std::vector<Pd> fuzz = {Pd(4.6972831674499663e-294, 0), Pd(2e-08, 3.0000000000000004e-08),
+                                Pd(-4.696323204354239e-261, -4.6963232011388926e-261), Pd(2e-08, 3.0000000000000004e-08),
+                                Pd(2e-08, 3.0000000000000011e-08)};
+  for (const bool closed : {true, false})
+    for (const double tolerance : {0.0, 1e-9}) {
+      try {
+        fair::fit_smoothing_quintic_runs<Kd>(fuzz, closed, {}, {}, tolerance);
+        fair::fit_quintic_spline<Kd>(fuzz, closed);
+      } catch (const fair::Invalid_input_error& e) {
+        const std::string what = e.what();
+        EXPECT_TRUE(what.find("singular to working precision") != std::string::npos ||
+                    what.find("below the resolution of double") != std::string::npos)
+            << what;
+      }
+    }
+}

@@ -176,7 +176,8 @@ inline Status worse(Status a, Status b) {
 }
 
 /// The shortest edge between consecutive data points, as a fraction of the data's chord length,
-/// that check_solve_input accepts (2^-40, about 9.1e-13).
+/// that check_solve_input accepts (2^-40, about 9.1e-13): the spline fits of the polygon fail at a
+/// few ulps of the length, and this keeps a margin of about 2^13.
 constexpr double resolved_edge_fraction = 0x1p-40;
 
 /// Checks the data and options (typed errors naming the value).
@@ -197,7 +198,8 @@ inline void check_solve_input(const std::vector<Vec2>& p, const Optimal_curve_op
   }
   // Points distinct in double but closer than about 1e-12 of the data's chord length: the polygon's
   // chord parameters (spline_fit.h, chord_breakpoints) and the spline systems built on their
-  // powers of 1/h do not resolve them (a fuzz finding of session 19: an edge 2e-16 of the length).
+  // powers of 1/h fail a few ulps of the length (a fuzz finding of session 19: an edge 2e-16 of
+  // the length); 2^-40 keeps a margin of about 2^13 above that.
   double length = 0;
   for (std::size_t i = 0; i < pairs; ++i) {
     const std::size_t j = (i + 1) % p.size();
@@ -210,7 +212,7 @@ inline void check_solve_input(const std::vector<Vec2>& p, const Optimal_curve_op
       throw Invalid_input_error(message(fn, ": consecutive points ", i, " = (", p[i][0], ", ", p[i][1], ") and ", j, " = (",
                                         p[j][0], ", ", p[j][1], ") are ", d, " apart, ", d / length,
                                         " of the data's chord length ", length, " (less than ", resolved_edge_fraction,
-                                        "): too close to be resolved in double; merge them"));
+                                        "): too close to be resolved reliably in double; merge them"));
   }
   auto weight = [&](double w, const char* name) {
     require(std::isfinite(w) && w >= 0, fn, ": ", name, " = ", w, " must be finite and >= 0");

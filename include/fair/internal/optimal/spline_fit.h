@@ -80,6 +80,22 @@ inline std::vector<double> chord_breakpoints(const std::vector<Vec2>& p, bool cl
   return t;
 }
 
+/// A spline interpolant on strictly increasing breakpoints t is positive definite, but its system
+/// is built from powers of 1/h: edges spread over too many orders of magnitude (vertices that
+/// coincide to working precision, with long edges elsewhere) leave it singular in double.
+/// Throws Invalid_input_error naming the shortest edge against the length (`what`: "cubic" or
+/// "quintic").
+[[noreturn]] inline void interpolant_unsolvable(const std::vector<double>& t, const char* fn, const char* what) {
+  std::size_t shortest = 0;
+  for (std::size_t i = 1; i + 1 < t.size(); ++i)
+    if (t[i + 1] - t[i] < t[shortest + 1] - t[shortest]) shortest = i;
+  const double length = t.back() - t.front();
+  throw Invalid_input_error(message(fn, ": the interpolating ", what, " of ", t.size() - 1,
+                                    " edges is singular to working precision: its edge ", shortest, " is ",
+                                    (t[shortest + 1] - t[shortest]) / length,
+                                    " of the length (vertices that close together are not resolved; merge them)"));
+}
+
 /// The 6x6 matrix of int_0^1 (q'''(u))^2 du for the quintic Hermite piece q with the data
 /// v = (p0, p1, a0, b0, a1, b1) (a = q'(0 or 1), b = q''(0 or 1) in u): q''' = 6 c3 + 24 c4 u +
 /// 60 c5 u^2 with c3 = 10D - 4E + G/2, c4 = -15D + 7E - G, c5 = 6D - 3E + G/2, D = p1 - p0 - a0 -
@@ -199,7 +215,9 @@ inline void quintic_derivatives(const std::vector<Vec2>& p, const std::vector<do
       }
     }
   }
-  FAIR_ASSERT_MSG(B.factor(), "quintic_derivatives: the banded system of ", knots, " knots is not positive definite");
+  // Positive definite for distinct breakpoints, but not always to working precision: an edge of a
+  // few ulps of the length beside long ones (review of session 19) leaves a non-positive pivot.
+  if (!B.factor()) interpolant_unsolvable(t, "fair::fit_quintic_spline", "quintic");
   std::array<std::vector<double>, 2> x = rhs;
   for (int c = 0; c < 2; ++c) B.solve(x[c].data());
   if (closed) {
@@ -231,7 +249,7 @@ inline void quintic_derivatives(const std::vector<Vec2>& p, const std::vector<do
         int best = col;
         for (int r = col + 1; r < 4; ++r)
           if (std::fabs(A[r][col]) > std::fabs(A[best][col])) best = r;
-        FAIR_ASSERT_MSG(std::fabs(A[best][col]) > 0, "quintic_derivatives: singular closing capacitance matrix");
+        if (!(std::fabs(A[best][col]) > 0)) interpolant_unsolvable(t, "fair::fit_quintic_spline", "quintic");
         for (int k = 0; k < 5; ++k) std::swap(A[col][k], A[best][k]);
         for (int r = col + 1; r < 4; ++r) {
           const double f = A[r][col] / A[col][col];

@@ -284,22 +284,6 @@ constexpr int smoothing_max_solves = 40;
 constexpr int smoothing_band_steps = 25;
 constexpr double smoothing_band_target = 0.9, smoothing_band_clamp = 4;
 
-/// The interpolant (sigma = 0) of a run is positive definite for strictly increasing t, but its
-/// system is built from powers of 1/h: edges spread over too many orders of magnitude (vertices
-/// that coincide to working precision, with long edges elsewhere) leave it singular in double.
-/// Throws Invalid_input_error naming the shortest edge against the run's length.
-[[noreturn]] inline void interpolant_unsolvable(const std::vector<double>& t, int p) {
-  std::size_t shortest = 0;
-  for (std::size_t i = 1; i + 1 < t.size(); ++i)
-    if (t[i + 1] - t[i] < t[shortest + 1] - t[shortest]) shortest = i;
-  const double length = t.back() - t.front();
-  throw Invalid_input_error(message(p == 3 ? "fair::fit_smoothing_spline_runs" : "fair::fit_smoothing_quintic_runs",
-                                    ": the interpolating ", p == 3 ? "cubic" : "quintic", " of a run of ", t.size() - 1,
-                                    " edges is singular to working precision: its edge ", shortest, " is ",
-                                    (t[shortest + 1] - t[shortest]) / length,
-                                    " of the run's length (vertices that close are not resolved; merge them)"));
-}
-
 /// The smoothing fit of one run (t: its chord breakpoints; hard[k]: v_k interpolated) with the
 /// most smoothing whose distance to the polygon is <= tolerance, for the energy of order p
 /// (3: the cubic's int |c''|^2; 5: the quintic's int |c'''|^2; the weights scale as h^-p).
@@ -338,7 +322,9 @@ Smoothing_run_of<N> smoothing_fit_run_with(const std::vector<optimal::Vec2>& v, 
   auto evaluate = [&](double sigma, Run& r) {
     for (std::size_t k = 0; k < n; ++k) d[k] = (hard[k] || !(sigma > 0)) ? 0 : sigma * a[k] * a[k] / unit_weight;
     const bool solved = solve_with(d, r);
-    if (!solved && !(sigma > 0)) interpolant_unsolvable(t, p);
+    if (!solved && !(sigma > 0))
+      optimal::interpolant_unsolvable(t, p == 3 ? "fair::fit_smoothing_spline_runs" : "fair::fit_smoothing_quintic_runs",
+                                      p == 3 ? "cubic" : "quintic");
     r.sigma = sigma;
   };
   evaluate(0, out);
