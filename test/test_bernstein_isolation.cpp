@@ -464,8 +464,9 @@ TEST(BernsteinIsolation, RootApproximationOfARootThatIsADouble) {
     }
   }
   EXPECT_TRUE(met);
-  // Random doubles r (down to 2^-60 apart from a grid) as roots of products with random factors,
-  // also at 1 and next to it; every approximation within one ulp of r.
+  // Random doubles r as roots of products with random factors, also at 1 and next to it, a short
+  // dyadic, and with a second root 2^-60 .. 2^-110 away; every approximation within one ulp of r,
+  // and the interval it leaves is the root itself or lies within [x, next(x)].
   std::mt19937 rng(19);
   std::uniform_real_distribution<double> u(0.01, 0.99);
   for (int trial = 0; trial < 60; ++trial) {
@@ -476,6 +477,11 @@ TEST(BernsteinIsolation, RootApproximationOfARootThatIsADouble) {
     PQ p = linear_factor(Q(r));
     for (int k = 0; k < 1 + trial % 4; ++k) p *= linear_factor(Q(u(rng)) + Q(1, 3));  // roots outside or inside
     if (trial % 3 == 0) p *= PQ({Q(1), Q(-2, 3), Q(5, 7)});
+    if (trial % 10 == 5 || trial % 10 == 6) {  // a close neighbour root, not a double
+      Q gap(1);
+      for (int k = 0; k < 60 + 10 * (trial / 10); ++k) gap /= 2;
+      p *= linear_factor(Q(r) + gap / 3);
+    }
     fair::Bernstein_root_isolation r_iso(p);
     const std::vector<std::pair<Real, int>> roots = ak_roots_in_unit_interval(p);
     ASSERT_EQ(roots.size(), r_iso.number_of_roots());
@@ -483,6 +489,10 @@ TEST(BernsteinIsolation, RootApproximationOfARootThatIsADouble) {
     for (std::size_t j = 0; j < r_iso.number_of_roots(); ++j) {
       const double x = r_iso.root_approximation(j);
       const AK::Compare_1 cmp = AK().compare_1_object();
+      if (!r_iso[j].is_point()) {
+        EXPECT_LE(Q(x), r_iso[j].lower) << "trial " << trial;
+        EXPECT_LE(r_iso[j].upper, Q(std::nextafter(x, 2.0))) << "trial " << trial;
+      }
       EXPECT_NE(cmp(roots[j].first, Q(std::nextafter(x, -1.0))), CGAL::SMALLER);
       EXPECT_NE(cmp(roots[j].first, Q(std::nextafter(x, 2.0))), CGAL::LARGER);
       if (cmp(roots[j].first, Q(r)) == CGAL::EQUAL) {

@@ -91,7 +91,7 @@ inline std::ostream& operator<<(std::ostream& out, Curvature_extremum_kind k) { 
 /// t_lower == t_upper, otherwise it lies in the open interval (t_lower, t_upper).
 struct Curvature_extremum {
   CGAL::Gmpq t_lower, t_upper;
-  double t = 0.5;        ///< a double in [t_lower, t_upper], within a few ulps of the root
+  double t = 0.5;        ///< a double <= the root and within one ulp of it (Bernstein_root_isolation::root_approximation)
   int multiplicity = 1;  ///< exact multiplicity as a root of the eq.-4 polynomial
   Curvature_extremum_kind kind = Curvature_extremum_kind::MAXIMUM;
 };
