@@ -38,7 +38,8 @@ namespace fair {
 /// coincident consecutive points (or closer than 2^-40 of the data's chord length: the spline
 /// fits of the polygon fail a few ulps of the length, and this keeps a margin of about 2^13;
 /// internal::optimal::resolved_edge_fraction), constraints out of range / with a zero direction / that cannot
-/// be met; Precondition_error for options outside their domain (negative or non-finite weights,
+/// be met, data at an extent whose energy or curvatures overflow double (near 1e308 or 1e-308:
+/// the message names the value at unit extent and the extent); Precondition_error for options outside their domain (negative or non-finite weights,
 /// all of beta, beta_0, beta_k zero, lambda outside [0, 1], exponents < 1, resolution <= 0).
 /// A solve that diverges or hits a cap does not throw unless options.throw_on_failure is set
 /// (then Solve_error carrying the report): report().status says so.

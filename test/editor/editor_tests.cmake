@@ -21,7 +21,7 @@ if(FAIR_EDITOR_PYTHON)
   add_test(NAME editor_api COMMAND ${FAIR_EDITOR_PYTHON} ${FAIR_EDITOR_TEST_DIR}/editor_api.py $<TARGET_FILE:fair-curves>)
   # The load test measures latencies: alone on the machine (RUN_SERIAL), so that they are its own.
   add_test(NAME editor_load COMMAND ${FAIR_EDITOR_PYTHON} ${FAIR_EDITOR_TEST_DIR}/editor_load.py $<TARGET_FILE:fair-curves>)
-  set_tests_properties(editor_api PROPERTIES TIMEOUT 300)
+  set_tests_properties(editor_api PROPERTIES TIMEOUT 300 COST 10) # COST: test/CMakeLists.txt
   set_tests_properties(editor_load PROPERTIES TIMEOUT 300 RUN_SERIAL ON)
 endif()
 

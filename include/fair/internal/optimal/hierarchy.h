@@ -407,6 +407,15 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
   Solve_result res = solve_normalised(q, o);
   for (Vec2& v : res.polygon) v = {{v[0] * scale + cx, v[1] * scale + cy}};
   for (std::size_t i = 0; i < points.size(); ++i) res.polygon[res.interpolation_indices[i]] = points[i];
+  // kappa(q c) = kappa(c) / q: at an extent near the bottom of the double range the curvature of a
+  // tight turn can exceed it (fuzz finding optimal/regress-curvature-overflow: points at 1e-298
+  // with two of them 4e-309 apart).
+  double largest_curvature = 0;
+  for (const double k : res.curvatures) largest_curvature = std::max(largest_curvature, std::abs(k));
+  if (std::isfinite(largest_curvature) && !std::isfinite(largest_curvature / scale))
+    throw Invalid_input_error(message("Optimal_curve_2: the curvature of the curve (up to ", largest_curvature,
+                                      " at unit extent) overflows double at the points' extent ", r,
+                                      "; scale the points up"));
   for (double& k : res.curvatures) k /= scale;
   const double normalised_energy = res.report.energy;
   res.report.energy *= scale;
