@@ -34,8 +34,6 @@ namespace {
 
 using namespace fair_test;
 
-const double pi = 3.14159265358979323846;
-
 // Arc length of y = x^2 from 0 to x: (x sqrt(1 + 4x^2))/2 + asinh(2x)/4.
 double parabola_length(double x) { return 0.5 * x * std::sqrt(1 + 4 * x * x) + 0.25 * std::asinh(2 * x); }
 

@@ -24,6 +24,10 @@
 
 namespace fair_test {
 
+/// pi to double precision, for the tests' circles and angles (one definition: sources that share
+/// a unity translation unit must not define it twice).
+constexpr double pi = 3.14159265358979323846;
+
 // The kernels of the typed tests: floating point (plain and with exact predicates) and exact
 // (lazy exact and plain rational).
 typedef CGAL::Simple_cartesian<double> SC_double;

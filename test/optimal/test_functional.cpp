@@ -8,6 +8,8 @@
 #include <fair/internal/optimal/functional.h>
 #include <fair/internal/optimal/reduced_system.h>
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,10 +18,13 @@
 #include <vector>
 
 namespace {
+// Named: test_optimal is one unity translation unit (test/CMakeLists.txt), and this using-directive
+// must not reach the other sources' unnamed namespace.
+namespace functional_tests {
 
 using namespace fair::internal::optimal;
 using fair::Curvature_discretisation;
-const double pi = 3.14159265358979323846;
+using fair_test::pi;
 const Curvature_discretisation all_discretisations[3] = {Curvature_discretisation::REGULARISED, Curvature_discretisation::CIRCUMCIRCLE,
                                                          Curvature_discretisation::TURNING_ANGLE};
 
@@ -546,29 +551,7 @@ TEST(OptimalNormals, NormalOffsetSystemMatchesDifferences) {
 
 // --- Banded solve ----------------------------------------------------------------------------
 
-/// Dense Gaussian elimination with partial pivoting: the oracle.
-std::vector<double> dense_solve(std::vector<std::vector<double>> a, std::vector<double> b) {
-  const std::size_t n = b.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    std::size_t p = k;
-    for (std::size_t i = k + 1; i < n; ++i)
-      if (std::fabs(a[i][k]) > std::fabs(a[p][k])) p = i;
-    std::swap(a[k], a[p]);
-    std::swap(b[k], b[p]);
-    for (std::size_t i = k + 1; i < n; ++i) {
-      const double m = a[i][k] / a[k][k];
-      for (std::size_t j = k; j < n; ++j) a[i][j] -= m * a[k][j];
-      b[i] -= m * b[k];
-    }
-  }
-  std::vector<double> x(n);
-  for (std::size_t i = n; i-- > 0;) {
-    double s = b[i];
-    for (std::size_t j = i + 1; j < n; ++j) s -= a[i][j] * x[j];
-    x[i] = s / a[i][i];
-  }
-  return x;
-}
+using fair_test::dense_solve;  // the oracle
 
 TEST(OptimalBanded, CholeskyMatchesDenseSolveOpenAndCyclic) {
   std::mt19937 rng(3);
@@ -783,4 +766,5 @@ TEST(OptimalFunctional, TypedErrorsNameTheOffendingIndex) {
   EXPECT_THROW(energy(h, c), fair::Precondition_error);
 }
 
+}  // namespace functional_tests
 }  // namespace

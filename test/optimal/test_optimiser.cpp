@@ -33,7 +33,7 @@ using fair::Point_constraint;
 using fair::Point_constraint_kind;
 typedef fair_test::SC_double K;
 typedef K::Point_2 P;
-const double pi = 3.14159265358979323846;
+using fair_test::pi;
 
 // The raw weights of eq. 5 (lambda = -1): the oracles below are stated for them. The defaults are
 // the lambda design at fair::default_optimal_lambda (issue 25 §1; test_real_data.cpp).

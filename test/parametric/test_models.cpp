@@ -6,6 +6,8 @@
 #include <fair/Parametric_curve_2.h>
 #include <fair/internal/metrics/quadrature.h>
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,7 +17,7 @@
 
 namespace {
 
-const double pi = 3.14159265358979323846;
+using fair_test::pi;
 
 // Reference values of C(x), S(x): mpmath 1.3 fresnelc/fresnels at 30 digits.
 struct Fresnel_reference {

@@ -18,8 +18,8 @@
 
 namespace {
 
+using fair_test::pi;
 using fair_test::same;
-const double pi = 3.14159265358979323846;
 
 // A polynomial cubic f(u) = sum_k a_k u^k as a ParametricCurve_2 (dyadic coefficients: its jets
 // at dyadic u are exact doubles), with its value also in any FT.

@@ -33,7 +33,7 @@ TYPED_TEST_SUITE(Spline_representation, fair_test::All_kernels);
 
 // Random data with dyadic values (exact in every kernel).
 template <class K>
-fair::Cubic_spline_2<K> random_spline(std::mt19937& rng, std::size_t m, bool closed, bool rational) {
+fair::Cubic_spline_2<K> random_dyadic_spline(std::mt19937& rng, std::size_t m, bool closed, bool rational) {
   typedef typename K::FT FT;
   typedef typename K::Point_2 P;
   std::uniform_int_distribution<int> gap(1, 12), coordinate(-40, 40), weight(1, 9);
@@ -75,7 +75,7 @@ TYPED_TEST(Spline_representation, PointAgreesWithDeCasteljauOfPieces) {
   std::mt19937 rng(2301);
   for (int trial = 0; trial < 12; ++trial) {
     const bool closed = trial % 2 == 1, rational = trial % 4 >= 2;
-    const fair::Cubic_spline_2<K> s = random_spline<K>(rng, 3 + static_cast<std::size_t>(trial), closed, rational);
+    const fair::Cubic_spline_2<K> s = random_dyadic_spline<K>(rng, 3 + static_cast<std::size_t>(trial), closed, rational);
     EXPECT_EQ(s.is_rational(), rational);
     const std::vector<typename fair::Cubic_spline_2<K>::Piece> pieces = s.pieces();
     ASSERT_EQ(pieces.size(), s.number_of_pieces());
@@ -107,7 +107,7 @@ TYPED_TEST(Spline_representation, WeightsAreNotStoredForAPolynomialSpline) {
   typedef TypeParam K;
   typedef typename K::FT FT;
   std::mt19937 rng(2302);
-  const fair::Cubic_spline_2<K> p = random_spline<K>(rng, 5, false, false);
+  const fair::Cubic_spline_2<K> p = random_dyadic_spline<K>(rng, 5, false, false);
   EXPECT_FALSE(p.is_rational());
   EXPECT_EQ(p.weights(), std::vector<FT>(p.number_of_control_points(), FT(1)));
   EXPECT_EQ(p.weight(3), FT(1));
@@ -119,7 +119,7 @@ TYPED_TEST(Spline_representation, WeightsAreNotStoredForAPolynomialSpline) {
   EXPECT_EQ(e.weight(0), FT(1));
   for (std::size_t i = 0; i < p.number_of_pieces(); ++i)
     EXPECT_EQ(e.piece(i).control_points(), p.piece(i).control_points()) << i;
-  const fair::Cubic_spline_2<K> r = random_spline<K>(rng, 5, true, true);
+  const fair::Cubic_spline_2<K> r = random_dyadic_spline<K>(rng, 5, true, true);
   EXPECT_TRUE(r.is_rational());
   EXPECT_EQ(r.knot_vector_weights().size(), r.knot_vector_control_points().size());
   // a weight count that does not match
@@ -132,7 +132,7 @@ TYPED_TEST(Spline_representation, KnotInsertionKeepsTheRepresentation) {
   std::mt19937 rng(2303);
   for (int trial = 0; trial < 4; ++trial) {
     const bool closed = trial % 2 == 1, rational = trial >= 2;
-    const fair::Cubic_spline_2<K> s = random_spline<K>(rng, 6, closed, rational);
+    const fair::Cubic_spline_2<K> s = random_dyadic_spline<K>(rng, 6, closed, rational);
     const typename K::FT x = (s.breakpoints()[2] + s.breakpoints()[3]) / 2;
     const fair::Cubic_spline_2<K> r = s.with_knot_inserted(x);
     EXPECT_EQ(r.is_rational(), rational);
@@ -181,8 +181,8 @@ TYPED_TEST(Spline_representation, FiniteBezierPiecesCheck) {
   typedef typename K::FT FT;
   typedef typename K::Point_2 P;
   std::mt19937 rng(2304);
-  EXPECT_NO_THROW(random_spline<K>(rng, 7, false, false).check_finite_pieces("test"));
-  EXPECT_NO_THROW(random_spline<K>(rng, 7, true, false).check_finite_pieces("test"));
+  EXPECT_NO_THROW(random_dyadic_spline<K>(rng, 7, false, false).check_finite_pieces("test"));
+  EXPECT_NO_THROW(random_dyadic_spline<K>(rng, 7, true, false).check_finite_pieces("test"));
   // Coordinates of both signs near DBL_MAX / 20 (accepted by the constructor) give second
   // differences 6 (b0 - 2 b1 + b2) beyond DBL_MAX.
   const double big = std::numeric_limits<double>::max() / 20;
