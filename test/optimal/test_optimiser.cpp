@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -946,6 +947,39 @@ TEST(OptimiserLambdaDesign, Phi4BlendAndScale) {
 // Consecutive points closer than 2^-40 of the data's chord length (fuzz finding of session 19: two
 // points 1 ulp apart made the final polygon's breakpoints equal): refused with both points named;
 // just above the limit the curve is solved.
+// Fuzz finding optimal/regress-gradient-norm-overflow: a kappa'''' weight of 2.8e209 makes the
+// reduced gradient's components about 1e160, finite, whose squares overflow: the reported norm was
+// inf. It is now scaled by the largest component (reduced_system.h, euclidean_norm); checked here
+// against the same norm in long double at 2^k scales, and on the finding itself.
+TEST(OptimiserExtremes, GradientNormsOfHugeComponentsAreFinite) {
+  using fair::internal::optimal::euclidean_norm;
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (const int k : {-1070, -600, 0, 300, 1000, 1020}) {
+    std::vector<double> v(7);
+    for (double& a : v) a = std::ldexp(u(rng), k);
+    long double s = 0;  // the oracle: the same norm at unit scale, in extended precision
+    for (const double a : v) s += static_cast<long double>(std::ldexp(a, -k)) * std::ldexp(a, -k);
+    const double expected = std::ldexp(static_cast<double>(std::sqrt(s)), k);
+    EXPECT_NEAR(euclidean_norm(v) / expected, 1, 1e-15) << "2^" << k;
+  }
+  EXPECT_EQ(euclidean_norm({0, 0}), 0);
+  Optimal_curve_options o;
+  o.closed = true;
+  o.solver = fair::Optimal_curve_solver::CONJUGATE_GRADIENT;
+  o.discretisation = fair::Curvature_discretisation::TURNING_ANGLE;
+  o.curvature_exponent = 2.671875;
+  o.derivative_weight[4] = 2.8170090551184303e+209;
+  o.resolution = 100;
+  o.max_vertices = 4000;
+  o.max_levels = 8;
+  o.max_iterations_per_level = 40;
+  const Optimal_curve_2<K> c({P(32, 5), P(0, 0), P(0, 3), P(32, 5), P(0.5, 0), P(1, 40)}, o);
+  EXPECT_TRUE(std::isfinite(c.report().gradient_norm)) << c.report().gradient_norm;
+  for (const fair::Optimal_curve_level& l : c.report().levels) EXPECT_TRUE(std::isfinite(l.gradient_norm));
+  EXPECT_TRUE(std::isfinite(c.energy()));
+}
+
 // Fuzz finding optimal/regress-curvature-overflow: a closed curve at an extent of 1e-298 whose
 // turn between two points 4e-309 apart has a curvature of about 1e11 at unit extent, 1e309 at its
 // own. kappa(q c) = kappa(c) / q, so no double holds it: refused by name, not returned as inf.

@@ -66,7 +66,7 @@ inline Level_outcome solve_level(const Level_problem& p, const Vertex_roles& rol
     const Reduced_unknowns u = reduced_unknowns(c, normals, roles, closed);
     reduced_system(g, h, closed, u, rg, rh);
     if (!s.conjugate_gradient) add_tie_curvature(c, g, u, roles, rh);
-    out.gradient_norm = std::sqrt(dot_product(rg, rg));
+    out.gradient_norm = euclidean_norm(rg);
     out.iterations = it;
     const double scale = std::max(std::abs(e), std::numeric_limits<double>::min());
     if (u.count == 0 || out.gradient_norm == 0) { out.status = Status::CONVERGED; return out; }
