@@ -1021,4 +1021,11 @@ TEST(OptimiserErrors, PointsTooCloseToResolveAreRefusedByName) {
       EXPECT_FALSE(c.pieces().empty());
     }
   }
+  // The same rule at the top of the double range, where the edges' differences and their sum
+  // overflow (review R19: the check was skipped there): 2^-41 of the length is still refused.
+  const double big = 0x1p1020;
+  const double e = 0x1p-41 * 8 * std::sqrt(2.0);
+  expect_error<fair::Invalid_input_error>({P(-4 * big, -4 * big), P(0, 4 * big), P(4 * big, -4 * big),
+                                           P(4 * big, -4 * big + e * big)},
+                                          o, "too close to be resolved reliably in double");
 }

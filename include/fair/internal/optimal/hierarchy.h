@@ -199,19 +199,25 @@ inline void check_solve_input(const std::vector<Vec2>& p, const Optimal_curve_op
   // Points distinct in double but closer than about 1e-12 of the data's chord length: the polygon's
   // chord parameters (spline_fit.h, chord_breakpoints) and the spline systems built on their
   // powers of 1/h fail a few ulps of the length (a fuzz finding of session 19: an edge 2e-16 of
-  // the length); 2^-40 keeps a margin of about 2^13 above that.
+  // the length); 2^-40 keeps a margin of about 2^13 above that. Measured in units of a power of two
+  // near the largest coordinate (exact division), so that neither a difference nor the sum
+  // overflows at coordinates near 1e308 (review R19: the check was skipped there).
+  double largest = 0;
+  for (const Vec2& q : p) largest = std::max(largest, std::max(std::abs(q[0]), std::abs(q[1])));
+  const double unit = std::ldexp(1.0, std::ilogb(largest));  // largest > 0: consecutive points differ
+  auto edge_in_units = [&](std::size_t i) {
+    const std::size_t j = (i + 1) % p.size();
+    return std::hypot(p[j][0] / unit - p[i][0] / unit, p[j][1] / unit - p[i][1] / unit);
+  };
   double length = 0;
+  for (std::size_t i = 0; i < pairs; ++i) length += edge_in_units(i);
   for (std::size_t i = 0; i < pairs; ++i) {
     const std::size_t j = (i + 1) % p.size();
-    length += std::hypot(p[j][0] - p[i][0], p[j][1] - p[i][1]);
-  }
-  for (std::size_t i = 0; i < pairs && std::isfinite(length); ++i) {
-    const std::size_t j = (i + 1) % p.size();
-    const double d = std::hypot(p[j][0] - p[i][0], p[j][1] - p[i][1]);
+    const double d = edge_in_units(i);
     if (d < resolved_edge_fraction * length)
       throw Invalid_input_error(message(fn, ": consecutive points ", i, " = (", p[i][0], ", ", p[i][1], ") and ", j, " = (",
-                                        p[j][0], ", ", p[j][1], ") are ", d, " apart, ", d / length,
-                                        " of the data's chord length ", length, " (less than ", resolved_edge_fraction,
+                                        p[j][0], ", ", p[j][1], ") are ", d / length, " of the data's chord length apart",
+                                        " (less than ", resolved_edge_fraction,
                                         "): too close to be resolved reliably in double; merge them"));
   }
   auto weight = [&](double w, const char* name) {
