@@ -7,7 +7,7 @@
 // then the rest of the input as text: the constraint file (its kind from a byte) and, after a
 // byte 0x02, the lambda file (fair/io/read_constraints.h, read_numbers.h). Oracle
 // (doc/fuzzing.md): typed errors only; on success the polygon's pieces, curvatures, energy and
-// report finite. Findings inside include/fair/internal/optimal are kept in fuzz/findings/optimal/.
+// report finite, its levels' energies and gradient norms too. Findings inside include/fair/internal/optimal are kept in fuzz/findings/optimal/.
 
 #include "fuzz_common.h"
 
@@ -81,6 +81,10 @@ extern "C" int FAIR_FUZZ_ENTRY(optimal)(const std::uint8_t* data, std::size_t si
     require_finite(c.energy(), "energy");
     for (const double k : c.curvatures()) require_finite(k, "vertex curvature");
     require_finite(c.report().gradient_norm, "gradient norm");
+    for (const fair::Optimal_curve_level& l : c.report().levels) {  // since session 20 (review R20)
+      require_finite(l.energy, "level energy");
+      require_finite(l.gradient_norm, "level gradient norm");
+    }
     fair_fuzz::check_pieces(c.pieces());
   });
 }

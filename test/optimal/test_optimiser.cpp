@@ -944,9 +944,6 @@ TEST(OptimiserLambdaDesign, Phi4BlendAndScale) {
 
 } // namespace
 
-// Consecutive points closer than 2^-40 of the data's chord length (fuzz finding of session 19: two
-// points 1 ulp apart made the final polygon's breakpoints equal): refused with both points named;
-// just above the limit the curve is solved.
 // Fuzz finding optimal/regress-gradient-norm-overflow: a kappa'''' weight of 2.8e209 makes the
 // reduced gradient's components about 1e160, finite, whose squares overflow: the reported norm was
 // inf. It is now scaled by the largest component (reduced_system.h, euclidean_norm); checked here
@@ -1003,6 +1000,9 @@ TEST(OptimiserErrors, CurvaturesThatOverflowAtTheDataExtentAreRefused) {
   EXPECT_GT(std::ldexp(largest, 600), std::numeric_limits<double>::max() / 1e10) << "at 2^-600 of this extent it overflows";
 }
 
+// Consecutive points closer than 2^-40 of the data's chord length (fuzz finding of session 19: two
+// points 1 ulp apart made the final polygon's breakpoints equal): refused with both points named;
+// just above the limit the curve is solved.
 TEST(OptimiserErrors, PointsTooCloseToResolveAreRefusedByName) {
   Optimal_curve_options o;
   // The fuzz input: points at 1e-8 with the last two 7e-24 apart.
@@ -1028,4 +1028,62 @@ TEST(OptimiserErrors, PointsTooCloseToResolveAreRefusedByName) {
   expect_error<fair::Invalid_input_error>({P(-4 * big, -4 * big), P(0, 4 * big), P(4 * big, -4 * big),
                                            P(4 * big, -4 * big + e * big)},
                                           o, "too close to be resolved reliably in double");
+}
+
+// Review R20: the check stays exact where the extent is tiny next to the coordinates (edges of
+// 2^-40 at y = 2^1000: measured in units of the largest coordinate they were subnormal and the
+// check was skipped) and at a subnormal extent (d * 2^40 against the length: 2^-40 of a subnormal
+// length underflows).
+TEST(OptimiserErrors, PointsTooCloseAreRefusedAtEveryExtent) {
+  Optimal_curve_options o;
+  expect_error<fair::Invalid_input_error>({P(0, 0x1p1000), P(0x1p-40, 0x1p1000), P(0x1.0000000000001p-40, 0x1p1000)}, o,
+                                          "too close to be resolved reliably in double");
+  const double s = 0x1p-1025;  // subnormal; s * 2^-41 is still a double
+  expect_error<fair::Invalid_input_error>({P(0, 0), P(s, 0), P(s, s), P(s, 1.5 * s), P(s + std::ldexp(s, -41), 1.5 * s)}, o,
+                                          "too close to be resolved reliably in double");
+  o.closed = true;
+  expect_error<fair::Invalid_input_error>({P(0, 0), P(0x1p-40, 0), P(0x1.0000000001p-40, 0), P(0x1p-39, 0x1p-40)}, o,
+                                          "too close to be resolved reliably in double");
+}
+
+// Review R20: data whose extent or whose coarse levels' energies leave the double range are
+// refused by name, never answered with an inf in the report or a message about an internal value.
+TEST(OptimiserErrors, ExtentsAndLevelEnergiesBeyondTheDoubleRange) {
+  Optimal_curve_options o;
+  expect_error<fair::Invalid_input_error>({P(1.7e308, 0), P(1.7e308, 1e308), P(-1.7e308, 0)}, o,
+                                          "the points' extent overflows double");
+  o.closed = true;
+  try {
+    const Optimal_curve_2<K> c({P(0, 0), P(1.8e304, 0), P(9e303, 1.8e303)}, o);
+    for (const fair::Optimal_curve_level& l : c.report().levels) EXPECT_TRUE(std::isfinite(l.energy)) << l.energy;
+    ADD_FAILURE() << "its first level's energy overflows: expected a refusal";
+  } catch (const fair::Invalid_input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("the largest of its levels"), std::string::npos) << e.what();
+  }
+  // Open, at 1e307: the rho extent (the centroid of p / n) and the solve stay finite.
+  o.closed = false;
+  try {
+    const Optimal_curve_2<K> c({P(0, 0), P(1e307, 0), P(5e306, 1e306)}, o);
+    EXPECT_TRUE(std::isfinite(c.energy()));
+    for (const double k : c.curvatures()) EXPECT_TRUE(std::isfinite(k));
+  } catch (const fair::Invalid_input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("overflows double at the points' extent"), std::string::npos) << e.what();
+  }
+}
+
+// Review R20: the spline fits at a subnormal extent (1 / scale was inf: NaN points).
+TEST(OptimiserExtremes, SubnormalExtentFitsWithoutNaN) {
+  Optimal_curve_options o;
+  o.lambda = -1;
+  o.resolution = 50;
+  try {
+    const Optimal_curve_2<K> c({P(0, 0), P(1e-309, 1e-312), P(2e-309, 0)}, o);
+    for (const auto& piece : c.pieces())
+      for (std::size_t i = 0; i <= piece.degree(); ++i)
+        EXPECT_TRUE(std::isfinite(piece.control_point(i).x()) && std::isfinite(piece.control_point(i).y()));
+    for (const double k : c.curvatures()) EXPECT_FALSE(std::isnan(k));
+  } catch (const fair::Error& e) {
+    EXPECT_EQ(std::string(e.what()).find("nan"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("inf"), std::string::npos) << e.what();
+  }
 }

@@ -28,6 +28,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -50,10 +51,15 @@ struct Solve_result {
 /// be subdivided differently, and rigid motions would not commute with the solve); this one is
 /// invariant and between the bounding box's larger side and 2 sqrt(2) times it.
 inline double rotation_invariant_extent(const std::vector<Vec2>& c) {
+  const double n = static_cast<double>(c.size());
   double x = 0, y = 0;
   for (const Vec2& p : c) { x += p[0]; y += p[1]; }
-  x /= static_cast<double>(c.size());
-  y /= static_cast<double>(c.size());
+  x /= n;
+  y /= n;
+  if (!std::isfinite(x) || !std::isfinite(y)) {  // the sum overflowed (review R20): the sum of p / n
+    x = y = 0;
+    for (const Vec2& p : c) { x += p[0] / n; y += p[1] / n; }
+  }
   double r = 0;
   for (const Vec2& p : c) r = std::max(r, std::hypot(p[0] - x, p[1] - y));
   return 2 * r;
@@ -199,22 +205,32 @@ inline void check_solve_input(const std::vector<Vec2>& p, const Optimal_curve_op
   // Points distinct in double but closer than about 1e-12 of the data's chord length: the polygon's
   // chord parameters (spline_fit.h, chord_breakpoints) and the spline systems built on their
   // powers of 1/h fail a few ulps of the length (a fuzz finding of session 19: an edge 2e-16 of
-  // the length); 2^-40 keeps a margin of about 2^13 above that. Measured in units of a power of two
-  // near the largest coordinate (exact division), so that neither a difference nor the sum
-  // overflows at coordinates near 1e308 (review R19: the check was skipped there).
-  double largest = 0;
-  for (const Vec2& q : p) largest = std::max(largest, std::max(std::abs(q[0]), std::abs(q[1])));
-  const double unit = std::ldexp(1.0, std::ilogb(largest));  // largest > 0: consecutive points differ
+  // the length); 2^-40 keeps a margin of about 2^13 above that. Where the differences or their
+  // sum overflow (coordinates near 1e308; review R19: the check was skipped there) the edges are
+  // measured again in units of a power of two near the largest coordinate (exact division). Only
+  // then: at ordinary extents those units would send tiny edges into the subnormal range, where
+  // the comparison fails (review R20).
+  double unit = 1;
   auto edge_in_units = [&](std::size_t i) {
     const std::size_t j = (i + 1) % p.size();
     return std::hypot(p[j][0] / unit - p[i][0] / unit, p[j][1] / unit - p[i][1] / unit);
   };
-  double length = 0;
-  for (std::size_t i = 0; i < pairs; ++i) length += edge_in_units(i);
+  auto chord_length = [&] {
+    double length = 0;
+    for (std::size_t i = 0; i < pairs; ++i) length += edge_in_units(i);
+    return length;
+  };
+  double length = chord_length();
+  if (!std::isfinite(length)) {
+    double largest = 0;
+    for (const Vec2& q : p) largest = std::max(largest, std::max(std::abs(q[0]), std::abs(q[1])));
+    unit = std::ldexp(1.0, std::ilogb(largest));  // largest > 0: consecutive points differ
+    length = chord_length();
+  }
   for (std::size_t i = 0; i < pairs; ++i) {
     const std::size_t j = (i + 1) % p.size();
     const double d = edge_in_units(i);
-    if (d < resolved_edge_fraction * length)
+    if (d / resolved_edge_fraction < length)  // d * 2^40, exact: no underflow at subnormal extents
       throw Invalid_input_error(message(fn, ": consecutive points ", i, " = (", p[i][0], ", ", p[i][1], ") and ", j, " = (",
                                         p[j][0], ", ", p[j][1], ") are ", d / length, " of the data's chord length apart",
                                         " (less than ", resolved_edge_fraction,
@@ -401,7 +417,14 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
     res.report.input_self_intersections = count_self_intersections(points, o.closed);
     return res;
   };
-  if (!(r > 0 && std::isfinite(r) && std::isfinite(cx) && std::isfinite(cy))) return with_shape(solve_normalised(points, o));
+  // Points farther than the double range from their centroid (e.g. at +-1.7e308): no curve
+  // through them has a representable extent, and the unnormalised solve would fail later with a
+  // message about an internal quantity (review R20).
+  if (!std::isfinite(r))
+    throw Invalid_input_error(message("Optimal_curve_2: the points' extent overflows double (a coordinate differs from ",
+                                      "the centroid (", cx, ", ", cy, ") by more than ", std::numeric_limits<double>::max(),
+                                      "); scale the points down"));
+  if (!(r > 0)) return with_shape(solve_normalised(points, o));
   const double scale = std::ldexp(1.0, std::ilogb(r));  // exact: a power of two
   std::vector<Vec2> q(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) q[i] = {{(points[i][0] - cx) / scale, (points[i][1] - cy) / scale}};
@@ -423,15 +446,17 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
                                       " at unit extent) overflows double at the points' extent ", r,
                                       "; scale the points up"));
   for (double& k : res.curvatures) k /= scale;
-  const double normalised_energy = res.report.energy;
+  // F(q c) = q F(c): at an extent near the top of the double range the energy itself can exceed
+  // it (fuzz finding optimal/open-energy-inf: points at 1e302 with a kappa'' term), or only the
+  // energy of a coarser level, which is higher than the final one (review R20).
+  double largest_energy = res.report.energy;
+  for (const Optimal_curve_level& l : res.report.levels) largest_energy = std::max(largest_energy, l.energy);
+  if (std::isfinite(largest_energy) && !std::isfinite(largest_energy * scale))
+    throw Invalid_input_error(message("Optimal_curve_2: the energy of the curve (", largest_energy,
+                                      " at unit extent, the largest of its levels) overflows double at the points' extent ",
+                                      r, "; scale the points down"));
   res.report.energy *= scale;
   for (Optimal_curve_level& l : res.report.levels) l.energy *= scale;
-  // F(q c) = q F(c): at an extent near the top of the double range the energy itself can exceed
-  // it (fuzz finding optimal/open-energy-inf: points at 1e302 with a kappa'' term).
-  if (std::isfinite(normalised_energy) && !std::isfinite(res.report.energy))
-    throw Invalid_input_error(message("Optimal_curve_2: the energy of the curve (", normalised_energy,
-                                      " at unit extent) overflows double at the points' extent ", r,
-                                      "; scale the points down"));
   return with_shape(std::move(res));
 }
 

@@ -128,7 +128,10 @@ inline double fit_scale(const std::vector<optimal::Vec2>& p) {
       a = std::max(a, std::abs(q[k]));
     }
   if (!(e > 0) || !std::isfinite(e)) return 1;
-  const double scale = std::ldexp(1.0, std::ilogb(e));
+  // At least the smallest normal double, so that 1 / scale is finite (review R20: data of a
+  // subnormal extent, e < 2^-1022, gave 1 / scale = inf and NaN points); such data then fit at an
+  // extent of e * 2^1022 < 1, still exactly scaled.
+  const double scale = std::max(std::ldexp(1.0, std::ilogb(e)), std::numeric_limits<double>::min());
   return a / scale < 1e300 ? scale : 1;
 }
 inline std::vector<optimal::Vec2> scaled(std::vector<optimal::Vec2> p, double factor) {
