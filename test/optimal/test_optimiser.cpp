@@ -1071,6 +1071,32 @@ TEST(OptimiserErrors, ExtentsAndLevelEnergiesBeyondTheDoubleRange) {
   }
 }
 
+// Fuzz, session 20: points far from the origin against their spread (all at x = T, y spanning
+// 300). The mean of the coordinates carried an error of n ulps of T, 1e29 at T = 2.6e45, which
+// became the extent: the hierarchy did not subdivide and the spline's tolerance was 1e27. With the
+// refined centroid the solve at T is the solve at 0 (the same subdivision, energies and curvatures
+// to 1e-12).
+TEST(OptimiserExtremes, FarFromTheOriginTheSolveIsTheSolveAtTheOrigin) {
+  const double ys[] = {1, -128, 1, 13, 1, 104, 0, 196, 1, 30};
+  for (const double t : {0x1p150, 2.586886443029552e+45, 1e20}) {
+    Optimal_curve_options o;
+    o.derivative_weight[1] = 2;
+    std::vector<P> at_origin, far;
+    for (const double y : ys) {
+      at_origin.push_back(P(0, y));
+      far.push_back(P(t, y));
+    }
+    const Optimal_curve_2<K> a(at_origin, o), b(far, o);
+    EXPECT_EQ(a.report().status, b.report().status) << t;
+    EXPECT_EQ(a.polygon().size(), b.polygon().size()) << t;
+    // equal up to the rounding of the centroid (the origin's plain mean, T's refined one)
+    EXPECT_NEAR(a.energy() / b.energy(), 1, 1e-12) << t;
+    ASSERT_EQ(a.curvatures().size(), b.curvatures().size()) << t;
+    for (std::size_t i = 0; i < a.curvatures().size(); ++i)
+      EXPECT_NEAR(a.curvatures()[i], b.curvatures()[i], 1e-12 * std::abs(a.curvatures()[i]) + 1e-300) << t << " vertex " << i;
+  }
+}
+
 // Review R20: the spline fits at a subnormal extent (1 / scale was inf: NaN points).
 TEST(OptimiserExtremes, SubnormalExtentFitsWithoutNaN) {
   Optimal_curve_options o;

@@ -46,6 +46,31 @@ struct Solve_result {
   bool eta_from_spline = false;  // the lambda = 1 (0.99) curve was not fair: eta from the C2 spline (fair_reference.h)
 };
 
+/// The centroid of c given its plain mean `mean` (as a caller computed it), refined where the mean's
+/// rounding errors, n ulps of the largest coordinate, may reach the data's spread: for points far
+/// from the origin against their extent (fuzz, session 20: 13 points at x = 2.6e45 whose y spans
+/// 300; the mean's x was off by 1e29 and that error became the extent, so the hierarchy never
+/// subdivided and the spline's tolerance was 1e27). There it is c[0] plus the mean of the
+/// differences to c[0], which are exact when within a factor 2 of c[0] (Sterbenz) and otherwise
+/// rounded relative to their own size. Where the spread is at least 2^-26 of the magnitude the
+/// plain mean is returned unchanged (its error is then below n 2^-26 ulps of the spread), so
+/// ordinary data give bit-identical results.
+inline Vec2 refined_centroid(const std::vector<Vec2>& c, const Vec2& mean) {
+  double magnitude = 0, spread = 0;
+  for (const Vec2& p : c) {
+    magnitude = std::max(magnitude, std::max(std::abs(p[0]), std::abs(p[1])));
+    spread = std::max(spread, std::max(std::abs(p[0] - mean[0]), std::abs(p[1] - mean[1])));
+  }
+  if (!(spread < 0x1p-26 * magnitude)) return mean;  // also: NaN or inf, left to the callers' checks
+  const double n = static_cast<double>(c.size());
+  double x = 0, y = 0;
+  for (const Vec2& p : c) {
+    x += (p[0] - c[0][0]) / n;
+    y += (p[1] - c[0][1]) / n;
+  }
+  return {{c[0][0] + x, c[0][1] + y}};
+}
+
 /// The extent that rho refers to: twice the largest distance of a vertex from the vertices'
 /// centroid. The paper's bounding-box extent depends on the orientation (a rotated input would
 /// be subdivided differently, and rigid motions would not commute with the solve); this one is
@@ -60,8 +85,9 @@ inline double rotation_invariant_extent(const std::vector<Vec2>& c) {
     x = y = 0;
     for (const Vec2& p : c) { x += p[0] / n; y += p[1] / n; }
   }
+  const Vec2 g = refined_centroid(c, {{x, y}});
   double r = 0;
-  for (const Vec2& p : c) r = std::max(r, std::hypot(p[0] - x, p[1] - y));
+  for (const Vec2& p : c) r = std::max(r, std::hypot(p[0] - g[0], p[1] - g[1]));
   return 2 * r;
 }
 
@@ -408,6 +434,9 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
   check_solve_input(points, o);
   double cx = 0, cy = 0;
   for (const Vec2& p : points) { cx += p[0] / static_cast<double>(points.size()); cy += p[1] / static_cast<double>(points.size()); }
+  const Vec2 centroid = refined_centroid(points, {{cx, cy}});  // accurate far from the origin too
+  cx = centroid[0];
+  cy = centroid[1];
   double r = 0;
   for (const Vec2& p : points) r = std::max(r, std::max(std::abs(p[0] - cx), std::abs(p[1] - cy)));
   // What a designer must know about the shape (issue 25 §2, shape_check.h), on the polygon returned.
