@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -160,8 +161,20 @@ private:
     for (const Point_2& q : polygon_) v.push_back({{CGAL::to_double(q.x()), CGAL::to_double(q.y())}});
     const double tolerance =
         optimal_spline_distance_fraction * internal::optimal::rotation_invariant_extent(v) / options_.resolution;
-    Polygon_smoothing_fit<K> fit = fit_smoothing_spline_runs<K>(polygon_, options_.closed, interpolation_indices_,
-                                                                corner_vertices(), tolerance);
+    // Near the top of the double range (coordinates of about 1e308) the extent or the spline's
+    // control-point combinations overflow; the fit then refuses its own arguments with a
+    // Precondition_error, which here is about the user's data (review R20b): said so.
+    auto too_large = [&](const std::string& why) {
+      return Invalid_input_error(internal::message("fair::Optimal_curve_2: the smoothing spline of the optimal polygon ",
+                                                   "cannot be represented at this extent (", why, "); scale the points down"));
+    };
+    if (!std::isfinite(tolerance)) throw too_large("its extent overflows double");
+    Polygon_smoothing_fit<K> fit;
+    try {
+      fit = fit_smoothing_spline_runs<K>(polygon_, options_.closed, interpolation_indices_, corner_vertices(), tolerance);
+    } catch (const Precondition_error& e) {
+      throw too_large(e.what());
+    }
     spline_ = std::move(fit.runs);
     smoothing_ = std::move(fit.report);
     pieces_.clear();

@@ -61,7 +61,7 @@ inline Vec2 refined_centroid(const std::vector<Vec2>& c, const Vec2& mean) {
     magnitude = std::max(magnitude, std::max(std::abs(p[0]), std::abs(p[1])));
     spread = std::max(spread, std::max(std::abs(p[0] - mean[0]), std::abs(p[1] - mean[1])));
   }
-  if (!(spread < 0x1p-26 * magnitude)) return mean;  // also: NaN or inf, left to the callers' checks
+  if (!(spread < 0x1p-26 * magnitude)) return mean;  // also: an infinite magnitude (a NaN mean stays NaN below)
   const double n = static_cast<double>(c.size());
   double x = 0, y = 0;
   for (const Vec2& p : c) {
@@ -465,6 +465,21 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
   Solve_result res = solve_normalised(q, o);
   for (Vec2& v : res.polygon) v = {{v[0] * scale + cx, v[1] * scale + cy}};
   for (std::size_t i = 0; i < points.size(); ++i) res.polygon[res.interpolation_indices[i]] = points[i];
+  // Mapped back, vertices can round onto each other where the extent is a few ulps of the
+  // coordinates (points far from the origin; review R20b): refused by name, rather than by the
+  // spline fit naming two polygon vertices the user never gave.
+  for (std::size_t i = 0; i + 1 < res.polygon.size() || (o.closed && i < res.polygon.size()); ++i) {
+    const Vec2& a = res.polygon[i];
+    const Vec2& b = res.polygon[(i + 1) % res.polygon.size()];
+    if (a[0] == b[0] && a[1] == b[1]) {
+      double magnitude = 0;
+      for (const Vec2& p : points) magnitude = std::max(magnitude, std::max(std::abs(p[0]), std::abs(p[1])));
+      throw Invalid_input_error(message("Optimal_curve_2: the points' extent ", r, " is only ",
+                                        r / (magnitude * std::numeric_limits<double>::epsilon()),
+                                        " ulps of their coordinates (up to ", magnitude,
+                                        "), too few to place the curve's vertices; translate the points towards the origin"));
+    }
+  }
   // kappa(q c) = kappa(c) / q: at an extent near the bottom of the double range the curvature of a
   // tight turn can exceed it (fuzz finding optimal/regress-curvature-overflow: points at 1e-298
   // with two of them 4e-309 apart).
@@ -481,9 +496,9 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
   double largest_energy = res.report.energy;
   for (const Optimal_curve_level& l : res.report.levels) largest_energy = std::max(largest_energy, l.energy);
   if (std::isfinite(largest_energy) && !std::isfinite(largest_energy * scale))
-    throw Invalid_input_error(message("Optimal_curve_2: the energy of the curve (", largest_energy,
-                                      " at unit extent, the largest of its levels) overflows double at the points' extent ",
-                                      r, "; scale the points down"));
+    throw Invalid_input_error(message("Optimal_curve_2: the energy of the curve (", largest_energy, " at unit extent",
+                                      largest_energy > res.report.energy ? ", on a coarser level" : "",
+                                      ") overflows double at the points' extent ", r, "; scale the points down"));
   res.report.energy *= scale;
   for (Optimal_curve_level& l : res.report.levels) l.energy *= scale;
   return with_shape(std::move(res));
