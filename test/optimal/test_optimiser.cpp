@@ -7,6 +7,7 @@
 
 #include <fair/Kappa_curve_report.h>
 #include <fair/Optimal_curve_2.h>
+#include <fair/internal/common/polygon_crossings.h>
 
 #include "test_support.h"
 // The real data sets of test/data/real (read only: no glyph outlines here, so no FreeType).
@@ -1072,6 +1073,23 @@ TEST(OptimiserErrors, ExtentsAndLevelEnergiesBeyondTheDoubleRange) {
   o.resolution = 20;
   for (const double x : {9e307, 1e308, 7e307})
     expect_error<fair::Invalid_input_error>({P(x, 0), P(0, 1e307), P(-x, 0)}, o, "scale the points down");
+}
+
+// Fuzz finding optimal/regress-curve-beyond-the-double-range: a closed curve through points at
+// y near -DBL_MAX bulges below them, beyond the double range; an infinite vertex reached the exact
+// self-intersection count and GMP aborted on it. Refused by name now, and the count itself refuses
+// a non-finite vertex with a typed error.
+TEST(OptimiserErrors, CurveBeyondTheDoubleRangeIsRefused) {
+  Optimal_curve_options o;
+  o.closed = true;
+  o.resolution = 20;
+  expect_error<fair::Invalid_input_error>(
+      {P(8.8001147761549367e+223, -1.7976930348623157e+308), P(8.8001147761549367e+223, -1.7976931348623157e+308),
+       P(3.2000000000000002e+301, -1.7976928148623157e+308), P(3.5989503653498832e+299, -1.7976931255323878e+308),
+       P(3.2000000000000002e+301, -1.7976928148623157e+308)},
+      o, "the curve leaves the double range");
+  const std::vector<std::array<double, 2>> square = {{{0, 0}}, {{1, 0}}, {{1, std::numeric_limits<double>::infinity()}}, {{0, 1}}};
+  EXPECT_THROW(fair::internal::common::polygon_crossings(square, true), fair::Invalid_input_error);
 }
 
 // Review R20b: points whose extent is a few ulps of their coordinates (far from the origin): the

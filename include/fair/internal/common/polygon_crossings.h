@@ -18,6 +18,9 @@
 #ifndef FAIR_INTERNAL_COMMON_POLYGON_CROSSINGS_H
 #define FAIR_INTERNAL_COMMON_POLYGON_CROSSINGS_H
 
+#include <fair/Errors.h>
+#include <fair/internal/common/checks.h>
+
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
@@ -25,6 +28,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -71,6 +75,11 @@ inline bool segments_meet(const Xy& a, const Xy& b, const Xy& c, const Xy& d) {
 /// The number of pairs of edges of the polygon p (closed: with the closing edge) that cross or
 /// touch, consecutive edges only where they fold back (file comment).
 inline std::size_t polygon_crossings(const std::vector<Xy>& p, bool closed) {
+  // The exact orientation converts to Gmpq, which aborts on inf and NaN (fuzz finding of session
+  // 20, through an optimal curve beyond the double range): a typed error instead.
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (!std::isfinite(p[i][0]) || !std::isfinite(p[i][1]))
+      throw Invalid_input_error(message("polygon_crossings: vertex ", i, " of the polygon is not finite"));
   const std::size_t n = p.size(), edges = closed ? n : (n == 0 ? 0 : n - 1);
   if (edges < 2) return 0;
   auto a = [&](std::size_t j) -> const Xy& { return p[j]; };

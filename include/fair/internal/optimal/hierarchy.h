@@ -328,7 +328,17 @@ inline Solve_result solve_optimal_curve(const std::vector<Vec2>& points, const O
     if (a[0] == b[0] && a[1] == b[1]) return with_shape(solve_normalised(points, o));  // distinct only before rounding: solve as given
   }
   Solve_result res = solve_normalised(q, o);
-  for (Vec2& v : res.polygon) v = {{v[0] * scale + cx, v[1] * scale + cy}};
+  for (std::size_t i = 0; i < res.polygon.size(); ++i) {
+    const Vec2 u = res.polygon[i];
+    res.polygon[i] = {{u[0] * scale + cx, u[1] * scale + cy}};
+    // Points at the edge of the double range (e.g. y near -1.8e308): the curve between them can
+    // bulge beyond it (fuzz finding optimal/regress-curve-beyond-the-double-range: an infinite
+    // vertex then reached the exact self-intersection count, and GMP aborted on it).
+    if (!std::isfinite(res.polygon[i][0]) || !std::isfinite(res.polygon[i][1]))
+      throw Invalid_input_error(message("Optimal_curve_2: the curve leaves the double range (its vertex ", i,
+                                        ", at (", u[0], ", ", u[1], ") in units of ", scale, " from the centroid (", cx,
+                                        ", ", cy, "), overflows); move the points towards the origin"));
+  }
   for (std::size_t i = 0; i < points.size(); ++i) res.polygon[res.interpolation_indices[i]] = points[i];
   // Mapped back, vertices can round onto each other where the extent is a few ulps of the
   // coordinates (points far from the origin; review R20b): refused by name, rather than by the
